@@ -1,0 +1,48 @@
+#!/usr/bin/env bash
+# cueball's one entry point for people and CI, on Debian bookworm as root:
+#   ./build.sh demo   install what is missing, build (Release), run the main job
+#   ./build.sh test   the same, then every test (Release), then the whole suite
+#                     again under AddressSanitizer + UndefinedBehaviorSanitizer
+set -euo pipefail
+cd "$(dirname "$0")"
+mode=${1:-demo}
+
+packages=(g++ cmake ninja-build libgtest-dev libgmock-dev libbenchmark-dev nlohmann-json3-dev libcli11-dev)
+missing=()
+for p in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+if ((${#missing[@]})); then
+  echo "== installing: ${missing[*]}"
+  export DEBIAN_FRONTEND=noninteractive
+  apt-get update -qq
+  apt-get install -y -qq --no-install-recommends "${missing[@]}"
+fi
+
+jobs=$(nproc)
+build() {  # build <preset>
+  cmake --preset "$1" >/dev/null
+  cmake --build --preset "$1" -j "$jobs"
+}
+
+case "$mode" in
+  demo)
+    build release
+    bin=build/release/cueball
+    echo "== cueball plan: speed and spin to stop a ball 1.5 m away, sliding for the first 0.3 m"
+    "$bin" plan --x1 0.3 --x2 1.5
+    echo
+    echo "== cueball roll: a 2 m/s draw shot, and its state 0.2 s after the strike"
+    "$bin" roll --v0 2 --w0 -40 --at 0.2
+    ;;
+  test)
+    build release
+    ctest --preset release
+    build asan
+    ctest --preset asan
+    ;;
+  *)
+    echo "usage: $0 [demo|test]" >&2
+    exit 2
+    ;;
+esac

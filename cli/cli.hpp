@@ -1,0 +1,12 @@
+// The cueball command-line interface, as a function so tests can run it
+// in-process. Exit status: 0 success, 2 bad input (one line on stderr naming
+// the flag, the value and the allowed range), 1 an unexpected internal error.
+#pragma once
+
+#include <iosfwd>
+
+namespace cueball::cli {
+
+int run(int argc, const char* const* argv, std::ostream& out, std::ostream& err);
+
+}  // namespace cueball::cli

@@ -1,0 +1,51 @@
+// Pieces shared by the CLI's subcommands: physical-parameter flags and the
+// checks that turn bad input into one clear line and exit status 2.
+#pragma once
+
+#include <functional>
+#include <optional>
+#include <stdexcept>
+#include <string>
+
+#include <CLI/CLI.hpp>
+
+#include "cueball/parameters.hpp"
+#include "output.hpp"
+
+namespace cueball::cli {
+
+/// Bad input from the command line: printed as one line, exit status 2.
+class UsageError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+/// Flags common to every subcommand: --preset and one override per parameter.
+struct ParameterFlags {
+  std::string preset = "snooker";
+  std::optional<double> mass, radius, mu_s, mu_r, mu_sp, g;
+  bool json = false;
+};
+
+void add_parameter_flags(CLI::App& app, ParameterFlags& flags);
+
+/// The preset with the overrides applied, validated (throws UsageError
+/// naming the flag).
+Parameters resolve_parameters(const ParameterFlags& flags);
+
+/// Throws UsageError "FLAG = VALUE is outside the allowed range [lo, hi] (meaning)"
+/// unless value is finite and within [lo, hi].
+void check_flag(const char* flag, double value, double lo, double hi, const char* meaning);
+
+/// The CLI flag that sets a library field ("mu_s" -> "--mu-s").
+std::string flag_for_field(const std::string& field);
+
+/// A subcommand: registers its flags and returns what to run when chosen.
+using Command = std::function<void(std::ostream& out, std::ostream& err)>;
+Command add_roll_command(CLI::App& app);
+Command add_plan_command(CLI::App& app);
+
+/// Prints the report, then its warnings on stderr.
+void emit(const Report& report, bool json, std::ostream& out, std::ostream& err);
+
+}  // namespace cueball::cli

@@ -27,11 +27,11 @@ void validate_target(const ShotTarget& t, const Parameters& p) {
   require_finite("v2", t.v2);
   if (t.v2 < 0.0) throw InfeasibleShot("v2 >= 0", "v2 = " + num(t.v2) + " m/s is negative");
   require_in_range("v2", t.v2, 0.0, kMaxSpeed, "planned speed at x2, m/s");
-  if (!(t.x2 > t.x0 || t.v2 > 0.0))
-    throw InfeasibleShot("x2 > x0 or v2 > 0", "the ball would not move (x2 = x0 = " + num(t.x0) + " m, v2 = 0)");
   if (t.x2 < t.x0)
     throw InfeasibleShot("x2 >= x0", "x2 = " + num(t.x2) + " m lies behind the start x0 = " + num(t.x0) +
                                          " m; positions increase in the direction of travel");
+  if (!(t.x2 > t.x0 || t.v2 > 0.0))
+    throw InfeasibleShot("x2 > x0 or v2 > 0", "the ball would not move (x2 = x0 = " + num(t.x0) + " m, v2 = 0)");
 }
 
 // From the paper's Z and N to the full plan: eqs 27, 28, 19, 20, 21, 22.

@@ -93,6 +93,18 @@ int run(int argc, const char* const* argv, std::ostream& out, std::ostream& err)
   Command plan = add_plan_command(app);
   commands.emplace_back(app.get_subcommand("plan"), plan);
 
+  if (argc > 1 && argv[1][0] != '-') {
+    std::string names;
+    bool known = false;
+    for (const auto& entry : commands) {
+      names += (names.empty() ? "" : ", ") + entry.first->get_name();
+      known = known || entry.first->get_name() == argv[1];
+    }
+    if (!known) {
+      err << "cueball: error: unknown subcommand '" << argv[1] << "'; choose one of: " << names << '\n';
+      return 2;
+    }
+  }
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {

@@ -76,7 +76,8 @@ Command add_plan_command(CLI::App& app) {
       "(paper 001, eqs 25-28), and the level-cue tip height that gives them. Positions in m along\n"
       "the line of the shot, increasing in the direction of travel. Choose the member of the\n"
       "family: --x1 (end of sliding, the paper's problem), --natural-roll (x1 = x0), --w0 or --v0.\n"
-      "Topspin w0 > 0 turns the ball the way it rolls; valid plans satisfy v0 >= R w0 >= -5/2 v0.");
+      "Topspin w0 > 0 turns the ball the way it rolls (R w0 = v0 is natural roll, w0 < 0 draw);\n"
+      "valid plans satisfy v0 >= R w0 >= -5/2 v0. Units SI.");
   sub->add_option("--x0", flags->x0, "Start, m (default 0)")->capture_default_str();
   sub->add_option("--x1", flags->x1, "End of sliding, m (the paper's problem)");
   sub->add_option("--x2", flags->x2, "Planned point, m")->required();

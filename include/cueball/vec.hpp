@@ -30,7 +30,7 @@ constexpr double dot(Vec2 a, Vec2 b) { return a.x * b.x + a.y * b.y; }
 constexpr double cross(Vec2 a, Vec2 b) { return a.x * b.y - a.y * b.x; }
 /// z^ x a: the in-plane vector a turned by +90 degrees.
 constexpr Vec2 perp(Vec2 a) { return {-a.y, a.x}; }
-inline double norm(Vec2 a) { return std::hypot(a.x, a.y); }
+inline double norm(Vec2 a) { return std::sqrt(a.x * a.x + a.y * a.y); }
 constexpr bool operator==(Vec2 a, Vec2 b) { return a.x == b.x && a.y == b.y; }
 
 constexpr Vec3 operator+(Vec3 a, Vec3 b) { return {a.x + b.x, a.y + b.y, a.z + b.z}; }

@@ -1,5 +1,6 @@
 // cueball roll: a straight shot's phases (paper 001 eqs 19-24), and the full
 // state at any time.
+#include <cstdio>
 #include <memory>
 #include <optional>
 
@@ -37,7 +38,9 @@ void run_roll(const RollFlags& f, std::ostream& out, std::ostream& err) {
   r.add("x2", shot.x2, "m", "rest position (eq. 24)");
   r.add("t_spin", shot.t_spin, "s", "side spin has decayed to zero");
   if (f.at) {
-    r.begin_section("at", "state at t = " + std::to_string(*f.at) + " s:");
+    char heading[64];
+    std::snprintf(heading, sizeof heading, "state at t = %g s:", *f.at);
+    r.begin_section("at", heading);
     r.add("t", *f.at, "s");
     add_state(r, straight_shot_state(f.v0, f.w0, f.side, *f.at, p), p);
     r.end_section();

@@ -1,5 +1,6 @@
 #include "cueball/parameters.hpp"
 
+#include <cmath>
 #include <string>
 
 #include "cueball/errors.hpp"
@@ -7,12 +8,6 @@
 namespace cueball {
 
 namespace {
-
-void check(const ParameterRange& r, double value) {
-  std::string meaning = r.meaning;
-  if (*r.unit != '\0') meaning += std::string(", ") + r.unit;
-  require_in_range(r.field, value, r.min, r.max, meaning.c_str());
-}
 
 constexpr double kStandardGravity = 9.81;  // m/s^2, as in paper 000
 
@@ -28,13 +23,20 @@ constexpr double rolling_resistance_for(double deceleration) { return 7.0 * dece
 
 }  // namespace
 
+void check_range(const ParameterRange& r, double value) {
+  if (std::isfinite(value) && value >= r.min && value <= r.max) return;  // no message built on success
+  std::string meaning = r.meaning;
+  if (*r.unit != '\0') meaning += std::string(", ") + r.unit;
+  require_in_range(r.field, value, r.min, r.max, meaning.c_str());
+}
+
 void validate(const Parameters& p) {
-  check(kMassRange, p.ball.mass);
-  check(kRadiusRange, p.ball.radius);
-  check(kSlidingFrictionRange, p.cloth.sliding_friction);
-  check(kRollingResistanceRange, p.cloth.rolling_resistance);
-  check(kSpinFrictionRange, p.cloth.spin_friction);
-  check(kGravityRange, p.cloth.gravity);
+  check_range(kMassRange, p.ball.mass);
+  check_range(kRadiusRange, p.ball.radius);
+  check_range(kSlidingFrictionRange, p.cloth.sliding_friction);
+  check_range(kRollingResistanceRange, p.cloth.rolling_resistance);
+  check_range(kSpinFrictionRange, p.cloth.spin_friction);
+  check_range(kGravityRange, p.cloth.gravity);
   if (!(p.cloth.rolling_resistance < p.cloth.sliding_friction)) {
     throw InvalidArgument("mu_r", "mu_r = " + std::to_string(p.cloth.rolling_resistance) +
                                       " must be smaller than mu_s = " + std::to_string(p.cloth.sliding_friction) +

@@ -8,43 +8,16 @@
 #include <string>
 #include <vector>
 
-#include "cli.hpp"
+#include "cli_runner.hpp"
 #include "cueball/cloth_motion.hpp"
 #include "cueball/planner.hpp"
 
 namespace cueball {
 namespace {
 
-struct CliRun {
-  int status;
-  std::string out;
-  std::string err;
-};
-
-CliRun run_cli(std::vector<std::string> args) {
-  args.insert(args.begin(), "cueball");
-  std::vector<const char*> argv;
-  for (const std::string& a : args) argv.push_back(a.c_str());
-  std::ostringstream out, err;
-  const int status = cli::run(static_cast<int>(argv.size()), argv.data(), out, err);
-  return {status, out.str(), err.str()};
-}
-
-int count_lines(const std::string& s) {
-  int n = 0;
-  for (char c : s) n += (c == '\n');
-  return n;
-}
-
-// A bad invocation: status 2, exactly one line on stderr, naming `flag`,
-// nothing on stdout.
-void expect_usage_error(const std::vector<std::string>& args, const std::string& flag) {
-  const CliRun r = run_cli(args);
-  EXPECT_EQ(r.status, 2) << r.err;
-  EXPECT_EQ(count_lines(r.err), 1) << r.err;
-  EXPECT_NE(r.err.find(flag), std::string::npos) << "stderr should name " << flag << ": " << r.err;
-  EXPECT_TRUE(r.out.empty()) << r.out;
-}
+using test::CliRun;
+using test::expect_usage_error;
+using test::run_cli;
 
 TEST(Cli, RollJsonHasThePhasesInSiUnits) {
   const CliRun r = run_cli({"roll", "--v0", "2", "--w0", "-40", "--json"});

@@ -67,6 +67,10 @@ inline constexpr std::array<const ParameterRange*, 6> kParameterRanges{
     &kMassRange, &kRadiusRange, &kSlidingFrictionRange, &kRollingResistanceRange, &kSpinFrictionRange,
     &kGravityRange};
 
+/// Throws InvalidArgument unless range.min <= value <= range.max (and finite);
+/// the message names range.field, the value, the range, meaning and unit.
+void check_range(const ParameterRange& range, double value);
+
 /// Throws InvalidArgument naming the first parameter that is not finite or
 /// lies outside its range, or mu_r >= mu_s, e.g. "mu_s = -0.1 is outside [0.01, 1] (...)".
 void validate(const Parameters& p);

@@ -1,0 +1,193 @@
+// Ball-cushion impact (Mathavan, Jackson & Parkin 2010): the exact solver
+// against the paper's Euler scheme (N = 5000) over the grid of the paper's
+// Figs 8-10 widened: alpha = 1..90 deg, topspin K in {-1, -0.5, ..., 2},
+// sidespin K in {-2, -1.5, ..., 2}, w = K V0 / R, V0 = 1 m/s, snooker ball,
+// the paper's constants (e_e = 0.98, mu_w = 0.14).
+//
+// Counters:
+//   BM_CushionExact / BM_CushionPaper5000   us_per_impact, steps (mean), events (mean)
+//   BM_CushionSpeedup       exact and paper timed back to back in one process
+//                           (CPU time): speedup = paper time / exact time over
+//                           the same grid
+//   BM_CushionAccuracy      exact against the N -> infinity limit of the paper
+//                           scheme on a sample of the grid (alpha < 90 deg):
+//                           the limit is the Richardson extrapolation 2 x(2N) - x(N)
+//                           of the paper solver at N = 1e5 with its last step
+//                           interpolated onto the end-of-restitution condition
+//                           (which removes the O(dP) jitter of stopping "at the
+//                           first step past", leaving a smooth O(1/N) error);
+//                           max_dv_mps, max_dbeta_deg, max_R_dw_mps: the worst
+//                           errors of exact (velocity, rebound angle, R x spin);
+//                           limit_uncertainty_mps: how far the estimates from
+//                           (N, 2N) and (2N, 4N) differ.
+#include <benchmark/benchmark.h>
+
+#include <algorithm>
+#include <cmath>
+#include <ctime>
+#include <vector>
+
+#include "cueball/cushion_impact.hpp"
+#include "cueball/parameters.hpp"
+
+namespace {
+
+using namespace cueball;
+
+constexpr double kPi = 3.14159265358979323846;
+constexpr double kDegree = kPi / 180.0;
+
+const std::vector<IncomingBall>& grid() {
+  static const std::vector<IncomingBall> balls = [] {
+    const double radius = snooker_parameters().ball.radius;
+    const double v0 = 1.0;
+    std::vector<IncomingBall> out;
+    for (int alpha = 1; alpha <= 90; ++alpha) {
+      for (int t = -2; t <= 4; ++t) {      // topspin K = t / 2
+        for (int s = -4; s <= 4; ++s) {    // sidespin K = s / 2
+          out.push_back(incoming_ball({v0, alpha * kDegree, 0.5 * t * v0 / radius, 0.5 * s * v0 / radius}));
+        }
+      }
+    }
+    return out;
+  }();
+  return balls;
+}
+
+struct GridRun {
+  double seconds = 0.0;
+  double steps = 0.0;
+  double events = 0.0;
+  double checksum = 0.0;
+};
+
+GridRun run_grid(const CushionImpactOptions& options) {
+  static const Parameters table = snooker_parameters();
+  static const CushionParameters cushion = cushion_mathavan2010_paper_fit(table.ball);
+  GridRun run;
+  const std::clock_t start = std::clock();  // CPU time: robust to a busy machine
+  for (const IncomingBall& ball : grid()) {
+    const CushionImpactResult r = cushion_impact(ball, table, cushion, options);
+    run.steps += r.solver_steps;
+    run.events += r.solver_events;
+    run.checksum += r.velocity.x + r.velocity.y;
+  }
+  run.seconds = static_cast<double>(std::clock() - start) / CLOCKS_PER_SEC;
+  return run;
+}
+
+CushionImpactOptions paper_options(int n) {
+  CushionImpactOptions o;
+  o.solver = CushionSolver::paper;
+  o.paper_steps = n;
+  return o;
+}
+
+void report(benchmark::State& state, const GridRun& total, int runs) {
+  const double impacts = static_cast<double>(grid().size()) * runs;
+  state.counters["us_per_impact"] = 1e6 * total.seconds / impacts;
+  state.counters["steps"] = total.steps / impacts;
+  state.counters["events"] = total.events / impacts;
+  state.counters["impacts"] = benchmark::Counter(impacts, benchmark::Counter::kIsRate);
+}
+
+void run_solver(benchmark::State& state, const CushionImpactOptions& options) {
+  GridRun total;
+  int runs = 0;
+  for (auto _ : state) {
+    const GridRun r = run_grid(options);
+    benchmark::DoNotOptimize(r.checksum);
+    total.seconds += r.seconds;
+    total.steps += r.steps;
+    total.events += r.events;
+    ++runs;
+  }
+  report(state, total, runs);
+}
+
+void BM_CushionExact(benchmark::State& state) { run_solver(state, {}); }
+BENCHMARK(BM_CushionExact)->Unit(benchmark::kMillisecond);
+
+void BM_CushionPaper5000(benchmark::State& state) { run_solver(state, paper_options(5000)); }
+BENCHMARK(BM_CushionPaper5000)->Unit(benchmark::kMillisecond);
+
+// Both solvers back to back, so that they see the same machine.
+void BM_CushionSpeedup(benchmark::State& state) {
+  double exact = 0.0;
+  double paper = 0.0;
+  for (auto _ : state) {
+    exact += run_grid({}).seconds;
+    paper += run_grid(paper_options(5000)).seconds;
+  }
+  state.counters["speedup"] = paper / exact;
+  const double impacts = static_cast<double>(grid().size()) * static_cast<double>(state.iterations());
+  state.counters["us_exact"] = 1e6 * exact / impacts;
+  state.counters["us_paper"] = 1e6 * paper / impacts;
+}
+BENCHMARK(BM_CushionSpeedup)->Unit(benchmark::kSecond)->Iterations(3);
+
+// ------------------------------------------------------------------ accuracy
+
+struct Outgoing {
+  Vec3 velocity;
+  Vec3 angular_velocity;
+};
+
+// The paper solver with its last step interpolated onto W = (1 - e_e^2) W_c (16b).
+Outgoing paper_interpolated(const IncomingBall& ball, const Parameters& table, const CushionParameters& cushion,
+                            int n) {
+  CushionImpactOptions o = paper_options(n);
+  o.record_history = true;
+  const CushionImpactResult r = cushion_impact(ball, table, cushion, o);
+  const double target = (1.0 - cushion.restitution * cushion.restitution) * r.compression_work;
+  const CushionImpactSample& a = r.history[r.history.size() - 2];
+  const CushionImpactSample& b = r.history.back();
+  const double f = (target - a.work) / (b.work - a.work);
+  return {a.velocity + f * (b.velocity - a.velocity), a.angular_velocity + f * (b.angular_velocity - a.angular_velocity)};
+}
+
+Outgoing richardson(const Outgoing& coarse, const Outgoing& fine) {
+  return {2.0 * fine.velocity - coarse.velocity, 2.0 * fine.angular_velocity - coarse.angular_velocity};
+}
+
+double beta_of(Vec3 v) { return std::atan2(-v.y, v.x); }
+
+void BM_CushionAccuracy(benchmark::State& state) {
+  const Parameters table = snooker_parameters();
+  const CushionParameters cushion = cushion_mathavan2010_paper_fit(table.ball);
+  const double radius = table.ball.radius;
+  double max_dv = 0.0;
+  double max_dbeta = 0.0;
+  double max_dspin = 0.0;
+  double max_uncertainty = 0.0;
+  int samples = 0;
+  for (auto _ : state) {
+    for (const int alpha : {1, 7, 15, 25, 35, 45, 55, 65, 75, 85, 89}) {
+      for (int t = -2; t <= 4; t += 2) {
+        for (int s = -4; s <= 4; s += 2) {
+          const IncomingBall ball =
+              incoming_ball({1.0, alpha * kDegree, 0.5 * t / radius, 0.5 * s / radius});
+          const CushionImpactResult exact = cushion_impact(ball, table, cushion);
+          const Outgoing p1 = paper_interpolated(ball, table, cushion, 100000);
+          const Outgoing p2 = paper_interpolated(ball, table, cushion, 200000);
+          const Outgoing p4 = paper_interpolated(ball, table, cushion, 400000);
+          const Outgoing limit = richardson(p1, p2);
+          const Outgoing limit_fine = richardson(p2, p4);
+          max_dv = std::max(max_dv, norm(exact.velocity - limit_fine.velocity));
+          max_dspin = std::max(max_dspin, radius * norm(exact.angular_velocity - limit_fine.angular_velocity));
+          max_dbeta = std::max(max_dbeta, std::abs(exact.rebound_angle - beta_of(limit_fine.velocity)) / kDegree);
+          max_uncertainty = std::max(max_uncertainty, norm(limit.velocity - limit_fine.velocity));
+          ++samples;
+        }
+      }
+    }
+  }
+  state.counters["samples"] = samples;
+  state.counters["max_dv_mps"] = max_dv;
+  state.counters["max_dbeta_deg"] = max_dbeta;
+  state.counters["max_R_dw_mps"] = max_dspin;
+  state.counters["limit_uncertainty_mps"] = max_uncertainty;
+}
+BENCHMARK(BM_CushionAccuracy)->Unit(benchmark::kSecond)->Iterations(1);
+
+}  // namespace

@@ -1,0 +1,449 @@
+// cueball cushion, cueball cushion-sweep: the ball-cushion impact of
+// Mathavan, Jackson & Parkin (2010), one impact or the paper's figure families.
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <memory>
+#include <numbers>
+#include <optional>
+#include <ostream>
+#include <vector>
+
+#include "common.hpp"
+#include "cueball/cushion_impact.hpp"
+
+namespace cueball::cli {
+
+namespace {
+
+constexpr double kDegree = std::numbers::pi / 180.0;
+
+// Solver and constants flags shared by both commands.
+struct CushionFlags {
+  std::string solver = "exact";
+  std::string constants = "paper-fit";
+  int steps = 5000;
+  std::optional<double> restitution, friction, height;
+};
+
+void add_cushion_flags(CLI::App& app, CushionFlags& f) {
+  app.add_option("--solver", f.solver,
+                 "exact: event-driven, no discretisation error (default); paper: the authors' Euler in P_I")
+      ->check(CLI::IsMember({"exact", "paper"}))
+      ->capture_default_str();
+  app.add_option("--steps", f.steps, "N for the paper solver: dP_I = (1 + e_e) M V0 sin(alpha) / N")
+      ->capture_default_str();
+  app.add_option("--constants", f.constants,
+                 "paper-fit: e_e 0.98, mu_w 0.14 (the authors' fit, made with the paper solver; the default,\n"
+                 "the exact solver agrees with it to 1e-3 m/s); translator-fit: e_e 0.986, mu_w 0.2093 (the\n"
+                 "translator's afterword, for an exact solver)")
+      ->check(CLI::IsMember({"paper-fit", "translator-fit"}))
+      ->capture_default_str();
+  app.add_option("--e", f.restitution, "Cushion restitution e_e, (0, 1]; overrides --constants");
+  app.add_option("--mu-w", f.friction, "Ball-cushion friction mu_w >= 0; overrides --constants");
+  app.add_option("--height", f.height, "Contact height h of the cushion above the bed, m, in (R, 2R); default 7R/5");
+}
+
+CushionSolver solver_of(const CushionFlags& f) { return f.solver == "paper" ? CushionSolver::paper : CushionSolver::exact; }
+
+CushionParameters cushion_of(const CushionFlags& f, const Parameters& p) {
+  CushionParameters c = f.constants == "translator-fit" ? cushion_translator_exact_fit(p.ball)
+                                                         : cushion_mathavan2010_paper_fit(p.ball);
+  if (f.restitution) {
+    check_flag("--e", *f.restitution, 1e-9, 1.0, "cushion restitution e_e, (0, 1]");
+    c.restitution = *f.restitution;
+  }
+  if (f.friction) {
+    check_flag("--mu-w", *f.friction, 0.0, std::tan(std::asin(cushion_sin_theta(c, p.ball))),
+               "ball-cushion friction mu_w, at most tan(theta) or the ball would lift off the bed");
+    c.friction = *f.friction;
+  }
+  if (f.height) {
+    check_flag("--height", *f.height, p.ball.radius * (1 + 1e-9), 2 * p.ball.radius * (1 - 1e-9),
+               "cushion contact height h, m, between R and 2R");
+    c.contact_height = *f.height;
+  }
+  check_flag("--steps", f.steps, 1, 1e8, "paper solver steps N");
+  return c;
+}
+
+CushionImpactOptions options_of(const CushionFlags& f, bool history) {
+  CushionImpactOptions o;
+  o.solver = solver_of(f);
+  o.paper_steps = f.steps;
+  o.record_history = history;
+  return o;
+}
+
+// ------------------------------------------------------------------ cushion
+
+struct ImpactFlags {
+  double v0 = 0.0;
+  double alpha = 0.0;
+  std::optional<double> topspin, topspin_k, sidespin, sidespin_k;
+  bool history = false;
+  CushionFlags cushion;
+  ParameterFlags parameters;
+};
+
+double spin_from(const std::optional<double>& w, const std::optional<double>& k, double default_k, double v0,
+                 double radius, const char* flag, const char* k_flag) {
+  if (w && k) throw UsageError(std::string("give either ") + flag + " or " + k_flag + ", not both");
+  if (w) {
+    check_flag(flag, *w, -kMaxAngularSpeed, kMaxAngularSpeed, "spin, rad/s");
+    return *w;
+  }
+  const double kk = k ? *k : default_k;
+  check_flag(k_flag, kk, -20.0, 20.0, "spin as a multiple of V0/R");
+  return kk * v0 / radius;
+}
+
+void add_sample(nlohmann::ordered_json& rows, const CushionImpactSample& s) {
+  rows.push_back({{"P", s.normal_impulse},
+                  {"s", s.cushion_slip_speed},
+                  {"phi", s.cushion_slip_angle / kDegree},
+                  {"s_prime", s.bed_slip_speed},
+                  {"phi_prime", s.bed_slip_angle / kDegree},
+                  {"v", {s.velocity.x, s.velocity.y, s.velocity.z}},
+                  {"w", {s.angular_velocity.x, s.angular_velocity.y, s.angular_velocity.z}},
+                  {"work", s.work}});
+}
+
+void print_history_csv(std::ostream& out, const std::vector<CushionImpactSample>& history) {
+  out << "P,s,phi_deg,s_prime,phi_prime_deg,vx,vy,wx,wy,wz,work\n";
+  char line[512];
+  for (const CushionImpactSample& s : history) {
+    std::snprintf(line, sizeof line, "%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g\n", s.normal_impulse,
+                  s.cushion_slip_speed, s.cushion_slip_angle / kDegree, s.bed_slip_speed, s.bed_slip_angle / kDegree,
+                  s.velocity.x, s.velocity.y, s.angular_velocity.x, s.angular_velocity.y, s.angular_velocity.z, s.work);
+    out << line;
+  }
+}
+
+void run_cushion(const ImpactFlags& f, std::ostream& out, std::ostream& err) {
+  check_flag("--v0", f.v0, 1e-6, kMaxSpeed, "incoming speed V0, m/s");
+  check_flag("--alpha", f.alpha, 1e-9, 90.0, "angle between the velocity and the cushion, degrees, (0, 90]");
+  const Parameters p = resolve_parameters(f.parameters);
+  const CushionParameters cushion = cushion_of(f.cushion, p);
+  PaperIncidence in;
+  in.speed = f.v0;
+  in.angle = f.alpha * kDegree;
+  in.topspin = spin_from(f.topspin, f.topspin_k, 1.0, f.v0, p.ball.radius, "--topspin", "--topspin-k");
+  in.sidespin = spin_from(f.sidespin, f.sidespin_k, 0.0, f.v0, p.ball.radius, "--sidespin", "--sidespin-k");
+  const CushionImpactResult r = cushion_impact(incoming_ball(in), p, cushion, options_of(f.cushion, f.history));
+
+  Report report("cushion impact, " + f.cushion.solver + " solver (" + f.parameters.preset + " ball, SI units)");
+  report.add("speed", r.rebound_speed, "m/s", "rebound speed");
+  report.add("angle", r.rebound_angle / kDegree, "deg", "rebound angle beta from the cushion (> 90: back on its own side)");
+  report.add("v", {r.velocity.x, r.velocity.y}, "m/s", "outgoing velocity (X along the cushion, Y into it)");
+  report.add("w", {r.angular_velocity.x, r.angular_velocity.y, r.angular_velocity.z}, "rad/s", "outgoing spin");
+  report.add("impulse_compression", r.compression_impulse, "N s", "P_I at the end of compression");
+  report.add("impulse_total", r.total_impulse, "N s", "P_I at the end of restitution");
+  report.add("work_compression", r.compression_work, "J", "W_c, work of the normal force in compression");
+  report.begin_section("incoming", "incoming:");
+  report.add("v0", f.v0, "m/s");
+  report.add("alpha", f.alpha, "deg");
+  report.add("topspin", in.topspin, "rad/s", "w_T (V0/R: rolling)");
+  report.add("sidespin", in.sidespin, "rad/s", "w_S (> 0: right spin, Fig 2)");
+  report.end_section();
+  report.begin_section("cushion", "cushion:");
+  report.add_text("solver", f.cushion.solver);
+  report.add_text("constants", f.cushion.restitution || f.cushion.friction ? "custom" : f.cushion.constants);
+  report.add("e", cushion.restitution, "", "restitution e_e");
+  report.add("mu_w", cushion.friction, "", "ball-cushion friction");
+  report.add("height", cushion.contact_height, "m", "contact height h");
+  if (solver_of(f.cushion) == CushionSolver::paper) report.add("steps", f.cushion.steps, "", "Euler steps N");
+  report.end_section();
+  if (r.beyond_rigid_cushion_limit) {
+    report.warn("the normal speed " + std::to_string(f.v0 * std::sin(in.angle)) +
+                " m/s exceeds 2.5 m/s, the limit of the rigid-cushion model (Mathavan 2010, Fig 7)");
+  }
+  if (f.parameters.json) {
+    nlohmann::ordered_json j = report.to_json();
+    if (f.history) {
+      nlohmann::ordered_json rows = nlohmann::ordered_json::array();
+      for (const CushionImpactSample& s : r.history) add_sample(rows, s);
+      j["history"] = rows;
+    }
+    out << j.dump(2) << '\n';
+    for (const std::string& w : report.warnings()) err << "cueball: warning: " << w << '\n';
+  } else {
+    emit(report, false, out, err);
+    if (f.history) {
+      out << "\nhistory over the normal impulse P_I (CSV):\n";
+      print_history_csv(out, r.history);
+    }
+  }
+}
+
+// ------------------------------------------------------------------ cushion-sweep
+
+struct SweepFlags {
+  std::string family = "grid";
+  CushionFlags cushion;
+  ParameterFlags parameters;
+};
+
+void sweep_row(std::ostream& out, const char* family, const PaperIncidence& in, const CushionImpactResult& r,
+               double radius, const std::string& solver) {
+  char line[256];
+  std::snprintf(line, sizeof line, "%s,%s,%.6g,%.6g,%.6g,%.6g,%.12g,%.12g\n", family, solver.c_str(), in.speed,
+                in.angle / kDegree, in.topspin * radius / in.speed, in.sidespin * radius / in.speed, r.rebound_speed,
+                r.rebound_angle / kDegree);
+  out << line;
+}
+
+void run_sweep(const SweepFlags& f, std::ostream& out, std::ostream& err) {
+  const Parameters p = resolve_parameters(f.parameters);
+  const CushionParameters cushion = cushion_of(f.cushion, p);
+  const CushionImpactOptions options = options_of(f.cushion, false);
+  const double radius = p.ball.radius;
+  const auto impact = [&](double v0, double alpha_deg, double top_k, double side_k) {
+    PaperIncidence in{v0, alpha_deg * kDegree, top_k * v0 / radius, side_k * v0 / radius};
+    return std::pair{in, cushion_impact(incoming_ball(in), p, cushion, options)};
+  };
+  const std::vector<double> topspins{-1.0, -0.5, 0.0, 0.5, 1.0, 1.5, 2.0};
+  const std::vector<double> sidespins{-2.0, -1.5, -1.0, -0.5, 0.0, 0.5, 1.0, 1.5, 2.0};
+
+  if (f.family == "fig12") {
+    // Slip speeds and angles over the impact: V0 = 2, alpha = 45, w_S = 2 V0/R, w_T = 1.5 V0/R.
+    PaperIncidence in{2.0, 45.0 * kDegree, 1.5 * 2.0 / radius, 2.0 * 2.0 / radius};
+    CushionImpactOptions o = options;
+    o.record_history = true;
+    print_history_csv(out, cushion_impact(incoming_ball(in), p, cushion, o).history);
+    return;
+  }
+  out << "family,solver,v0,alpha_deg,topspin_k,sidespin_k,speed,angle_deg\n";
+  const char* family = f.family.c_str();
+  bool beyond_limit = false;
+  for (int a = 1; a <= 90; ++a) {
+    if (f.family == "fig8") {
+      for (double v0 : {0.5, 1.0, 1.5, 2.0, 2.5, 3.0}) {
+        const auto [in, r] = impact(v0, a, 1.0, 0.0);
+        beyond_limit = beyond_limit || r.beyond_rigid_cushion_limit;
+        sweep_row(out, family, in, r, radius, f.cushion.solver);
+      }
+    } else if (f.family == "fig9") {
+      for (double k : topspins) {
+        const auto [in, r] = impact(1.0, a, k, 0.0);
+        sweep_row(out, family, in, r, radius, f.cushion.solver);
+      }
+    } else if (f.family == "fig10") {
+      for (double k : sidespins) {
+        const auto [in, r] = impact(1.0, a, 1.0, k);
+        sweep_row(out, family, in, r, radius, f.cushion.solver);
+      }
+    } else {
+      for (double top : topspins) {
+        for (double side : sidespins) {
+          const auto [in, r] = impact(1.0, a, top, side);
+          sweep_row(out, family, in, r, radius, f.cushion.solver);
+        }
+      }
+    }
+  }
+  if (beyond_limit) err << "cueball: warning: some rows exceed the rigid-cushion limit of 2.5 m/s normal speed\n";
+}
+
+
+// ------------------------------------------------------------------ figures
+
+struct FigureFlags {
+  std::string out = "figures";
+  std::string format = "png";
+  CushionFlags cushion;
+  ParameterFlags parameters;
+};
+
+// One curve family of Figs 8-10: label, V0, topspin K, sidespin K.
+struct Series {
+  std::string label;
+  double v0, top_k, side_k;
+};
+
+// Writes the series as gnuplot data blocks (one "index" each): alpha, speed, angle.
+void write_family(const std::filesystem::path& file, const std::vector<Series>& family, const Parameters& p,
+                  const CushionParameters& c, const CushionImpactOptions& o) {
+  std::ofstream data(file);
+  for (const Series& s : family) {
+    data << "# " << s.label << "\nalpha_deg speed angle_deg\n";
+    for (int a = 1; a <= 90; ++a) {
+      const PaperIncidence in{s.v0, a * kDegree, s.top_k * s.v0 / p.ball.radius, s.side_k * s.v0 / p.ball.radius};
+      const CushionImpactResult r = cushion_impact(incoming_ball(in), p, c, o);
+      data << a << ' ' << r.rebound_speed << ' ' << r.rebound_angle / kDegree << '\n';
+    }
+    data << "\n\n";
+  }
+  if (!data) throw std::runtime_error("cannot write " + file.string());
+}
+
+std::string titles_of(const std::vector<Series>& family) {
+  std::string t;
+  for (const Series& s : family) t += (t.empty() ? "" : " ") + s.label;
+  return t;
+}
+
+std::string terminal_for(const std::string& format) {
+  return format == "svg" ? "set terminal svg size 1200,500 dynamic background rgb 'white' font 'sans,12'"
+                         : "set terminal pngcairo size 1200,500 font 'sans,11'";
+}
+
+void run_figures(const FigureFlags& f, std::ostream& out, std::ostream& err) {
+  if (f.format != "png" && f.format != "svg") throw UsageError("--format = " + f.format + " is not one of png, svg");
+  const Parameters p = resolve_parameters(f.parameters);
+  // Both solvers with the same constants (the paper's fit unless overridden),
+  // so any gap between the curves is the Euler scheme's discretisation.
+  CushionFlags paper_flags = f.cushion;
+  paper_flags.solver = "paper";
+  const CushionParameters c = cushion_of(paper_flags, p);
+  const CushionImpactOptions paper = options_of(paper_flags, false);
+  CushionImpactOptions exact = paper;
+  exact.solver = CushionSolver::exact;
+  if (std::system("command -v gnuplot > /dev/null 2>&1") != 0)
+    throw std::runtime_error("gnuplot is not installed (apt-get install gnuplot-nox)");
+  const std::filesystem::path dir = f.out;
+  std::error_code ec;
+  std::filesystem::create_directories(dir, ec);
+  if (ec) throw UsageError("--out = " + f.out + ": cannot create the directory (" + ec.message() + ")");
+
+  std::vector<Series> fig8, fig9, fig10;
+  for (double v0 : {0.5, 1.0, 1.5, 2.0, 2.5}) fig8.push_back({"V0=" + std::to_string(v0).substr(0, 3), v0, 1.0, 0.0});
+  for (double k : {-1.0, -0.5, 0.0, 0.5, 1.0, 1.5, 2.0}) {
+    char label[32];
+    std::snprintf(label, sizeof label, "k=%g", k);
+    fig9.push_back({label, 1.0, k, 0.0});
+  }
+  for (double k : {-2.0, -1.0, -0.5, 0.0, 0.5, 1.0, 2.0}) {
+    char label[32];
+    std::snprintf(label, sizeof label, "k=%g", k);
+    fig10.push_back({label, 1.0, 1.0, k});
+  }
+  const struct {
+    const char* name;
+    const char* caption;
+    const std::vector<Series>* family;
+  } figures[] = {
+      {"fig8", "Fig 8: rolling, no sidespin (w_T = V0/R)", &fig8},
+      {"fig9", "Fig 9: topspin w_T = k V0/R, V0 = 1 m/s", &fig9},
+      {"fig10", "Fig 10: sidespin w_S = k V0/R, rolling, V0 = 1 m/s", &fig10},
+  };
+  char constants[128];
+  std::snprintf(constants, sizeof constants, "e_e = %g, mu_w = %g; lines: paper (Euler, N = %d), points: exact",
+                c.restitution, c.friction, f.cushion.steps);
+  std::vector<std::filesystem::path> written;
+  for (const auto& fig : figures) {
+    write_family(dir / (std::string(fig.name) + "_paper.dat"), *fig.family, p, c, paper);
+    write_family(dir / (std::string(fig.name) + "_exact.dat"), *fig.family, p, c, exact);
+    const std::filesystem::path image = dir / (std::string(fig.name) + "." + f.format);
+    std::ofstream gp(dir / (std::string(fig.name) + ".gp"));
+    gp << terminal_for(f.format) << "\n"
+       << "set output '" << image.string() << "'\n"
+       << "titles = '" << titles_of(*fig.family) << "'\n"
+       << "n = words(titles)\n"
+       << "set multiplot layout 1,2 title \"" << fig.caption << "\\n{/*0.8 " << constants << "}\" enhanced\n"
+       << "set grid\nset key outside right top font ',9'\nset xlabel 'angle of incidence alpha (deg)'\n"
+       << "set xrange [0:90]\nset ylabel 'rebound speed (m/s)'\n"
+       << "plot for [i=0:n-1] '" << fig.name << "_paper.dat' index i using 1:2 with lines lw 2 lc i+1 title word(titles, i+1), "
+       << "for [i=0:n-1] '" << fig.name << "_exact.dat' index i using 1:2 every 5 with points pt 6 ps 0.6 lc i+1 notitle\n"
+       << "set ylabel 'rebound angle beta (deg)'\n"
+       << "plot for [i=0:n-1] '" << fig.name << "_paper.dat' index i using 1:3 with lines lw 2 lc i+1 title word(titles, i+1), "
+       << "for [i=0:n-1] '" << fig.name << "_exact.dat' index i using 1:3 every 5 with points pt 6 ps 0.6 lc i+1 notitle\n"
+       << "unset multiplot\n";
+    written.push_back(image);
+  }
+  // Fig 12: slip speeds and angles over the normal impulse.
+  {
+    const PaperIncidence in{2.0, 45.0 * kDegree, 1.5 * 2.0 / p.ball.radius, 2.0 * 2.0 / p.ball.radius};
+    for (const auto& [name, options] : {std::pair{"paper", paper}, std::pair{"exact", exact}}) {
+      CushionImpactOptions o = options;
+      o.record_history = true;
+      std::ofstream data(dir / (std::string("fig12_") + name + ".csv"));
+      print_history_csv(data, cushion_impact(incoming_ball(in), p, c, o).history);
+    }
+    const std::filesystem::path image = dir / ("fig12." + f.format);
+    std::ofstream gp(dir / "fig12.gp");
+    gp << terminal_for(f.format) << "\n"
+       << "set output '" << image.string() << "'\nset datafile separator ','\n"
+       << "set multiplot layout 1,2 title \"Fig 12: slip over the impact, V0 = 2 m/s, alpha = 45 deg, "
+       << "w_S = 2 V0/R, w_T = 1.5 V0/R\\n{/*0.8 " << constants << "}\" enhanced\n"
+       << "set grid\nset xlabel 'normal impulse P_I (N s)'\nset ylabel 'slip speed (m/s)'\n"
+       << "plot 'fig12_paper.csv' using 1:2 with lines lw 2 title 's (cushion, I)', "
+       << "'fig12_paper.csv' using 1:4 with lines lw 2 title \"s' (cloth, C)\", "
+       << "'fig12_exact.csv' using 1:2 with points pt 6 ps 0.5 lc 1 notitle, "
+       << "'fig12_exact.csv' using 1:4 with points pt 6 ps 0.5 lc 2 notitle\n"
+       << "set ylabel 'slip angle (deg)'\n"
+       << "plot 'fig12_paper.csv' using 1:3 with lines lw 2 title 'Phi', "
+       << "'fig12_paper.csv' using 1:5 with lines lw 2 title \"Phi'\", "
+       << "'fig12_exact.csv' using 1:3 with points pt 6 ps 0.5 lc 1 notitle, "
+       << "'fig12_exact.csv' using 1:5 with points pt 6 ps 0.5 lc 2 notitle\n"
+       << "unset multiplot\n";
+    written.push_back(image);
+  }
+  for (const char* name : {"fig8", "fig9", "fig10", "fig12"}) {
+    const std::string command = "cd '" + dir.string() + "' && gnuplot " + name + ".gp > " + name + ".log 2>&1";
+    if (std::system(command.c_str()) != 0)
+      throw std::runtime_error(std::string("gnuplot failed on ") + name + ".gp; see " + (dir / name).string() + ".log");
+  }
+  for (const auto& image : written) out << image.string() << '\n';
+  (void)err;
+}
+
+}  // namespace
+
+Command add_cushion_command(CLI::App& app) {
+  auto flags = std::make_shared<ImpactFlags>();
+  CLI::App* sub = app.add_subcommand(
+      "cushion",
+      "One ball-cushion impact (Mathavan, Jackson & Parkin 2010). Cushion frame: X along the cushion,\n"
+      "Y into it, Z up. --alpha is the angle between the velocity and the cushion in degrees (90: head-on).\n"
+      "Topspin w_T > 0 turns the ball the way it rolls (V0/R: natural roll, the default); sidespin w_S > 0\n"
+      "is the 'right' spin of the paper's Fig 2, about +Z. The --*-k forms give spin as K V0 / R. Output\n"
+      "angle beta is measured from the cushion line; above 90 the ball comes back on its own side. SI units.");
+  sub->add_option("--v0", flags->v0, "Incoming speed V0, m/s")->required();
+  sub->add_option("--alpha", flags->alpha, "Angle of incidence from the cushion, degrees, (0, 90]")->required();
+  sub->add_option("--topspin", flags->topspin, "Topspin w_T, rad/s");
+  sub->add_option("--topspin-k", flags->topspin_k, "Topspin as K: w_T = K V0 / R (default 1: rolling)");
+  sub->add_option("--sidespin", flags->sidespin, "Sidespin w_S, rad/s");
+  sub->add_option("--sidespin-k", flags->sidespin_k, "Sidespin as K: w_S = K V0 / R (default 0)");
+  sub->add_flag("--history", flags->history, "Also print s, Phi, s', Phi', velocities, spins and W over P_I");
+  add_cushion_flags(*sub, flags->cushion);
+  add_parameter_flags(*sub, flags->parameters);
+  return [flags](std::ostream& out, std::ostream& err) { run_cushion(*flags, out, err); };
+}
+
+Command add_cushion_sweep_command(CLI::App& app) {
+  auto flags = std::make_shared<SweepFlags>();
+  CLI::App* sub = app.add_subcommand(
+      "cushion-sweep",
+      "The paper's families of cushion impacts as CSV (speed m/s, angles degrees):\n"
+      "  fig8   rolling, no sidespin, V0 = 0.5 ... 3 m/s, alpha 1-90\n"
+      "  fig9   V0 = 1 m/s, topspin K in {-1, -0.5, 0, 0.5, 1, 1.5, 2}, alpha 1-90\n"
+      "  fig10  rolling, V0 = 1 m/s, sidespin K in {-2, -1.5, ..., 2}, alpha 1-90\n"
+      "  fig12  slip speeds and angles over P_I at V0 = 2, alpha = 45, w_S = 2 V0/R, w_T = 1.5 V0/R\n"
+      "  grid   alpha 1-90 x topspin K (7 values) x sidespin K (9 values) at V0 = 1 m/s");
+  sub->add_option("--family", flags->family, "fig8, fig9, fig10, fig12 or grid")
+      ->check(CLI::IsMember({"fig8", "fig9", "fig10", "fig12", "grid"}))
+      ->capture_default_str();
+  add_cushion_flags(*sub, flags->cushion);
+  add_parameter_flags(*sub, flags->parameters);
+  return [flags](std::ostream& out, std::ostream& err) { run_sweep(*flags, out, err); };
+}
+
+Command add_figures_command(CLI::App& app) {
+  auto flags = std::make_shared<FigureFlags>();
+  CLI::App* sub = app.add_subcommand(
+      "figures",
+      "Redraws the cushion paper's Figs 8, 9, 10 and 12 with gnuplot into --out: rebound speed and angle\n"
+      "against the angle of incidence, and the slip speeds and angles over the impact. Lines are the\n"
+      "paper's Euler solver, points the exact solver, with the same constants (the paper's fit unless\n"
+      "--e / --mu-w are given), so a gap between them is the Euler scheme's error. Prints the files.");
+  sub->add_option("--out", flags->out, "Directory for the images, data and gnuplot scripts")->capture_default_str();
+  sub->add_option("--format", flags->format, "png or svg")->check(CLI::IsMember({"png", "svg"}))->capture_default_str();
+  add_cushion_flags(*sub, flags->cushion);
+  add_parameter_flags(*sub, flags->parameters);
+  return [flags](std::ostream& out, std::ostream& err) { run_figures(*flags, out, err); };
+}
+
+}  // namespace cueball::cli

@@ -1,0 +1,170 @@
+// Tests of the cushion subcommands of the CLI (cli/command_cushion.cpp):
+// cushion, cushion-sweep and figures.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <nlohmann/json.hpp>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "cli_runner.hpp"
+#include "cueball/cushion_impact.hpp"
+
+namespace cueball {
+namespace {
+
+using test::CliRun;
+using test::expect_usage_error;
+using test::run_cli;
+
+constexpr double kDeg = 3.14159265358979323846 / 180.0;
+
+std::vector<std::vector<std::string>> parse_csv(const std::string& text) {
+  std::vector<std::vector<std::string>> rows;
+  std::istringstream in(text);
+  std::string line;
+  while (std::getline(in, line)) {
+    std::vector<std::string> cells;
+    std::istringstream cols(line);
+    std::string cell;
+    while (std::getline(cols, cell, ',')) cells.push_back(cell);
+    rows.push_back(cells);
+  }
+  return rows;
+}
+
+TEST(CliCushion, JsonMatchesTheLibraryAndHasTheDocumentedKeys) {
+  const CliRun r = run_cli({"cushion", "--v0", "1.2", "--alpha", "35", "--topspin-k", "0.5", "--sidespin-k", "-1",
+                            "--json"});
+  ASSERT_EQ(r.status, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  const Parameters p = snooker_parameters();
+  const PaperIncidence in{1.2, 35 * kDeg, 0.5 * 1.2 / p.ball.radius, -1.2 / p.ball.radius};
+  const CushionImpactResult expected = cushion_impact(incoming_ball(in), p, cushion_mathavan2010_paper_fit(p.ball));
+  EXPECT_DOUBLE_EQ(j.at("speed").get<double>(), expected.rebound_speed);
+  EXPECT_NEAR(j.at("angle").get<double>(), expected.rebound_angle / kDeg, 1e-12);
+  EXPECT_EQ(j.at("v").size(), 2u);
+  EXPECT_EQ(j.at("w").size(), 3u);
+  EXPECT_DOUBLE_EQ(j.at("v")[1].get<double>(), expected.velocity.y);
+  EXPECT_DOUBLE_EQ(j.at("w")[2].get<double>(), expected.angular_velocity.z);
+  EXPECT_DOUBLE_EQ(j.at("impulse_compression").get<double>(), expected.compression_impulse);
+  EXPECT_DOUBLE_EQ(j.at("impulse_total").get<double>(), expected.total_impulse);
+  EXPECT_DOUBLE_EQ(j.at("work_compression").get<double>(), expected.compression_work);
+  EXPECT_FALSE(j.contains("warnings"));
+}
+
+TEST(CliCushion, ConstantsDefaultToThePaperFitForBothSolvers) {
+  const auto cushion_of = [](const std::vector<std::string>& extra) {
+    std::vector<std::string> args{"cushion", "--v0", "1", "--alpha", "60", "--json"};
+    args.insert(args.end(), extra.begin(), extra.end());
+    const CliRun r = run_cli(args);
+    EXPECT_EQ(r.status, 0) << r.err;
+    return nlohmann::json::parse(r.out).at("cushion");
+  };
+  for (const char* solver : {"paper", "exact"}) {
+    EXPECT_EQ(cushion_of({"--solver", solver}).at("e").get<double>(), 0.98);
+    EXPECT_EQ(cushion_of({"--solver", solver}).at("mu_w").get<double>(), 0.14);
+  }
+  EXPECT_EQ(cushion_of({"--constants", "translator-fit"}).at("e").get<double>(), 0.986);
+  EXPECT_EQ(cushion_of({"--constants", "translator-fit"}).at("mu_w").get<double>(), 0.2093);
+  const CliRun overridden = run_cli({"cushion", "--v0", "1", "--alpha", "60", "--e", "0.9", "--mu-w", "0.1", "--json"});
+  ASSERT_EQ(overridden.status, 0);
+  EXPECT_EQ(nlohmann::json::parse(overridden.out).at("cushion").at("e").get<double>(), 0.9);
+}
+
+TEST(CliCushion, SpinInRadiansPerSecondEqualsTheKForm) {
+  const double radius = snooker_parameters().ball.radius;
+  const std::string w = std::to_string(1.5 * 0.8 / radius);
+  const CliRun a = run_cli({"cushion", "--v0", "0.8", "--alpha", "50", "--topspin", w, "--json"});
+  const CliRun b = run_cli({"cushion", "--v0", "0.8", "--alpha", "50", "--topspin-k", "1.5", "--json"});
+  ASSERT_EQ(a.status, 0);
+  ASSERT_EQ(b.status, 0);
+  EXPECT_NEAR(nlohmann::json::parse(a.out).at("speed").get<double>(),
+              nlohmann::json::parse(b.out).at("speed").get<double>(), 1e-6);
+}
+
+TEST(CliCushion, HistoryRunsOverIncreasingNormalImpulse) {
+  const CliRun r = run_cli({"cushion", "--v0", "2", "--alpha", "45", "--topspin-k", "1.5", "--sidespin-k", "2",
+                            "--history", "--json"});
+  ASSERT_EQ(r.status, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  const auto& h = j.at("history");
+  ASSERT_GT(h.size(), 3u);
+  for (std::size_t i = 1; i < h.size(); ++i) EXPECT_GE(h[i].at("P").get<double>(), h[i - 1].at("P").get<double>());
+  EXPECT_NEAR(h.back().at("P").get<double>(), j.at("impulse_total").get<double>(), 1e-12);
+}
+
+TEST(CliCushion, FastImpactWarnsButSucceeds) {
+  const CliRun r = run_cli({"cushion", "--v0", "3", "--alpha", "80", "--json"});
+  EXPECT_EQ(r.status, 0);
+  EXPECT_NE(r.err.find("warning"), std::string::npos);
+  EXPECT_NE(r.err.find("2.5"), std::string::npos);
+  EXPECT_EQ(nlohmann::json::parse(r.out).at("warnings").size(), 1u);
+}
+
+TEST(CliCushion, BadInputExitsWithStatusTwoNamingTheFlag) {
+  expect_usage_error({"cushion", "--v0", "1", "--alpha", "0"}, "--alpha");
+  expect_usage_error({"cushion", "--v0", "1", "--alpha", "95"}, "--alpha");
+  expect_usage_error({"cushion", "--v0", "1", "--alpha", "nan"}, "--alpha");
+  expect_usage_error({"cushion", "--v0", "0", "--alpha", "30"}, "--v0");
+  expect_usage_error({"cushion", "--v0", "-1", "--alpha", "30"}, "--v0");
+  expect_usage_error({"cushion", "--v0", "1", "--alpha", "30", "--e", "1.5"}, "--e");
+  expect_usage_error({"cushion", "--v0", "1", "--alpha", "30", "--e", "0"}, "--e");
+  expect_usage_error({"cushion", "--v0", "1", "--alpha", "30", "--mu-w", "-0.1"}, "--mu-w");
+  expect_usage_error({"cushion", "--v0", "1", "--alpha", "30", "--steps", "0"}, "--steps");
+  expect_usage_error({"cushion", "--v0", "1", "--alpha", "30", "--topspin", "3", "--topspin-k", "1"}, "--topspin");
+  expect_usage_error({"cushion", "--v0", "1", "--alpha", "30", "--solver", "rk45"}, "--solver");
+  expect_usage_error({"cushion-sweep", "--family", "fig99"}, "--family");
+}
+
+TEST(CliCushion, Fig8SweepHasOneAngleForEverySpeed) {
+  const CliRun r = run_cli({"cushion-sweep", "--family", "fig8"});
+  ASSERT_EQ(r.status, 0) << r.err;
+  const auto rows = parse_csv(r.out);
+  ASSERT_EQ(rows.size(), 1u + 90u * 6u);
+  EXPECT_EQ(rows[0][7], "angle_deg");
+  // Rolling without sidespin: the rebound angle does not depend on V0 (Fig 8).
+  std::map<std::string, std::vector<double>> angles_by_alpha;
+  for (std::size_t i = 1; i < rows.size(); ++i) angles_by_alpha[rows[i][3]].push_back(std::stod(rows[i][7]));
+  for (const auto& [alpha, angles] : angles_by_alpha) {
+    for (double a : angles) EXPECT_NEAR(a, angles.front(), 1e-6) << "alpha " << alpha;
+  }
+}
+
+TEST(CliCushion, GridSweepCoversTheDocumentedGrid) {
+  const CliRun r = run_cli({"cushion-sweep", "--family", "grid"});
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_EQ(parse_csv(r.out).size(), 1u + 90u * 7u * 9u);
+}
+
+TEST(CliCushion, Fig12SweepIsTheImpactHistory) {
+  const CliRun r = run_cli({"cushion-sweep", "--family", "fig12", "--solver", "paper"});
+  ASSERT_EQ(r.status, 0) << r.err;
+  const auto rows = parse_csv(r.out);
+  EXPECT_EQ(rows[0][0], "P");
+  EXPECT_GT(rows.size(), 1000u) << "one row per Euler step";
+}
+
+TEST(CliCushion, FiguresWritesTheFourPlots) {
+  const std::filesystem::path dir = std::filesystem::temp_directory_path() / "cueball_test_figures";
+  std::filesystem::remove_all(dir);
+  const CliRun r = run_cli({"figures", "--out", dir.string(), "--format", "svg", "--steps", "500"});
+  ASSERT_EQ(r.status, 0) << r.err;
+  for (const char* name : {"fig8", "fig9", "fig10", "fig12"}) {
+    const std::filesystem::path svg = dir / (std::string(name) + ".svg");
+    ASSERT_TRUE(std::filesystem::exists(svg)) << svg;
+    std::ifstream in(svg);
+    const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    EXPECT_NE(text.find("<svg"), std::string::npos) << name;
+    EXPECT_NE(text.find("<path"), std::string::npos) << name << " has no curves";
+    EXPECT_NE(r.out.find(svg.string()), std::string::npos);
+  }
+  std::filesystem::remove_all(dir);
+}
+
+}  // namespace
+}  // namespace cueball

@@ -1,0 +1,91 @@
+// Throughput of the ball-ball collision kernel (src/ball_collision.cpp), which
+// the table simulator calls at every ball-ball event. Each benchmark cycles
+// through the same batch of 4096 random touching, approaching pairs (speeds up
+// to 4 m/s, spins up to 2 v_max / R) so branch prediction cannot memorise one
+// path. Time per iteration = time per collision.
+//
+//   BM_CollideBalls/alciatore     e = 0.95, speed-dependent friction (TP A.14):
+//                                 most pairs have a vertical slip component,
+//                                 the slip direction turns, and the kernel
+//                                 integrates it (Gauss-Legendre + Newton)
+//   BM_CollideBalls/stun          the same pairs without spins about horizontal
+//                                 axes: horizontal slip only, closed form
+//   BM_CollideBalls/frictionless  normal impulse only
+// Counter gripped: the fraction of the batch whose slip stopped during the impact.
+#include <benchmark/benchmark.h>
+
+#include <cmath>
+#include <random>
+#include <vector>
+
+#include "cueball/ball_collision.hpp"
+#include "cueball/parameters.hpp"
+
+namespace {
+
+using namespace cueball;
+
+constexpr std::size_t kBatch = 4096;
+
+struct Pair {
+  BallState a;
+  BallState b;
+};
+
+std::vector<Pair> make_batch(bool horizontal_spins) {
+  const double radius = pool_parameters().ball.radius;
+  std::mt19937_64 rng(2024);
+  std::uniform_real_distribution<double> unit(-1.0, 1.0);
+  const double v_max = 4.0;
+  const double w_max = 2.0 * v_max / radius;
+  std::vector<Pair> out;
+  out.reserve(kBatch);
+  while (out.size() < kBatch) {
+    Pair p;
+    const double theta = 3.14159265358979323846 * unit(rng);
+    p.a.position = {unit(rng), unit(rng)};
+    p.b.position = p.a.position + 2.0 * radius * Vec2{std::cos(theta), std::sin(theta)};
+    p.a.velocity = v_max * Vec2{unit(rng), unit(rng)};
+    p.b.velocity = 0.5 * v_max * Vec2{unit(rng), unit(rng)};
+    p.a.angular_velocity = w_max * Vec3{unit(rng), unit(rng), unit(rng)};
+    p.b.angular_velocity = 0.5 * w_max * Vec3{unit(rng), unit(rng), unit(rng)};
+    if (!horizontal_spins) {
+      p.a.angular_velocity.x = p.a.angular_velocity.y = 0.0;
+      p.b.angular_velocity.x = p.b.angular_velocity.y = 0.0;
+    }
+    if (balls_approaching(p.a, p.b)) out.push_back(p);
+  }
+  return out;
+}
+
+const std::vector<Pair>& batch(bool horizontal_spins) {
+  static const std::vector<Pair> spinning = make_batch(true);
+  static const std::vector<Pair> stun = make_batch(false);
+  return horizontal_spins ? spinning : stun;
+}
+
+void run(benchmark::State& state, bool horizontal_spins, const BallCollisionParameters& contact) {
+  const BallParameters ball = pool_parameters().ball;
+  const std::vector<Pair>& pairs = batch(horizontal_spins);
+  std::size_t i = 0;
+  for (auto _ : state) {
+    const BallCollisionResult r = resolve_ball_collision(pairs[i].a, pairs[i].b, ball, contact);
+    benchmark::DoNotOptimize(r);
+    i = (i + 1) & (kBatch - 1);
+  }
+  double gripped = 0.0;
+  for (const Pair& p : pairs) gripped += resolve_ball_collision(p.a, p.b, ball, contact).gripped ? 1.0 : 0.0;
+  state.counters["gripped"] = gripped / static_cast<double>(kBatch);
+  state.SetItemsProcessed(static_cast<int64_t>(state.iterations()));
+}
+
+void BM_CollideBalls_Alciatore(benchmark::State& state) { run(state, true, ball_collision_alciatore()); }
+BENCHMARK(BM_CollideBalls_Alciatore)->Name("BM_CollideBalls/alciatore");
+
+void BM_CollideBalls_Stun(benchmark::State& state) { run(state, false, ball_collision_alciatore()); }
+BENCHMARK(BM_CollideBalls_Stun)->Name("BM_CollideBalls/stun");
+
+void BM_CollideBalls_Frictionless(benchmark::State& state) { run(state, true, ball_collision_frictionless(0.95)); }
+BENCHMARK(BM_CollideBalls_Frictionless)->Name("BM_CollideBalls/frictionless");
+
+}  // namespace

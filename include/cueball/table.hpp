@@ -1,0 +1,255 @@
+// Table geometry: cushions, pocket jaws, pockets, with presets and JSON.
+//
+// Frame (shared/spec/physics.md): x, y in the bed of the table, z up, metres.
+// The origin is one corner of the playing surface measured cushion nose to
+// cushion nose; x runs along the length (0..length), y across the width
+// (0..width). Pocket and plot names below read the table drawn with x to the
+// right and y up: "bottom" is the rail y = 0, "left" the end x = 0.
+//
+// The simulator predicts collisions from three primitives, kept deliberately
+// simple:
+//
+// * CushionSegment: a straight cushion nose line from `start` to `end`. The
+//   playing surface is on the LEFT of start -> end, so the inward normal
+//   (pointing onto the playing surface) is perp(end - start) / |end - start|;
+//   the boundary of a table runs counter-clockwise seen from above. The nose
+//   is a horizontal edge at height h = contact_height above the bed. A ball of
+//   radius R (centre at height R) touches it when the 3-D distance from the
+//   ball's centre to that edge is R, i.e. when the centre's distance d in the
+//   plan from the nose line satisfies d^2 + (h - R)^2 = R^2:
+//       d = R cos(theta) = sqrt(h (2R - h)),   sin(theta) = (h - R) / R
+//   (Mathavan, Jackson & Parkin 2010, Fig. 3; spec/physics.md section 2).
+//   Only contacts whose foot of the perpendicular falls inside [start, end]
+//   belong to the segment: the ends are rounded off by jaw arcs (pockets) or
+//   meet another segment at a corner the ball cannot reach (carom table).
+//
+// * JawArc: the rounded tip where a cushion nose turns into a pocket facing.
+//   Its nose is a horizontal circle of radius `radius` about `centre` at the
+//   same height h, tangent to the nose segment and to the facing segment it
+//   joins. The same 3-D argument gives the contact rule: a ball touches the
+//   jaw when its centre is at plan distance  radius + sqrt(h (2R - h))  from
+//   `centre`, approaching from outside. The simulator may treat the jaw as a
+//   full circle: it is inscribed in the cushion's corner, so a ball can reach
+//   its hidden part only by crossing one of the two tangent segments or the
+//   pocket's capture circle first (checked by a flood fill of reachable ball
+//   centres in tests/test_table.cpp).
+//
+// * Pocket: the plan outline of the hole cut in the slate, a circle. A ball is
+//   pocketed when its centre comes within `radius` of `centre` (distance <=
+//   radius): from then its contact point with the bed (directly below its
+//   centre) is over the hole and it falls. The WPA/BCA "shelf" is the distance
+//   from the centre of the mouth line (lip to lip) to the slate's cut along
+//   the pocket's axis (BCA pocket specifications; WPA Equipment
+//   Specifications, "Shelf"), so the circle's nearest point to the table lies
+//   `shelf` behind the middle of the mouth. Its radius is half the throat
+//   width between the two facings at that depth, so that the circle spans the
+//   throat: a ball that has passed the jaws and the shelf and is still between
+//   the facings is inside the circle before the facings end (the facings stop
+//   at the depth of the circle's centre). See build_table().
+#pragma once
+
+#include <array>
+#include <cmath>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "cueball/parameters.hpp"
+#include "cueball/vec.hpp"
+
+namespace cueball {
+
+/// A straight cushion nose. Playing surface on the left of start -> end.
+struct CushionSegment {
+  Vec2 start;
+  Vec2 end;
+  double contact_height = 0.0;  ///< h, height of the nose above the bed, m, in (R, 2R)
+
+  friend bool operator==(const CushionSegment&, const CushionSegment&) = default;
+};
+
+/// The rounded cushion tip at a pocket jaw; contact at plan distance
+/// radius + sqrt(h (2R - h)) from centre.
+struct JawArc {
+  Vec2 centre;
+  double radius = 0.0;          ///< m, > 0
+  double contact_height = 0.0;  ///< h, m, in (R, 2R)
+
+  friend bool operator==(const JawArc&, const JawArc&) = default;
+};
+
+/// Capture circle: a ball whose centre is within `radius` of `centre` drops.
+struct Pocket {
+  std::string name;
+  Vec2 centre;
+  double radius = 0.0;  ///< m, in (0, 0.2]
+
+  friend bool operator==(const Pocket&, const Pocket&) = default;
+};
+
+struct Table {
+  std::string name;
+  double length = 0.0;  ///< playing surface along x, cushion nose to nose, m
+  double width = 0.0;   ///< playing surface along y, cushion nose to nose, m
+  std::vector<CushionSegment> cushions;
+  std::vector<JawArc> jaws;
+  std::vector<Pocket> pockets;
+  std::vector<Vec2> diamonds;  ///< sights on the rail, for drawing only
+  BallParameters ball;         ///< the balls played on this table
+};
+
+bool operator==(const Table& a, const Table& b);
+
+// ------------------------------------------------------------------ contact rules
+
+/// Plan distance from a ball's centre to a cushion nose line (or a jaw's
+/// circle) at first contact: R cos(theta) = sqrt(h (2R - h)) with
+/// sin(theta) = (h - R)/R. Precondition 0 < h < 2R (not checked: hot path).
+inline double cushion_contact_distance(double contact_height, double radius) {
+  return std::sqrt(contact_height * (2.0 * radius - contact_height));
+}
+
+/// Distance between a ball's centre and the jaw's centre at contact.
+inline double jaw_contact_distance(const JawArc& jaw, double radius) {
+  return jaw.radius + cushion_contact_distance(jaw.contact_height, radius);
+}
+
+/// Unit normal of the nose line pointing onto the playing surface.
+inline Vec2 inward_normal(const CushionSegment& s) {
+  const Vec2 d = s.end - s.start;
+  return perp(d) / norm(d);
+}
+
+/// Distance from p to the closest point of the finite segment [start, end].
+double distance_to_segment(const CushionSegment& s, Vec2 p);
+
+/// True when a ball centred at p is captured by the pocket (|p - c| <= radius).
+inline bool in_pocket(const Pocket& pocket, Vec2 p) {
+  const Vec2 d = p - pocket.centre;
+  return dot(d, d) <= pocket.radius * pocket.radius;
+}
+
+/// Slack allowed when a ball is placed touching a cushion or a jaw, m.
+inline constexpr double kPlacementTolerance = 1e-12;
+
+/// True when a ball of radius `radius` can be placed with its centre at p:
+/// the centre is finite and on the playing surface rectangle
+/// [0, length] x [0, width]; the ball does not overlap any cushion segment
+/// (distance to the segment >= contact distance - kPlacementTolerance) or jaw;
+/// and its centre is not over a pocket's hole. Touching is allowed.
+/// Precondition: a validated table, 0 < radius with every contact height in
+/// (0, 2 radius) (not checked).
+bool ball_on_table(const Table& table, Vec2 p, double radius);
+/// The same for the table's own ball, table.ball.radius.
+bool ball_on_table(const Table& table, Vec2 p);
+
+/// Throws InvalidArgument naming the first bad field, e.g. "cushions[3].end":
+/// name, length and width in (0, 10] m; ball mass and radius in their
+/// parameter ranges; at least 3 cushions; every point finite and within
+/// 0.5 m of the playing surface; segments at least 1e-6 m long; contact
+/// heights in (R, 2R); jaw radii and pocket radii in (0, 0.2] m; pocket
+/// names non-empty and unique.
+void validate(const Table& table);
+
+// ------------------------------------------------------------------ parametric tables
+
+/// One kind of pocket (both jaws alike). WPA measures the mouth "between
+/// opposing cushion noses where the direction changes into the pocket (from
+/// pointed lip to pointed lip)"; here that is the distance between the two
+/// points where a nose line meets its facing line (the sharp corners before
+/// rounding). The cut angle is the angle inside the cushion between its nose
+/// and its facing (WPA "horizontal pocket cut angle"): 135 deg (corner) or
+/// 90 deg (side) makes the facings parallel to the pocket's axis, larger
+/// angles narrow the throat.
+struct PocketSpec {
+  double mouth = 0.0;          ///< m, lip to lip, (0, 0.5]
+  double cut_angle_deg = 0.0;  ///< degrees, [90, 170]
+  double jaw_radius = 0.0;     ///< m, radius of the rounded lip, (0, 0.2]
+  double shelf = 0.0;          ///< m, mouth line to the slate's cut along the axis, [0, 0.2]
+};
+
+/// A rectangular table with four corner pockets and two side pockets at
+/// mid-length (has_pockets), or a pocketless carom table.
+struct TableSpec {
+  std::string name;
+  double length = 0.0;          ///< m, (0, 10]
+  double width = 0.0;           ///< m, (0, 10]
+  double cushion_height = 0.0;  ///< h of every nose, m, (R, 2R)
+  BallParameters ball;
+  bool has_pockets = true;
+  PocketSpec corner_pockets;    ///< ignored without pockets
+  PocketSpec side_pockets;      ///< ignored without pockets
+  bool has_diamonds = true;     ///< 18 (pocketed) or 20 (carom) sights at 1/8 and 1/4 spacing
+  double diamond_offset = 0.0;  ///< m, sight centre behind the nose line, [0, 0.5]
+};
+
+/// Throws InvalidArgument naming the field, e.g. "corner_pockets.mouth",
+/// including when a pocket cannot pass a ball (the corridor between the jaws
+/// and facings is narrower than a ball) or pockets leave no cushion between
+/// them.
+void validate(const TableSpec& spec);
+
+/// The geometry of a spec (validated first). Layout, counter-clockwise from
+/// the corner (0, 0): for each pocket, its two jaws: the nose segment ends at
+/// the jaw arc's tangent point, the arc turns through 180 deg - cut angle and
+/// meets the facing segment, which runs into the pocket to the depth of the
+/// capture circle's centre. Pockets in order bottom-left (0,0), bottom-side
+/// (L/2,0), bottom-right (L,0), top-right (L,W), top-side (L/2,W), top-left
+/// (0,W); capture circle: see the header comment. Diamonds at every eighth of
+/// the length and quarter of the width (WPA: "the diamonds mark a quarter of
+/// the width and an eighth of the length"), except where a side pocket is.
+Table build_table(const TableSpec& spec);
+
+/// 9-ft pool table (WPA Equipment Specifications; BCA shelf).
+TableSpec pool_table_9ft_spec();
+/// Full-size snooker table (WPBSA Rules of Snooker, section 1).
+TableSpec snooker_table_12ft_spec();
+/// UMB match carom table, no pockets.
+TableSpec carom_table_10ft_spec();
+
+Table pool_table_9ft();
+Table snooker_table_12ft();
+Table carom_table_10ft();
+
+/// Preset names for preset_table() and the JSON "preset" key.
+inline constexpr std::array<std::string_view, 3> kTablePresetNames{"pool_9ft", "snooker_12ft", "carom_10ft"};
+/// The spec of a preset by name; throws InvalidArgument("preset", ...) otherwise.
+TableSpec preset_table_spec(std::string_view name);
+Table preset_table(std::string_view name);
+
+// ------------------------------------------------------------------ JSON
+
+/// Parses a table. The document is a JSON object in one of two forms.
+///
+/// Preset with overrides (the geometry is rebuilt from the overridden spec):
+///   { "preset": "pool_9ft" | "snooker_12ft" | "carom_10ft",
+///     "name": string, "length": m, "width": m, "cushion_height": m,
+///     "ball": { "mass": kg, "radius": m },
+///     "corner_pockets": { "mouth": m, "cut_angle_deg": deg, "jaw_radius": m, "shelf": m },
+///     "side_pockets": { ...same keys... } }
+///   Every key but "preset" is optional and partial objects override only
+///   the keys given. When the ball's radius changes and "cushion_height" is
+///   absent, the cushion height keeps its proportion to the ball.
+///
+/// Full geometry (what table_to_json() writes):
+///   { "name": string, "length": m, "width": m,
+///     "ball": { "mass": kg, "radius": m },
+///     "cushions": [ { "start": [x, y], "end": [x, y], "contact_height": m }, ... ],
+///     "jaws":     [ { "centre": [x, y], "radius": m, "contact_height": m }, ... ],
+///     "pockets":  [ { "name": string, "centre": [x, y], "radius": m }, ... ],
+///     "diamonds": [ [x, y], ... ] }
+///   "name", "jaws", "pockets" and "diamonds" are optional (default "custom"
+///   and empty); "ball" and the others are required.
+///
+/// Unknown keys are rejected. Every error is an InvalidArgument whose field()
+/// is the JSON path, with `path` naming the document itself, and whose message
+/// gives the value and the allowed range, e.g.
+///   "table.pockets[2].radius = -1 is outside (0, 0.2] m".
+/// Malformed JSON is reported with nlohmann-json's byte position. The result
+/// is validated (validate(const Table&)), with fields named by JSON path.
+Table table_from_json(std::string_view json_text, std::string_view path = "table");
+
+/// The full-geometry form; table_from_json(table_to_json(t)) == t exactly.
+std::string table_to_json(const Table& table);
+
+}  // namespace cueball

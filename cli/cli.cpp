@@ -88,10 +88,14 @@ int run(int argc, const char* const* argv, std::ostream& out, std::ostream& err)
       if (sub->parsed()) return &command;
     return nullptr;
   };
-  Command roll = add_roll_command(app);
-  commands.emplace_back(app.get_subcommand("roll"), roll);
-  Command plan = add_plan_command(app);
-  commands.emplace_back(app.get_subcommand("plan"), plan);
+  const auto add = [&](const char* name, Command command) { commands.emplace_back(app.get_subcommand(name), command); };
+  add("roll", add_roll_command(app));
+  add("plan", add_plan_command(app));
+  add("cushion", add_cushion_command(app));
+  add("cushion-sweep", add_cushion_sweep_command(app));
+  add("figures", add_figures_command(app));
+  add("simulate", add_simulate_command(app));
+  add("batch", add_batch_command(app));
 
   if (argc > 1 && argv[1][0] != '-') {
     std::string names;

@@ -44,6 +44,11 @@ std::string flag_for_field(const std::string& field);
 using Command = std::function<void(std::ostream& out, std::ostream& err)>;
 Command add_roll_command(CLI::App& app);
 Command add_plan_command(CLI::App& app);
+Command add_cushion_command(CLI::App& app);
+Command add_cushion_sweep_command(CLI::App& app);
+Command add_figures_command(CLI::App& app);
+Command add_simulate_command(CLI::App& app);
+Command add_batch_command(CLI::App& app);
 
 /// Prints the report, then its warnings on stderr.
 void emit(const Report& report, bool json, std::ostream& out, std::ostream& err);

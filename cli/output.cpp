@@ -14,16 +14,6 @@ std::string format_number(double v) {
   return buf;
 }
 
-const char* phase_name(MotionPhase ph) {
-  switch (ph) {
-    case MotionPhase::sliding: return "sliding";
-    case MotionPhase::rolling: return "rolling";
-    case MotionPhase::spinning: return "spinning";
-    case MotionPhase::stationary: return "stationary";
-  }
-  return "unknown";
-}
-
 }  // namespace
 
 void Report::add(const std::string& key, double value, const std::string& unit, const std::string& meaning) {
@@ -96,7 +86,7 @@ void Report::print(std::ostream& out, bool json) const {
 }
 
 void add_state(Report& r, const BallState& s, const Parameters& p) {
-  r.add_text("phase", phase_name(motion_phase(s, p)), "motion phase");
+  r.add_text("phase", to_string(motion_phase(s, p)), "motion phase");
   r.add("position", {s.position.x, s.position.y}, "m", "centre of the ball on the bed");
   r.add("velocity", {s.velocity.x, s.velocity.y}, "m/s");
   r.add("angular_velocity", {s.angular_velocity.x, s.angular_velocity.y, s.angular_velocity.z}, "rad/s");

@@ -86,6 +86,16 @@ BallState roll(const BallState& s, double dt, const Parameters& p) {
 
 }  // namespace
 
+const char* to_string(MotionPhase phase) {
+  switch (phase) {
+    case MotionPhase::sliding: return "sliding";
+    case MotionPhase::rolling: return "rolling";
+    case MotionPhase::spinning: return "spinning";
+    case MotionPhase::stationary: return "stationary";
+  }
+  return "unknown";
+}
+
 MotionPhase motion_phase(const BallState& s, const Parameters& p) {
   const Vec2 u = slip_velocity(s, p.ball.radius);
   if (dot(u, u) > kSlipTolerance * kSlipTolerance) return MotionPhase::sliding;

@@ -32,6 +32,9 @@ struct BallState {
 
 enum class MotionPhase { sliding, rolling, spinning, stationary };
 
+/// "sliding", "rolling", "spinning" or "stationary".
+const char* to_string(MotionPhase phase);
+
 /// What changes at the end of the current piece of closed-form motion.
 enum class Transition {
   none,            ///< nothing will change: the ball is stationary

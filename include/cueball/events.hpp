@@ -1,0 +1,56 @@
+// When will the next event happen? Collision-time prediction from the
+// closed-form trajectories of cloth_motion.hpp.
+//
+// Between two transitions a ball moves with constant acceleration (paper 001
+// eqs 6-7 and 13-14), so its centre is a quadratic in time:
+//     r(t) = r0 + v0 t + a t^2 / 2,
+// with a = -mu_s g u^ while sliding, -(5/7) mu_r g v^ while rolling, 0 at rest.
+// A contact condition that is a distance between two such curves, or between
+// one and a fixed line or point, is then a polynomial in t:
+//   ball - straight cushion   n . r(t) - c = d           quadratic
+//   ball - ball               |r_b(t) - r_a(t)|^2 = (2R)^2   quartic
+//   ball - circle (jaw, pocket) |r(t) - c|^2 = d^2        quartic
+// solved by polynomial_roots.hpp, which dispatches on the true degree (equal
+// accelerations make the leading coefficients exactly zero).
+//
+// Which root (equipment-and-pitfalls.md, items 2-4): the earliest root in
+// [0, horizon] at which the pair is approaching (the contact function is
+// decreasing). A pair already touching or overlapping by round-off that is
+// approaching collides now (t = 0); one that is touching and separating does
+// not collide again. A tangent (grazing) root, where the pair neither
+// approaches nor separates, is no collision: no impulse would be exchanged.
+//
+// `horizon` is how long the current pieces of trajectory stay valid (the
+// earliest next transition of the balls involved); roots beyond it are not
+// reported, because the trajectories change there.
+#pragma once
+
+#include <optional>
+
+#include "cueball/cloth_motion.hpp"
+#include "cueball/parameters.hpp"
+
+namespace cueball {
+
+/// Constant acceleration of the ball's centre in its current motion phase.
+Vec2 phase_acceleration(const BallState& s, const Parameters& p);
+
+/// Earliest time in [0, horizon] at which balls a and b (same radius) touch
+/// while approaching.
+std::optional<double> predict_ball_ball_contact(const BallState& a, const BallState& b, const Parameters& p,
+                                                double horizon);
+
+/// A straight cushion nose from `start` to `end`, with the playing surface on
+/// the left (inward normal perp(end - start)). The ball touches it when its
+/// centre is `contact_distance` from the nose line, with the foot of the
+/// perpendicular between start and end.
+std::optional<double> predict_ball_line_contact(const BallState& s, const Parameters& p, Vec2 start, Vec2 end,
+                                                double contact_distance, double horizon);
+
+/// Earliest time in [0, horizon] at which the ball's centre comes within
+/// `distance` of `centre` while approaching it (a jaw arc's contact circle, a
+/// pocket's capture circle).
+std::optional<double> predict_ball_circle_contact(const BallState& s, const Parameters& p, Vec2 centre,
+                                                  double distance, double horizon);
+
+}  // namespace cueball

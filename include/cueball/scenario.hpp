@@ -1,0 +1,77 @@
+// A shot as a user describes it: table, balls, cue strike, parameters. Read
+// from and written to JSON; run through the simulator.
+//
+// Scenario JSON (every key optional; unknown keys are rejected; every error
+// names the JSON path, the value and the allowed range):
+//   {
+//     "table": "pool_9ft" | "snooker_12ft" | "carom_10ft" | { table JSON, see table.hpp },
+//     "parameters": { "preset": "pool" | "snooker", "mass": kg, "radius": m,
+//                     "mu_s": .., "mu_r": .., "mu_sp": .., "g": m/s^2 },
+//         (default: the cloth preset that goes with the table, and the table's ball)
+//     "cushion": { "restitution": e_e, "friction": mu_w },      (Mathavan model; default 0.98, 0.14)
+//     "ball_collision": { "restitution": e, "friction": mu, "friction_excess": .., "friction_decay": s/m },
+//     "rack": { "type": "nine_ball" | "eight_ball" | "snooker", "gap_sigma": m, "seed": n },
+//     "balls": [ { "id": n, "name": "..", "position": [x, y],
+//                  "velocity": [vx, vy], "angular_velocity": [wx, wy, wz] } ],
+//         ("rack" and "balls" together: the rack, then each listed ball replaces
+//          the rack's ball with the same id or is added)
+//     "cue": { "ball": id (0), "speed": m/s (cue speed), "aim_deg": deg | "target": id,
+//              "elevation_deg": deg, "side": a/R, "height": b/R,
+//              "mass": kg, "tip_restitution": e },
+//     "noise": { "speed": m/s, "aim_deg": deg, "elevation_deg": deg, "side": a/R, "height": b/R },
+//     "max_events": n
+//   }
+// Tip offsets "side" (to the right, seen from behind the cue) and "height"
+// (above the centre) are in ball radii; the miscue limit is 0.5. Without
+// "cue" the balls start with the velocities given.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "cueball/cue_strike.hpp"
+#include "cueball/simulator.hpp"
+#include "cueball/table.hpp"
+
+namespace cueball {
+
+struct ShotStrike {
+  int ball = 0;              ///< id of the struck ball
+  std::optional<int> target; ///< aim at this ball's centre (instead of strike.aim)
+  CueStrike strike;          ///< offsets in metres here
+};
+
+struct Scenario {
+  Table table;
+  SimulationSettings settings;        ///< parameters, cushion and ball-collision constants, event limit
+  std::vector<SimulationBall> balls;  ///< as placed, before the strike
+  std::optional<ShotStrike> cue;
+  CueParameters cue_parameters;
+  CueStrikeNoise noise;               ///< standard deviations for batch runs (metres, radians)
+};
+
+/// Parses and validates a scenario; throws InvalidArgument with the JSON path.
+Scenario scenario_from_json(std::string_view json_text);
+
+/// The built-in default: a 9-ball break on a 9-ft pool table, cue ball on
+/// the head string, struck at 7 m/s at the centre of the 1 ball.
+Scenario default_scenario();
+
+/// The strike's aim resolved (target ball) and checked.
+CueStrike resolved_strike(const Scenario& s, const CueStrike& strike);
+
+/// The balls at t = 0 after the cue strike `strike` (the scenario's own when
+/// not given). Throws InvalidArgument on a miscue or a bad strike.
+std::vector<SimulationBall> balls_after_strike(const Scenario& s, const std::optional<CueStrike>& strike = {});
+
+/// Runs the scenario's shot. The result's first event is the cue strike.
+SimulationResult run_scenario(const Scenario& s);
+
+/// The documented result JSON: table, parameters, events, balls (final
+/// states, pocketing, trajectory segments) and, when sample_rate > 0, the
+/// states sampled at that rate (Hz).
+std::string result_to_json(const Scenario& s, const SimulationResult& r, double sample_rate = 0.0);
+
+}  // namespace cueball

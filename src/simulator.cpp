@@ -1,0 +1,380 @@
+// The event-driven table simulator; see simulator.hpp for the method, the
+// ordering of events and the policy for touching balls.
+#include "cueball/simulator.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+#include <string>
+
+#include "cueball/errors.hpp"
+#include "cueball/events.hpp"
+
+namespace cueball {
+
+namespace {
+
+constexpr double kInfinity = std::numeric_limits<double>::infinity();
+/// Balls overlapping by more than this at the start are rejected, m.
+constexpr double kOverlapTolerance = 1e-9;
+
+std::string num(double v) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.9g", v);
+  return buf;
+}
+
+// A predicted event: ball index a, and b = the other ball's index (pairs) or
+// the cushion / jaw / pocket index.
+struct Candidate {
+  double time = kInfinity;
+  EventType type = EventType::cue_strike;
+  int a = -1;
+  int b = -1;
+};
+
+// Deterministic total order: time, then kind, then indices.
+bool earlier(const Candidate& x, const Candidate& y) {
+  if (x.time != y.time) return x.time < y.time;
+  if (x.type != y.type) return x.type < y.type;
+  if (x.a != y.a) return x.a < y.a;
+  return x.b < y.b;
+}
+
+// The impact frame of a cushion (paper 000, Figs 2-4): Y horizontal into the
+// cushion = -n (n the inward normal of the playing surface), Z up, X = Y x Z.
+struct ImpactFrame {
+  Vec2 x, y;
+  explicit ImpactFrame(Vec2 inward_normal) : x{-inward_normal.y, inward_normal.x}, y{-inward_normal} {}
+  Vec3 to_frame(Vec2 v, double z) const { return {dot(v, x), dot(v, y), z}; }
+  Vec2 from_frame(Vec3 v) const { return v.x * x + v.y * y; }
+};
+
+class Simulation {
+ public:
+  Simulation(const Table& table, const std::vector<SimulationBall>& balls, const SimulationSettings& settings)
+      : table_(table), settings_(settings), p_(settings.parameters), n_(static_cast<int>(balls.size())) {
+    for (const CushionSegment& c : table.cushions) {
+      cushion_models_.push_back(model_for(c.contact_height));
+      cushion_distance_.push_back(cushion_contact_distance(c.contact_height, p_.ball.radius));
+    }
+    for (const JawArc& j : table.jaws) {
+      jaw_models_.push_back(model_for(j.contact_height));
+      jaw_distance_.push_back(j.radius + cushion_contact_distance(j.contact_height, p_.ball.radius));
+    }
+    result_.balls.resize(balls.size());
+    const auto n = balls.size();
+    state_.resize(n);
+    time_.assign(n, 0.0);
+    phase_.resize(n);
+    transition_.resize(n);
+    active_.assign(n, 1);
+    ball_next_.resize(n);
+    pair_next_.resize(n * n);
+    for (std::size_t i = 0; i < n; ++i) {
+      result_.balls[i].id = balls[i].id;
+      result_.balls[i].name = balls[i].name;
+      state_[i] = balls[i].state;
+    }
+    for (int i = 0; i < n_; ++i) begin_segment(i);
+    for (int i = 0; i < n_; ++i) predict_ball(i);
+    for (int i = 0; i < n_; ++i)
+      for (int j = i + 1; j < n_; ++j) predict_pair(i, j);
+  }
+
+  SimulationResult run() {
+    for (;;) {
+      const Candidate next = earliest();
+      if (!std::isfinite(next.time)) break;
+      if (static_cast<int>(result_.events.size()) >= settings_.max_events) {
+        throw SimulationError("event limit of " + std::to_string(settings_.max_events) + " reached at t = " +
+                              num(now_) + " s (raise max_events, or report the shot: it may not end)");
+      }
+      now_ = next.time;
+      resolve(next);
+    }
+    result_.end_time = now_;
+    for (int i = 0; i < n_; ++i) {
+      BallTrajectory& b = result_.balls[static_cast<std::size_t>(i)];
+      if (!b.pocketed) b.final_state = state_at_now(i);
+    }
+    return std::move(result_);
+  }
+
+ private:
+  CushionImpactModel model_for(double contact_height) const {
+    return cushion_impact_model(p_, {settings_.cushion_restitution, settings_.cushion_friction, contact_height});
+  }
+
+  std::size_t idx(int i) const { return static_cast<std::size_t>(i); }
+
+  // The ball's state at now_ (no transition lies between its last update and now_).
+  BallState state_at_now(int i) const {
+    return evolve_in_phase(state_[idx(i)], phase_[idx(i)], now_ - time_[idx(i)], p_);
+  }
+
+  void begin_segment(int i) {
+    const std::size_t k = idx(i);
+    time_[k] = now_;
+    phase_[k] = motion_phase(state_[k], p_);
+    transition_[k] = next_transition(state_[k], p_);
+    result_.balls[k].segments.push_back({now_, state_[k]});
+  }
+
+  // Earliest own event of ball i: its next transition, a cushion, a jaw or a pocket.
+  void predict_ball(int i) {
+    const std::size_t k = idx(i);
+    Candidate best;
+    if (!active_[k]) {
+      ball_next_[k] = best;
+      return;
+    }
+    const NextTransition& tr = transition_[k];
+    const double horizon = tr.time;
+    switch (tr.kind) {
+      case Transition::sliding_ends: best = {now_ + tr.time, EventType::slide_to_roll, i, -1}; break;
+      case Transition::rolling_ends: best = {now_ + tr.time, EventType::roll_to_rest, i, -1}; break;
+      case Transition::vertical_spin_ends: best = {now_ + tr.time, EventType::spin_stop, i, -1}; break;
+      case Transition::none: break;
+    }
+    const BallState& s = state_[k];
+    if (phase_[k] == MotionPhase::sliding || phase_[k] == MotionPhase::rolling) {
+      const auto consider = [&](std::optional<double> t, EventType type, std::size_t index) {
+        if (!t) return;
+        const Candidate c{now_ + *t, type, i, static_cast<int>(index)};
+        if (earlier(c, best)) best = c;
+      };
+      for (std::size_t c = 0; c < table_.cushions.size(); ++c) {
+        const CushionSegment& seg = table_.cushions[c];
+        consider(predict_ball_line_contact(s, p_, seg.start, seg.end, cushion_distance_[c], horizon),
+                 EventType::ball_cushion, c);
+      }
+      for (std::size_t j = 0; j < table_.jaws.size(); ++j) {
+        consider(predict_ball_circle_contact(s, p_, table_.jaws[j].centre, jaw_distance_[j], horizon),
+                 EventType::ball_jaw, j);
+      }
+      for (std::size_t q = 0; q < table_.pockets.size(); ++q) {
+        consider(predict_ball_circle_contact(s, p_, table_.pockets[q].centre, table_.pockets[q].radius, horizon),
+                 EventType::ball_pocket, q);
+      }
+    }
+    ball_next_[k] = best;
+  }
+
+  void predict_pair(int i, int j) {
+    Candidate& slot = pair_next_[idx(i) * idx(n_) + idx(j)];
+    slot = {};
+    if (!active_[idx(i)] || !active_[idx(j)]) return;
+    const bool i_moves = phase_[idx(i)] == MotionPhase::sliding || phase_[idx(i)] == MotionPhase::rolling;
+    const bool j_moves = phase_[idx(j)] == MotionPhase::sliding || phase_[idx(j)] == MotionPhase::rolling;
+    if (!i_moves && !j_moves) return;
+    const double horizon =
+        std::min(time_[idx(i)] + transition_[idx(i)].time, time_[idx(j)] + transition_[idx(j)].time) - now_;
+    const auto t = predict_ball_ball_contact(state_at_now(i), state_at_now(j), p_, horizon);
+    if (t) slot = {now_ + *t, EventType::ball_ball, i, j};
+  }
+
+  Candidate earliest() const {
+    Candidate best;
+    for (const Candidate& c : ball_next_)
+      if (earlier(c, best)) best = c;
+    for (int i = 0; i < n_; ++i)
+      for (int j = i + 1; j < n_; ++j) {
+        const Candidate& c = pair_next_[idx(i) * idx(n_) + idx(j)];
+        if (earlier(c, best)) best = c;
+      }
+    return best;
+  }
+
+  // New states for the balls in `changed` at now_: new segments, new predictions.
+  void commit(std::initializer_list<int> changed) {
+    for (int i : changed) {
+      begin_segment(i);
+      check_on_table(i);
+    }
+    for (int i : changed) predict_ball(i);
+    for (int i : changed)
+      for (int j = 0; j < n_; ++j) {
+        if (j != i) predict_pair(std::min(i, j), std::max(i, j));
+      }
+  }
+
+  void record(EventType type, int i, int other) {
+    result_.events.push_back({now_, type, result_.balls[idx(i)].id, other});
+  }
+
+  void resolve(const Candidate& c) {
+    const int i = c.a;
+    const std::size_t k = idx(i);
+    switch (c.type) {
+      case EventType::slide_to_roll:
+      case EventType::roll_to_rest:
+      case EventType::roll_to_spin:
+      case EventType::spin_stop: {
+        // Exactly the transition's own duration, so the state snaps onto the new phase.
+        state_[k] = evolve_in_phase(state_[k], phase_[k], transition_[k].time, p_);
+        EventType type = c.type;
+        if (type == EventType::roll_to_rest && motion_phase(state_[k], p_) == MotionPhase::spinning)
+          type = EventType::roll_to_spin;
+        record(type, i, -1);
+        commit({i});
+        break;
+      }
+      case EventType::ball_ball: {
+        const int j = c.b;
+        const auto [a, b] = collide_balls(state_at_now(i), state_at_now(j), p_.ball, settings_.ball_collision);
+        state_[k] = a;
+        state_[idx(j)] = b;
+        result_.events.push_back({now_, EventType::ball_ball, result_.balls[k].id, result_.balls[idx(j)].id});
+        commit({i, j});
+        break;
+      }
+      case EventType::ball_cushion: {
+        const CushionSegment& seg = table_.cushions[idx(c.b)];
+        const Vec2 e = (seg.end - seg.start) / norm(seg.end - seg.start);
+        state_[k] = wall_impact(state_at_now(i), perp(e), cushion_models_[idx(c.b)]);
+        record(EventType::ball_cushion, i, c.b);
+        commit({i});
+        break;
+      }
+      case EventType::ball_jaw: {
+        const BallState s = state_at_now(i);
+        const Vec2 d = s.position - table_.jaws[idx(c.b)].centre;
+        state_[k] = wall_impact(s, d / norm(d), jaw_models_[idx(c.b)]);
+        record(EventType::ball_jaw, i, c.b);
+        commit({i});
+        break;
+      }
+      case EventType::ball_pocket: {
+        BallTrajectory& b = result_.balls[k];
+        b.pocketed = true;
+        b.pocket = c.b;
+        b.pocket_time = now_;
+        b.final_state = {state_at_now(i).position, {}, {}};
+        active_[k] = 0;
+        record(EventType::ball_pocket, i, c.b);
+        predict_ball(i);
+        for (int j = 0; j < n_; ++j)
+          if (j != i) predict_pair(std::min(i, j), std::max(i, j));
+        break;
+      }
+      case EventType::cue_strike:
+        break;
+    }
+  }
+
+  // A ball meeting a cushion or jaw whose inward normal at the contact is n:
+  // solved in the impact frame by the Mathavan model (exact solver).
+  BallState wall_impact(const BallState& s, Vec2 n, const CushionImpactModel& model) const {
+    const ImpactFrame frame(n);
+    IncomingBall in;
+    in.velocity = frame.to_frame(s.velocity, 0.0);
+    in.angular_velocity = frame.to_frame(horizontal(s.angular_velocity), s.angular_velocity.z);
+    if (!(in.velocity.y > 0.0)) return s;  // grazing by round-off: nothing to exchange
+    const CushionImpactResult r = solve_cushion_impact(in, model);
+    BallState out = s;
+    out.velocity = frame.from_frame(r.velocity);
+    const Vec2 w = frame.from_frame(r.angular_velocity);
+    out.angular_velocity = {w.x, w.y, r.angular_velocity.z};
+    return out;
+  }
+
+  void check_on_table(int i) const {
+    const Vec2 r = state_[idx(i)].position;
+    const double margin = 0.25;
+    if (!(r.x > -margin && r.x < table_.length + margin && r.y > -margin && r.y < table_.width + margin)) {
+      throw SimulationError("ball " + std::to_string(result_.balls[idx(i)].id) + " left the table at t = " + num(now_) +
+                            " s, position (" + num(r.x) + ", " + num(r.y) + ") m: please report this shot");
+    }
+  }
+
+  const Table& table_;
+  const SimulationSettings& settings_;
+  const Parameters& p_;
+  int n_;
+  double now_ = 0.0;
+  std::vector<CushionImpactModel> cushion_models_, jaw_models_;
+  std::vector<double> cushion_distance_, jaw_distance_;
+  std::vector<BallState> state_;  // state at time_
+  std::vector<double> time_;
+  std::vector<MotionPhase> phase_;
+  std::vector<NextTransition> transition_;  // relative to time_
+  std::vector<char> active_;
+  std::vector<Candidate> ball_next_;
+  std::vector<Candidate> pair_next_;  // [i * n + j], i < j
+  SimulationResult result_;
+};
+
+std::string ball_field(std::size_t i, const char* what) { return "balls[" + std::to_string(i) + "]." + what; }
+
+}  // namespace
+
+const char* to_string(EventType t) {
+  switch (t) {
+    case EventType::cue_strike: return "cue_strike";
+    case EventType::slide_to_roll: return "slide_to_roll";
+    case EventType::roll_to_spin: return "roll_to_spin";
+    case EventType::roll_to_rest: return "roll_to_rest";
+    case EventType::spin_stop: return "spin_stop";
+    case EventType::ball_ball: return "ball_ball";
+    case EventType::ball_cushion: return "ball_cushion";
+    case EventType::ball_jaw: return "ball_jaw";
+    case EventType::ball_pocket: return "ball_pocket";
+  }
+  return "unknown";
+}
+
+BallState SimulationResult::state_at(std::size_t index, double t, const Parameters& p) const {
+  const BallTrajectory& b = balls.at(index);
+  if (b.pocketed && t >= b.pocket_time) return b.final_state;
+  const auto after = std::upper_bound(b.segments.begin(), b.segments.end(), t,
+                                      [](double time, const TrajectorySegment& s) { return time < s.start_time; });
+  const TrajectorySegment& seg = after == b.segments.begin() ? b.segments.front() : *(after - 1);
+  return evolve(seg.state, std::max(0.0, t - seg.start_time), p);
+}
+
+void validate_simulation_input(const Table& table, const std::vector<SimulationBall>& balls,
+                               const SimulationSettings& settings) {
+  validate(settings.parameters);
+  validate(table);
+  validate(settings.ball_collision);
+  require_in_range("cushion_restitution", settings.cushion_restitution, 1e-9, 1.0, "Mathavan e_e");
+  require_in_range("cushion_friction", settings.cushion_friction, 0.0, 1.0, "Mathavan mu_w");
+  if (settings.max_events < 1)
+    throw InvalidArgument("max_events", static_cast<double>(settings.max_events), "[1, 2^31)");
+  for (const CushionSegment& c : table.cushions)
+    (void)cushion_impact_model(settings.parameters,
+                               {settings.cushion_restitution, settings.cushion_friction, c.contact_height});
+  const double radius = settings.parameters.ball.radius;
+  for (std::size_t i = 0; i < balls.size(); ++i) {
+    try {
+      validate(balls[i].state);
+    } catch (const InvalidArgument& e) {
+      throw InvalidArgument(ball_field(i, e.field().c_str()), ball_field(i, "") + e.what());
+    }
+    for (std::size_t j = 0; j < i; ++j) {
+      if (balls[j].id == balls[i].id)
+        throw InvalidArgument(ball_field(i, "id"), ball_field(i, "id") + " = " + std::to_string(balls[i].id) +
+                                                       " is used twice (also by balls[" + std::to_string(j) + "])");
+      const double d = norm(balls[i].state.position - balls[j].state.position);
+      if (d < 2 * radius - kOverlapTolerance)
+        throw InvalidArgument(ball_field(i, "position"),
+                              "balls " + std::to_string(balls[j].id) + " and " + std::to_string(balls[i].id) +
+                                  " overlap by " + num(2 * radius - d) + " m (centres " + num(d) +
+                                  " m apart, allowed >= 2R = " + num(2 * radius) + " m)");
+    }
+    if (!ball_on_table(table, balls[i].state.position, radius))
+      throw InvalidArgument(ball_field(i, "position"),
+                            ball_field(i, "position") + " = (" + num(balls[i].state.position.x) + ", " +
+                                num(balls[i].state.position.y) + ") m is off the playing surface or inside a cushion");
+  }
+}
+
+SimulationResult simulate(const Table& table, const std::vector<SimulationBall>& balls,
+                          const SimulationSettings& settings) {
+  validate_simulation_input(table, balls, settings);
+  return Simulation(table, balls, settings).run();
+}
+
+}  // namespace cueball

@@ -100,7 +100,7 @@ BatchResult simulate_batch(const Scenario& s, const BatchOptions& options) {
   r.shots_per_second = seconds > 0.0 ? options.shots / seconds : 0.0;
   const std::size_t n = s.balls.size();
   std::vector<double> pocketed(n, 0.0), count(n, 0.0);
-  std::vector<Vec2> sum(n), sum_sq(n);
+  std::vector<Vec2> sum(n);
   for (const ShotOutcome& o : outcomes) {
     if (o.outcome == Outcome::miscue) ++r.miscues;
     if (o.outcome == Outcome::failure) ++r.failures;
@@ -112,10 +112,8 @@ BatchResult simulate_batch(const Scenario& s, const BatchOptions& options) {
         pocketed[i] += 1.0;
         continue;
       }
-      const Vec2 p = o.final_position[i];
       count[i] += 1.0;
-      sum[i] = sum[i] + p;
-      sum_sq[i] = sum_sq[i] + Vec2{p.x * p.x, p.y * p.y};
+      sum[i] = sum[i] + o.final_position[i];
     }
   }
   for (std::size_t i = 0; i < n; ++i) {
@@ -124,9 +122,14 @@ BatchResult simulate_batch(const Scenario& s, const BatchOptions& options) {
     b.pocketed_probability = r.simulated > 0 ? pocketed[i] / r.simulated : 0.0;
     if (count[i] > 0.0) {
       b.mean_position = sum[i] / count[i];
-      const Vec2 m2 = sum_sq[i] / count[i];
-      b.position_std = {std::sqrt(std::max(0.0, m2.x - b.mean_position.x * b.mean_position.x)),
-                        std::sqrt(std::max(0.0, m2.y - b.mean_position.y * b.mean_position.y))};
+      // Second pass for the spread: no cancellation between large squares.
+      Vec2 squares;
+      for (const ShotOutcome& o : outcomes) {
+        if (o.outcome != Outcome::simulated || o.pocketed[i]) continue;
+        const Vec2 d = o.final_position[i] - b.mean_position;
+        squares = squares + Vec2{d.x * d.x, d.y * d.y};
+      }
+      b.position_std = {std::sqrt(squares.x / count[i]), std::sqrt(squares.y / count[i])};
     }
     r.balls.push_back(b);
   }

@@ -11,11 +11,17 @@ namespace cueball {
 namespace {
 
 // The earliest root of f in [0, horizon] at which f is decreasing (entering
-// contact), f given by ascending coefficients and f' by `slope`. A contact
-// function already <= 0 and decreasing at t = 0 means contact now.
+// contact), f given by ascending coefficients and f' by `slope`, which is
+// scaled so that it is a normal approach speed in m/s when negative. A
+// contact function already <= 0 and decreasing at t = 0 means contact now.
+// Approach speeds below kMinApproachSpeed count as none: they are round-off
+// (e.g. of a contact just resolved), and even sustained for a whole shot they
+// would move a ball by less than 1e-10 m.
+constexpr double kMinApproachSpeed = 1e-12;  // m/s
+
 template <std::size_t N, typename Slope>
 std::optional<double> earliest_entering_root(const std::array<double, N>& c, double horizon, Slope slope) {
-  if (c[0] <= 0.0 && c[1] < 0.0) return 0.0;
+  if (c[0] <= 0.0 && slope(0.0) < -kMinApproachSpeed) return 0.0;
   RealRoots<N - 1> roots;
   if constexpr (N == 3) {
     roots = solve_quadratic(c);
@@ -25,7 +31,7 @@ std::optional<double> earliest_entering_root(const std::array<double, N>& c, dou
   for (double t : roots) {
     if (t < 0.0) continue;
     if (t > horizon) break;
-    if (slope(t) < 0.0) return t;
+    if (slope(t) < -kMinApproachSpeed) return t;
   }
   return std::nullopt;
 }
@@ -64,7 +70,7 @@ std::optional<double> predict_ball_ball_contact(const BallState& a, const BallSt
                                 dot(dv, da), 0.25 * dot(da, da)};
   return earliest_entering_root(c, horizon, [&](double t) {
     const Vec2 d = dr + t * dv + (0.5 * t * t) * da;
-    return dot(d, dv + t * da);  // half the derivative of |d|^2
+    return dot(d, dv + t * da) / contact;  // normal relative velocity at contact, m/s
   });
 }
 
@@ -98,7 +104,7 @@ std::optional<double> predict_ball_circle_contact(const BallState& s, const Para
                                 dot(s.velocity, s.velocity) + dot(dr, a), dot(s.velocity, a), 0.25 * dot(a, a)};
   return earliest_entering_root(c, horizon, [&](double t) {
     const Vec2 d = dr + t * s.velocity + (0.5 * t * t) * a;
-    return dot(d, s.velocity + t * a);
+    return dot(d, s.velocity + t * a) / distance;  // radial velocity at contact, m/s
   });
 }
 

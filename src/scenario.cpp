@@ -12,6 +12,7 @@
 
 #include "cueball/errors.hpp"
 #include "cueball/rack.hpp"
+#include "json_input.hpp"
 
 namespace cueball {
 
@@ -186,18 +187,21 @@ Json state_json(const BallState& s) {
 }  // namespace
 
 Scenario scenario_from_json(std::string_view json_text) {
-  Json j;
-  try {
-    j = Json::parse(json_text);
-  } catch (const Json::parse_error& e) {
-    throw InvalidArgument("scenario", std::string("scenario is not valid JSON: ") + e.what());
-  }
+  const Json j = detail::parse_json(json_text, "scenario");
   const Reader r(j, "scenario");
   r.allow_only({"table", "parameters", "cushion", "ball_collision", "rack", "balls", "cue", "noise", "max_events"});
   Scenario s;
   if (r.has("table")) {
     const Json& t = r.at("table");
-    s.table = t.is_string() ? preset_table(t.get<std::string>()) : table_from_json(t.dump(), "scenario.table");
+    if (t.is_string()) {
+      try {
+        s.table = preset_table(t.get<std::string>());
+      } catch (const InvalidArgument& e) {
+        throw InvalidArgument("scenario.table", std::string("scenario.table: ") + e.what());
+      }
+    } else {
+      s.table = table_from_json(t.dump(), "scenario.table");
+    }
   } else {
     s.table = pool_table_9ft();
   }

@@ -7,6 +7,7 @@
 #include <cstdio>
 #include <limits>
 #include <string>
+#include <tuple>
 
 #include "cueball/errors.hpp"
 #include "cueball/events.hpp"
@@ -19,10 +20,34 @@ constexpr double kInfinity = std::numeric_limits<double>::infinity();
 /// Balls overlapping by more than this at the start are rejected, m.
 constexpr double kOverlapTolerance = 1e-9;
 
+// Pushes. A ball that meets another ball or a cushion at a normal approach
+// speed below kPushSpeed (a slow roll tapping a resting ball, a ball whose
+// spin drives it on into the one it just hit) would, with instantaneous
+// impulses, bounce ever smaller and ever sooner without end (inelastic
+// collapse, a Zeno sequence) or, pressed by its acceleration, slowly overlap;
+// real balls stay in contact and move on together. Such a contact is resolved
+// as a plastic push, which only removes energy:
+//   1. each ball's slip on the cloth is ended by the friction impulse that
+//      sliding would apply anyway, -(2/7) m u (paper 001 eq. 9 reached at once);
+//   2. two balls then move on together, rolling at their mean velocity (their
+//      momentum kept; 7/10 m v^2 is convex, so energy does not rise); a ball at
+//      a cushion loses its velocity into the cushion and rolls along it.
+// Afterwards nothing approaches and nothing presses, so the cascade ends. At
+// these speeds a bounce would move the balls by well under a millimetre.
+constexpr double kPushSpeed = 0.01;  // m/s
+
 std::string num(double v) {
   char buf[32];
   std::snprintf(buf, sizeof buf, "%.9g", v);
   return buf;
+}
+
+// Step 1: the ball rolls, v1 = v - (2/7) u (w_z unchanged).
+void end_slip(BallState& s, double radius) {
+  s.velocity = s.velocity - (2.0 / 7.0) * slip_velocity(s, radius);
+  const Vec2 w = perp(s.velocity) / radius;
+  s.angular_velocity.x = w.x;
+  s.angular_velocity.y = w.y;
 }
 
 // A predicted event: ball index a, and b = the other ball's index (pairs) or
@@ -88,8 +113,14 @@ class Simulation {
       const Candidate next = earliest();
       if (!std::isfinite(next.time)) break;
       if (static_cast<int>(result_.events.size()) >= settings_.max_events) {
+        std::string last;
+        for (std::size_t k = result_.events.size() - std::min<std::size_t>(result_.events.size(), 6); k < result_.events.size(); ++k) {
+          const Event& e = result_.events[k];
+          last += std::string(last.empty() ? "" : ", ") + to_string(e.type) + " " + std::to_string(e.ball) +
+                  (e.other >= 0 ? "/" + std::to_string(e.other) : "") + " at " + num(e.time);
+        }
         throw SimulationError("event limit of " + std::to_string(settings_.max_events) + " reached at t = " +
-                              num(now_) + " s (raise max_events, or report the shot: it may not end)");
+                              num(now_) + " s (raise max_events, or report the shot: it may not end); last events: " + last);
       }
       now_ = next.time;
       resolve(next);
@@ -223,7 +254,8 @@ class Simulation {
       }
       case EventType::ball_ball: {
         const int j = c.b;
-        const auto [a, b] = collide_balls(state_at_now(i), state_at_now(j), p_.ball, settings_.ball_collision);
+        BallState a = state_at_now(i), b = state_at_now(j);
+        if (!push_balls(a, b)) std::tie(a, b) = collide_balls(a, b, p_.ball, settings_.ball_collision);
         state_[k] = a;
         state_[idx(j)] = b;
         result_.events.push_back({now_, EventType::ball_ball, result_.balls[k].id, result_.balls[idx(j)].id});
@@ -264,15 +296,59 @@ class Simulation {
     }
   }
 
+  // The plastic push of two touching balls (see kPushSpeed); false (nothing
+  // changed) unless they approach slowly.
+  bool push_balls(BallState& a, BallState& b) const {
+    const Vec2 n = (b.position - a.position) / norm(b.position - a.position);
+    if (!(-dot(b.velocity - a.velocity, n) < kPushSpeed)) return false;
+    end_slip(a, p_.ball.radius);
+    end_slip(b, p_.ball.radius);
+    const Vec2 mean = 0.5 * (a.velocity + b.velocity);
+    const Vec2 w = perp(mean) / p_.ball.radius;
+    a.velocity = b.velocity = mean;
+    a.angular_velocity.x = b.angular_velocity.x = w.x;
+    a.angular_velocity.y = b.angular_velocity.y = w.y;
+    return true;
+  }
+
+  // The same for a ball pressed into a cushion or jaw with inward normal n.
+  bool push_wall(BallState& s, Vec2 n) const {
+    if (!(-dot(s.velocity, n) < kPushSpeed)) return false;
+    plastic_wall_contact(s, n);
+    return true;
+  }
+
+  // Ends the slip, then removes the velocity into the wall: the ball rolls on
+  // along it (energy only goes down).
+  void plastic_wall_contact(BallState& s, Vec2 n) const {
+    end_slip(s, p_.ball.radius);
+    const double into = dot(s.velocity, n);
+    if (into < 0.0) s.velocity = s.velocity - into * n;
+    const Vec2 w = perp(s.velocity) / p_.ball.radius;
+    s.angular_velocity.x = w.x;
+    s.angular_velocity.y = w.y;
+  }
+
   // A ball meeting a cushion or jaw whose inward normal at the contact is n:
   // solved in the impact frame by the Mathavan model (exact solver).
   BallState wall_impact(const BallState& s, Vec2 n, const CushionImpactModel& model) const {
+    BallState pushed = s;
+    if (push_wall(pushed, n)) return pushed;
     const ImpactFrame frame(n);
     IncomingBall in;
     in.velocity = frame.to_frame(s.velocity, 0.0);
     in.angular_velocity = frame.to_frame(horizontal(s.angular_velocity), s.angular_velocity.z);
     if (!(in.velocity.y > 0.0)) return s;  // grazing by round-off: nothing to exchange
-    const CushionImpactResult r = solve_cushion_impact(in, model);
+    CushionImpactResult r;
+    try {
+      r = solve_cushion_impact(in, model);
+    } catch (const InfeasibleShot&) {
+      // The model has no rebound: the ball wedges between cushion and bed
+      // (normal velocity never reverses). Treated as a plastic contact.
+      BallState wedged = s;
+      plastic_wall_contact(wedged, n);
+      return wedged;
+    }
     BallState out = s;
     out.velocity = frame.from_frame(r.velocity);
     const Vec2 w = frame.from_frame(r.angular_velocity);

@@ -27,6 +27,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include "json_input.hpp"
+
 #include "cueball/errors.hpp"
 
 namespace cueball {
@@ -704,48 +706,7 @@ ordered_json point_json(Vec2 p) { return ordered_json::array({p.x, p.y}); }
 
 Table table_from_json(std::string_view json_text, std::string_view path_view) {
   const std::string path(path_view);
-  // The parser callback tracks the path of the value being parsed, so that a
-  // number too large for a double (nlohmann's out_of_range 406, the only way
-  // JSON text can carry a non-finite number) is reported by its field.
-  struct Frame {
-    bool array;
-    std::size_t index;
-    std::string key;
-  };
-  std::vector<Frame> stack;
-  const auto after_value = [&stack] {
-    if (!stack.empty() && stack.back().array) ++stack.back().index;
-  };
-  const json::parser_callback_t track = [&](int, json::parse_event_t event, json& parsed) {
-    switch (event) {
-      case json::parse_event_t::object_start: stack.push_back({false, 0, {}}); break;
-      case json::parse_event_t::array_start: stack.push_back({true, 0, {}}); break;
-      case json::parse_event_t::key: stack.back().key = parsed.get<std::string>(); break;
-      case json::parse_event_t::object_end:
-      case json::parse_event_t::array_end:
-        stack.pop_back();
-        after_value();
-        break;
-      case json::parse_event_t::value: after_value(); break;
-    }
-    return true;
-  };
-  json j;
-  try {
-    j = json::parse(json_text.begin(), json_text.end(), track);
-  } catch (const json::parse_error& e) {
-    fail(path, path + ": malformed JSON at byte " + std::to_string(e.byte) + ": " + e.what());
-  } catch (const json::exception& e) {
-    std::string field = path;
-    for (const Frame& f : stack) {
-      if (f.array) {
-        field.append(1, '[').append(std::to_string(f.index)).append(1, ']');
-      } else {
-        field.append(1, '.').append(f.key);
-      }
-    }
-    fail(field, field + " is not a finite number (" + e.what() + ")");
-  }
+  const json j = detail::parse_json(json_text, path);
   require_object(j, path);
   Table t = j.contains("preset") ? read_preset_form(j, path) : read_full_form(j, path);
   validate_table(t, path);

@@ -120,6 +120,22 @@ bool policy_separates(const std::array<double, M>& c, const std::array<double, N
   return true;
 }
 
+// Lower-degree coefficients in a wider array (leading zeros).
+template <std::size_t N, std::size_t M>
+std::array<double, N> pad(const std::array<double, M>& c) {
+  static_assert(M <= N);
+  std::array<double, N> out{};
+  for (std::size_t k = 0; k < M; ++k) out[k] = c[k];
+  return out;
+}
+
+// The distinct values of known roots, ascending.
+template <std::size_t N>
+std::vector<double> distinct_sorted(std::array<double, N> r) {
+  std::sort(r.begin(), r.end());
+  return std::vector<double>(r.begin(), std::unique(r.begin(), r.end()));
+}
+
 template <std::size_t N>
 std::vector<double> roots_vector(const RealRoots<N>& r) {
   return std::vector<double>(r.begin(), r.end());
@@ -326,10 +342,11 @@ TEST(SolveQuadratic, RoundOffNegativeDiscriminantStillGrazes) {
 }
 
 TEST(SolveQuadratic, DegenerateDegrees) {
-  const QuadraticRoots lin = solve_quadratic({3.0, -2.0, 0.0});
+  const QuadraticCoefficients linear{3.0, -2.0, 0.0};
+  const QuadraticRoots lin = solve_quadratic(linear);
   EXPECT_EQ(lin.degree, 1);
   ASSERT_EQ(lin.count, 1);
-  EXPECT_EQ(lin[0], 1.5);
+  EXPECT_EQ(lin[0], -linear[0] / linear[1]);
   const QuadraticRoots cst = solve_quadratic({3.0, 0.0, 0.0});
   EXPECT_EQ(cst.degree, 0);
   EXPECT_EQ(cst.count, 0);
@@ -340,10 +357,8 @@ TEST(SolveQuadratic, DegenerateDegrees) {
   EXPECT_EQ(zero.count, 0);
   const QuadraticRoots complex_pair = solve_quadratic({1.0, 0.0, 1.0});
   EXPECT_EQ(complex_pair.count, 0);
-  const QuadraticRoots at_zero = solve_quadratic({0.0, -4.0, 2.0});
-  ASSERT_EQ(at_zero.count, 2);
-  EXPECT_EQ(at_zero[0], 0.0);
-  EXPECT_EQ(at_zero[1], 2.0);
+  const std::array<double, 2> r0{0.0, 2.0};  // exact zero root
+  EXPECT_EQ(roots_vector(solve_quadratic(from_roots(r0, 2.0))), distinct_sorted(r0));
   expect_well_formed(lin);
   expect_well_formed(zero);
 }
@@ -442,28 +457,22 @@ TEST(SolveCubic, DoubleAndTripleRoots) {
 }
 
 TEST(SolveCubic, DegenerateDegreesAndZeroRoot) {
-  const CubicRoots q = solve_cubic({2.0, -3.0, 1.0, 0.0});
+  // Leading zero: the quadratic (t - 1)(t - 2), whose roots are exact.
+  const std::array<double, 2> r2{1.0, 2.0};
+  const CubicRoots q = solve_cubic(pad<4>(from_roots(r2)));
   EXPECT_EQ(q.degree, 2);
-  ASSERT_EQ(q.count, 2);
-  EXPECT_EQ(q[0], 1.0);
-  EXPECT_EQ(q[1], 2.0);
+  EXPECT_EQ(roots_vector(q), distinct_sorted(r2));
   EXPECT_EQ(solve_cubic({5.0, 0.0, 0.0, 0.0}).degree, 0);
   EXPECT_TRUE(solve_cubic({0.0, 0.0, 0.0, 0.0}).identically_zero());
-  // t (t - 1)(t + 2): exact zero root, deflated.
-  const CubicRoots z = solve_cubic(from_roots(std::array<double, 3>{0.0, 1.0, -2.0}));
-  ASSERT_EQ(z.count, 3);
-  EXPECT_EQ(z[0], -2.0);
-  EXPECT_EQ(z[1], 0.0);
-  EXPECT_EQ(z[2], 1.0);
+  // t (t - 1)(t + 2): exact zero root, deflated; the rest exact too.
+  const std::array<double, 3> rz{0.0, 1.0, -2.0};
+  EXPECT_EQ(roots_vector(solve_cubic(from_roots(rz))), distinct_sorted(rz));
   // t^2 (t - 3): zero is a double root, reported once.
-  const CubicRoots z2 = solve_cubic({0.0, 0.0, -3.0, 1.0});
-  ASSERT_EQ(z2.count, 2);
-  EXPECT_EQ(z2[0], 0.0);
-  EXPECT_EQ(z2[1], 3.0);
-  // t^3: one root.
-  const CubicRoots z3 = solve_cubic({0.0, 0.0, 0.0, 2.0});
-  ASSERT_EQ(z3.count, 1);
-  EXPECT_EQ(z3[0], 0.0);
+  const std::array<double, 3> rz2{0.0, 0.0, 3.0};
+  EXPECT_EQ(roots_vector(solve_cubic(from_roots(rz2))), distinct_sorted(rz2));
+  // 2 t^3: one root.
+  const std::array<double, 3> rz3{0.0, 0.0, 0.0};
+  EXPECT_EQ(roots_vector(solve_cubic(from_roots(rz3, 2.0))), distinct_sorted(rz3));
 }
 
 TEST(SolveCubic, AgreesWithSlowReference) {
@@ -739,26 +748,29 @@ TEST(SolveQuartic, WideDynamicRangeAgreesWithSlowReference) {
   EXPECT_GT(compared, cases * 99 / 100);
 }
 
-TEST(BallBallQuartic, JustAfterContactWithNearlyEqualAccelerations) {
-  // The hard case right after a collision: the pair touches (|dr| = 2R, so
-  // the constant term is round-off, ~1e-18) while the accelerations differ
-  // by round-off (~1e-15 m/s^2, so the leading coefficient is ~1e-31). The
-  // roots then spread from ~1e-18 s to ~1e15 s.
-  std::mt19937_64 rng(405);
+TEST(SolveQuartic, RootsOnThreeScalesTouchingNowAndFarFuture) {
+  // A tiny root (~1e-16..1e-20, e.g. a pair touching now), two ordinary ones
+  // and a huge one (~1e16..1e20, nearly equal accelerations): the roots span
+  // 32-40 orders of magnitude. The factorization alone gets a few percent of
+  // these wrong; its backward-error certificate must catch every one and hand
+  // it to the isolation fallback.
+  std::mt19937_64 rng(312);
   std::uniform_real_distribution<double> u(-1.0, 1.0);
-  const double R = 0.028575;
-  int compared = 0;
   for (int it = 0; it < 20000; ++it) {
-    const double ang = 3.14159 * u(rng);
-    const Vec2 dr = Vec2{std::cos(ang), std::sin(ang)} * (2 * R);
-    const Vec2 dv{2.0 * u(rng), 2.0 * u(rng)};
-    const Vec2 da = Vec2{u(rng), u(rng)} * std::pow(10.0, -15.0 + 3.0 * u(rng));
-    const QuarticCoefficients c = contact_quartic(dr, dv, da, R);  // c[0] is often exactly 0: deflated
+    const double sign_tiny = u(rng) < 0.0 ? -1.0 : 1.0;
+    const double sign_huge = u(rng) < 0.0 ? -1.0 : 1.0;
+    std::array<double, 4> r{sign_tiny * std::pow(10.0, -18.0 + 2.0 * u(rng)), u(rng), u(rng),
+                            sign_huge * std::pow(10.0, 18.0 + 2.0 * u(rng))};
+    std::sort(r.begin(), r.end());
+    if (std::fabs(r[1] - r[2]) < 1e-3 || r[0] == r[1] || r[2] == r[3]) continue;
+    const auto c = from_roots(r);
     const QuarticRoots got = solve_quartic(c);
     expect_well_formed(got);
-    if (compare_with_reference<4>(c, got, "after contact")) ++compared;
+    ASSERT_EQ(got.count, 4) << r[0] << " " << r[1] << " " << r[2] << " " << r[3];
+    for (std::size_t i = 0; i < 4; ++i)
+      EXPECT_NEAR(got[i], r[i], 32 * kEps * product_condition(r, i) * std::fabs(r[i]))
+          << r[0] << " " << r[1] << " " << r[2] << " " << r[3];
   }
-  EXPECT_GT(compared, 19000);
 }
 
 TEST(SolveQuartic, ResidualsAreAtRoundOffLevel) {
@@ -778,19 +790,22 @@ TEST(SolveQuartic, ResidualsAreAtRoundOffLevel) {
 
 TEST(SolveQuartic, DegenerateDegreesDispatchOnTheTrueDegree) {
   // Leading zeros: solve_quartic must agree with the lower-degree solver.
-  const QuarticCoefficients q3{-6.0, 11.0, -6.0, 1.0, 0.0};
-  const QuarticRoots r3 = solve_quartic(q3);
+  const std::array<double, 3> roots3{1.0, 2.0, 3.0};
+  const auto c3 = from_roots(roots3);
+  const QuarticRoots r3 = solve_quartic(pad<5>(c3));
   EXPECT_EQ(r3.degree, 3);
-  EXPECT_EQ(roots_vector(r3), roots_vector(solve_cubic({q3[0], q3[1], q3[2], q3[3]})));
+  EXPECT_EQ(roots_vector(r3), roots_vector(solve_cubic(c3)));
   ASSERT_EQ(r3.count, 3);
-  for (std::size_t i = 0; i < 3; ++i) EXPECT_NEAR(r3[i], static_cast<double>(i + 1), 8 * kEps);
-  const QuarticRoots r2 = solve_quartic({2.0, -3.0, 1.0, 0.0, 0.0});
+  for (std::size_t i = 0; i < 3; ++i) EXPECT_NEAR(r3[i], roots3[i], simple_root_tol(c3, roots3[i]));
+  const auto c2 = from_roots(std::array<double, 2>{1.0, 2.0});
+  const QuarticRoots r2 = solve_quartic(pad<5>(c2));
   EXPECT_EQ(r2.degree, 2);
-  EXPECT_EQ(roots_vector(r2), roots_vector(solve_quadratic({2.0, -3.0, 1.0})));
-  const QuarticRoots r1 = solve_quartic({2.0, -4.0, 0.0, 0.0, 0.0});
+  EXPECT_EQ(roots_vector(r2), roots_vector(solve_quadratic(c2)));
+  const QuarticCoefficients c1{2.0, -4.0, 0.0, 0.0, 0.0};
+  const QuarticRoots r1 = solve_quartic(c1);
   EXPECT_EQ(r1.degree, 1);
   ASSERT_EQ(r1.count, 1);
-  EXPECT_EQ(r1[0], 0.5);
+  EXPECT_EQ(r1[0], -c1[0] / c1[1]);
   const QuarticRoots r0 = solve_quartic({2.0, 0.0, 0.0, 0.0, 0.0});
   EXPECT_EQ(r0.degree, 0);
   EXPECT_EQ(r0.count, 0);
@@ -799,11 +814,11 @@ TEST(SolveQuartic, DegenerateDegreesDispatchOnTheTrueDegree) {
   EXPECT_TRUE(rz.identically_zero());
   EXPECT_EQ(rz.count, 0);
   expect_well_formed(rz);
-  // Exact zero roots are deflated: t^2 (t - 1)(t + 1) and t^4.
-  const QuarticRoots z = solve_quartic(from_roots(std::array<double, 4>{0.0, 0.0, 1.0, -1.0}));
-  EXPECT_EQ(roots_vector(z), (std::vector<double>{-1.0, 0.0, 1.0}));
-  const QuarticRoots z4 = solve_quartic({0.0, 0.0, 0.0, 0.0, 3.0});
-  EXPECT_EQ(roots_vector(z4), (std::vector<double>{0.0}));
+  // Exact zero roots are deflated: t^2 (t - 1)(t + 1) and 3 t^4.
+  const std::array<double, 4> zeros2{0.0, 0.0, 1.0, -1.0};
+  EXPECT_EQ(roots_vector(solve_quartic(from_roots(zeros2))), distinct_sorted(zeros2));
+  const std::array<double, 4> rz4{0.0, 0.0, 0.0, 0.0};
+  EXPECT_EQ(roots_vector(solve_quartic(from_roots(rz4, 3.0))), distinct_sorted(rz4));
   // Non-finite input: no roots.
   EXPECT_EQ(solve_quartic({1.0, NAN, 0.0, 0.0, 1.0}).count, 0);
   EXPECT_EQ(solve_quartic({-1.0, 0.0, 0.0, 0.0, kInf}).count, 0);
@@ -824,23 +839,25 @@ TEST(SolveQuartic, TinyLeadingCoefficientKeepsTheSmallRoots) {
 }
 
 TEST(SolveQuartic, PowerOfTwoScalingCommutesIncludingTheRescaledPath) {
-  // t -> 2^e t scales the roots exactly: c_k -> c_k 2^(-k e). Large |e|
-  // exercises the exact power-of-two rescaling used outside 2^-80..2^80.
-  // The solvers' arithmetic is homogeneous, so results agree to the last
-  // bits (not bitwise: libm's cbrt is not exactly scale-equivariant).
+  // t -> 2^e t scales the roots exactly: c_k -> c_k 2^((2-k) e) (the factor
+  // 2^(2e) on the whole polynomial keeps every coefficient finite for |e| up
+  // to 500, where the monic coefficients c_k/c_4 overflow). |e| > 80
+  // exercises the exact power-of-two rescaling used outside 2^-80..2^80. The
+  // solvers' arithmetic is homogeneous, so results agree to the last bits
+  // (not bitwise: libm's cbrt is not exactly scale-equivariant).
   std::mt19937_64 rng(308);
   std::normal_distribution<double> n(0.0, 1.0);
   for (int it = 0; it < 2000; ++it) {
     QuarticCoefficients c{};
     for (double& x : c) x = n(rng);
-    CubicCoefficients c3{c[0], c[1], c[2], c[3]};
+    const CubicCoefficients c3{c[0], c[1], c[2], c[3]};
     const QuarticRoots base = solve_quartic(c);
     const CubicRoots base3 = solve_cubic(c3);
-    for (int e : {-230, -150, -81, -9, 7, 64, 100, 200}) {
+    for (int e : {-500, -230, -150, -81, -9, 7, 64, 100, 200, 500}) {
       QuarticCoefficients cs{};
       CubicCoefficients cs3{};
-      for (std::size_t k = 0; k < 5; ++k) cs[k] = std::ldexp(c[k], -static_cast<int>(k) * e);
-      for (std::size_t k = 0; k < 4; ++k) cs3[k] = std::ldexp(c3[k], -static_cast<int>(k) * e);
+      for (std::size_t k = 0; k < 5; ++k) cs[k] = std::ldexp(c[k], (2 - static_cast<int>(k)) * e);
+      for (std::size_t k = 0; k < 4; ++k) cs3[k] = std::ldexp(c3[k], (2 - static_cast<int>(k)) * e);
       const QuarticRoots scaled = solve_quartic(cs);
       const CubicRoots scaled3 = solve_cubic(cs3);
       ASSERT_EQ(scaled.count, base.count) << e;
@@ -998,6 +1015,28 @@ TEST(BallBallQuartic, NearlyEqualAccelerationsMatchTheStraightLineTimes) {
     }
   }
   EXPECT_GT(hits, 500);
+}
+
+TEST(BallBallQuartic, JustAfterContactWithNearlyEqualAccelerations) {
+  // The hard case right after a collision: the pair touches (|dr| = 2R, so
+  // the constant term is round-off, ~1e-18) while the accelerations differ
+  // by round-off (~1e-15 m/s^2, so the leading coefficient is ~1e-31). The
+  // roots then spread from ~1e-18 s to ~1e15 s.
+  std::mt19937_64 rng(405);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  const double R = 0.028575;
+  int compared = 0;
+  for (int it = 0; it < 20000; ++it) {
+    const double ang = 3.14159 * u(rng);
+    const Vec2 dr = Vec2{std::cos(ang), std::sin(ang)} * (2 * R);
+    const Vec2 dv{2.0 * u(rng), 2.0 * u(rng)};
+    const Vec2 da = Vec2{u(rng), u(rng)} * std::pow(10.0, -15.0 + 3.0 * u(rng));
+    const QuarticCoefficients c = contact_quartic(dr, dv, da, R);  // c[0] is often exactly 0: deflated
+    const QuarticRoots got = solve_quartic(c);
+    expect_well_formed(got);
+    if (compare_with_reference<4>(c, got, "after contact")) ++compared;
+  }
+  EXPECT_GT(compared, 19000);
 }
 
 // --------------------------------------------------- smallest root in [a, b]

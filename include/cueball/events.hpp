@@ -18,7 +18,9 @@
 // decreasing). A pair already touching or overlapping by round-off that is
 // approaching collides now (t = 0); one that is touching and separating does
 // not collide again. A tangent (grazing) root, where the pair neither
-// approaches nor separates, is no collision: no impulse would be exchanged.
+// approaches nor separates, is no collision: no impulse would be exchanged;
+// neither is an approach slower than 1e-12 m/s (round-off of a contact just
+// resolved, which even sustained for a whole shot moves a ball < 1e-10 m).
 //
 // `horizon` is how long the current pieces of trajectory stay valid (the
 // earliest next transition of the balls involved); roots beyond it are not

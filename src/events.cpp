@@ -2,6 +2,7 @@
 // which root counts.
 #include "cueball/events.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include "cueball/polynomial_roots.hpp"
@@ -36,7 +37,83 @@ std::optional<double> earliest_entering_root(const std::array<double, N>& c, dou
   return std::nullopt;
 }
 
+// Control points of the relative path d(t) = d0 + v t + a t^2/2 over [0, h]
+// as a quadratic Bezier curve: d0, d0 + v h/2, d(h).
+struct Hull {
+  Vec2 p0, p1, p2;
+};
+
+Hull bezier_hull(Vec2 d0, Vec2 v, Vec2 a, double h) {
+  return {d0, d0 + (0.5 * h) * v, d0 + h * v + (0.5 * h * h) * a};
+}
+
+double squared_distance_to_segment(Vec2 o, Vec2 a, Vec2 b) {
+  const Vec2 ab = b - a;
+  const double len2 = dot(ab, ab);
+  const double t = len2 > 0.0 ? std::clamp(dot(o - a, ab) / len2, 0.0, 1.0) : 0.0;
+  const Vec2 d = a + t * ab - o;
+  return dot(d, d);
+}
+
+// True when the triangle (hull) comes within `reach` of the origin.
+bool hull_reaches_origin(const Hull& h, double reach) {
+  const Vec2 o{};
+  const double c0 = cross(h.p1 - h.p0, o - h.p0), c1 = cross(h.p2 - h.p1, o - h.p1), c2 = cross(h.p0 - h.p2, o - h.p2);
+  if ((c0 >= 0 && c1 >= 0 && c2 >= 0) || (c0 <= 0 && c1 <= 0 && c2 <= 0)) return true;  // inside
+  const double r2 = reach * reach;
+  return squared_distance_to_segment(o, h.p0, h.p1) <= r2 || squared_distance_to_segment(o, h.p1, h.p2) <= r2 ||
+         squared_distance_to_segment(o, h.p2, h.p0) <= r2;
+}
+
 }  // namespace
+
+QuadraticPath quadratic_path(const BallState& s, const Parameters& p) {
+  return {s.position, s.velocity, phase_acceleration(s, p)};
+}
+
+std::optional<double> predict_contact(const QuadraticPath& a, const QuadraticPath& b, double contact,
+                                      double horizon) {
+  const Vec2 dr = b.position - a.position;
+  const Vec2 dv = b.velocity - a.velocity;
+  const Vec2 da = b.acceleration - a.acceleration;
+  if (dv == Vec2{} && da == Vec2{}) return std::nullopt;  // no relative motion
+  // Cheap rejection: the relative path's hull never comes within contact.
+  if (std::isfinite(horizon) && !hull_reaches_origin(bezier_hull(dr, dv, da, horizon), contact)) return std::nullopt;
+  // |dr + dv t + da t^2/2|^2 - contact^2, ascending powers.
+  const std::array<double, 5> c{dot(dr, dr) - contact * contact, 2.0 * dot(dr, dv), dot(dv, dv) + dot(dr, da),
+                                dot(dv, da), 0.25 * dot(da, da)};
+  return earliest_entering_root(c, horizon, [&](double t) {
+    const Vec2 d = dr + t * dv + (0.5 * t * t) * da;
+    return dot(d, dv + t * da) / contact;  // normal relative velocity at contact, m/s
+  });
+}
+
+std::optional<double> predict_line_contact(const QuadraticPath& s, Vec2 start, Vec2 end, double contact_distance,
+                                           double horizon) {
+  const Vec2 along = end - start;
+  const double length = norm(along);
+  const Vec2 e = along / length;
+  const Vec2 n = perp(e);  // inward normal: the playing surface is on the left
+  const Vec2 a = s.acceleration;
+  const std::array<double, 3> c{dot(n, s.position - start) - contact_distance, dot(n, s.velocity), 0.5 * dot(n, a)};
+  if (c[1] == 0.0 && c[2] == 0.0) return std::nullopt;  // not moving across the line
+  if (std::isfinite(horizon)) {
+    // The hull's points all stay on the table side of the contact line.
+    const Hull h = bezier_hull(s.position - start, s.velocity, a, horizon);
+    const double d = contact_distance;
+    if (dot(n, h.p0) > d && dot(n, h.p1) > d && dot(n, h.p2) > d) return std::nullopt;
+  }
+  const auto t = earliest_entering_root(c, horizon, [&](double tt) { return dot(n, s.velocity + tt * a); });
+  if (!t) return std::nullopt;
+  const Vec2 r = s.position + *t * s.velocity + (0.5 * *t * *t) * a;
+  const double foot = dot(e, r - start);
+  if (foot < 0.0 || foot > length) return std::nullopt;  // beyond the segment: a jaw's business
+  return t;
+}
+
+std::optional<double> predict_circle_contact(const QuadraticPath& s, Vec2 centre, double distance, double horizon) {
+  return predict_contact({centre, {}, {}}, s, distance, horizon);
+}
 
 Vec2 phase_acceleration(const BallState& s, const Parameters& p) {
   switch (motion_phase(s, p)) {
@@ -55,57 +132,17 @@ Vec2 phase_acceleration(const BallState& s, const Parameters& p) {
 
 std::optional<double> predict_ball_ball_contact(const BallState& a, const BallState& b, const Parameters& p,
                                                 double horizon) {
-  const Vec2 dr = b.position - a.position;
-  const Vec2 dv = b.velocity - a.velocity;
-  const Vec2 da = phase_acceleration(b, p) - phase_acceleration(a, p);
-  if (dv == Vec2{} && da == Vec2{}) return std::nullopt;  // no relative motion
-  const double contact = 2.0 * p.ball.radius;
-  // Cheap rejection: the gap cannot close within the horizon.
-  if (std::isfinite(horizon)) {
-    const double reach = norm(dv) * horizon + 0.5 * norm(da) * horizon * horizon;
-    if (norm(dr) - contact > reach) return std::nullopt;
-  }
-  // |dr + dv t + da t^2/2|^2 - (2R)^2, ascending powers.
-  const std::array<double, 5> c{dot(dr, dr) - contact * contact, 2.0 * dot(dr, dv), dot(dv, dv) + dot(dr, da),
-                                dot(dv, da), 0.25 * dot(da, da)};
-  return earliest_entering_root(c, horizon, [&](double t) {
-    const Vec2 d = dr + t * dv + (0.5 * t * t) * da;
-    return dot(d, dv + t * da) / contact;  // normal relative velocity at contact, m/s
-  });
+  return predict_contact(quadratic_path(a, p), quadratic_path(b, p), 2.0 * p.ball.radius, horizon);
 }
 
 std::optional<double> predict_ball_line_contact(const BallState& s, const Parameters& p, Vec2 start, Vec2 end,
                                                 double contact_distance, double horizon) {
-  const Vec2 along = end - start;
-  const double length = norm(along);
-  const Vec2 e = along / length;
-  const Vec2 n = perp(e);  // inward normal: the playing surface is on the left
-  const Vec2 a = phase_acceleration(s, p);
-  const std::array<double, 3> c{dot(n, s.position - start) - contact_distance, dot(n, s.velocity), 0.5 * dot(n, a)};
-  if (c[1] == 0.0 && c[2] == 0.0) return std::nullopt;  // not moving across the line
-  const auto t = earliest_entering_root(c, horizon, [&](double tt) { return dot(n, s.velocity + tt * a); });
-  if (!t) return std::nullopt;
-  const Vec2 r = s.position + *t * s.velocity + (0.5 * *t * *t) * a;
-  const double foot = dot(e, r - start);
-  if (foot < 0.0 || foot > length) return std::nullopt;  // beyond the segment: a jaw's business
-  return t;
+  return predict_line_contact(quadratic_path(s, p), start, end, contact_distance, horizon);
 }
 
 std::optional<double> predict_ball_circle_contact(const BallState& s, const Parameters& p, Vec2 centre,
                                                   double distance, double horizon) {
-  const Vec2 a = phase_acceleration(s, p);
-  if (s.velocity == Vec2{} && a == Vec2{}) return std::nullopt;
-  const Vec2 dr = s.position - centre;
-  if (std::isfinite(horizon)) {
-    const double reach = norm(s.velocity) * horizon + 0.5 * norm(a) * horizon * horizon;
-    if (norm(dr) - distance > reach) return std::nullopt;
-  }
-  const std::array<double, 5> c{dot(dr, dr) - distance * distance, 2.0 * dot(dr, s.velocity),
-                                dot(s.velocity, s.velocity) + dot(dr, a), dot(s.velocity, a), 0.25 * dot(a, a)};
-  return earliest_entering_root(c, horizon, [&](double t) {
-    const Vec2 d = dr + t * s.velocity + (0.5 * t * t) * a;
-    return dot(d, s.velocity + t * a) / distance;  // radial velocity at contact, m/s
-  });
+  return predict_circle_contact(quadratic_path(s, p), centre, distance, horizon);
 }
 
 }  // namespace cueball

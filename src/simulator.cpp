@@ -94,6 +94,8 @@ class Simulation {
     time_.assign(n, 0.0);
     phase_.resize(n);
     transition_.resize(n);
+    path_.resize(n);
+    contact_ = 2.0 * p_.ball.radius;
     active_.assign(n, 1);
     ball_next_.resize(n);
     pair_next_.resize(n * n);
@@ -150,6 +152,7 @@ class Simulation {
     time_[k] = now_;
     phase_[k] = motion_phase(state_[k], p_);
     transition_[k] = next_transition(state_[k], p_);
+    path_[k] = quadratic_path(state_[k], p_);
     result_.balls[k].segments.push_back({now_, state_[k]});
   }
 
@@ -169,7 +172,7 @@ class Simulation {
       case Transition::vertical_spin_ends: best = {now_ + tr.time, EventType::spin_stop, i, -1}; break;
       case Transition::none: break;
     }
-    const BallState& s = state_[k];
+    const QuadraticPath& s = path_[k];  // predict_ball runs right after begin_segment: time_[k] == now_
     if (phase_[k] == MotionPhase::sliding || phase_[k] == MotionPhase::rolling) {
       const auto consider = [&](std::optional<double> t, EventType type, std::size_t index) {
         if (!t) return;
@@ -178,15 +181,15 @@ class Simulation {
       };
       for (std::size_t c = 0; c < table_.cushions.size(); ++c) {
         const CushionSegment& seg = table_.cushions[c];
-        consider(predict_ball_line_contact(s, p_, seg.start, seg.end, cushion_distance_[c], horizon),
+        consider(predict_line_contact(s, seg.start, seg.end, cushion_distance_[c], horizon),
                  EventType::ball_cushion, c);
       }
       for (std::size_t j = 0; j < table_.jaws.size(); ++j) {
-        consider(predict_ball_circle_contact(s, p_, table_.jaws[j].centre, jaw_distance_[j], horizon),
+        consider(predict_circle_contact(s, table_.jaws[j].centre, jaw_distance_[j], horizon),
                  EventType::ball_jaw, j);
       }
       for (std::size_t q = 0; q < table_.pockets.size(); ++q) {
-        consider(predict_ball_circle_contact(s, p_, table_.pockets[q].centre, table_.pockets[q].radius, horizon),
+        consider(predict_circle_contact(s, table_.pockets[q].centre, table_.pockets[q].radius, horizon),
                  EventType::ball_pocket, q);
       }
     }
@@ -202,7 +205,8 @@ class Simulation {
     if (!i_moves && !j_moves) return;
     const double horizon =
         std::min(time_[idx(i)] + transition_[idx(i)].time, time_[idx(j)] + transition_[idx(j)].time) - now_;
-    const auto t = predict_ball_ball_contact(state_at_now(i), state_at_now(j), p_, horizon);
+    const auto t = predict_contact(advance(path_[idx(i)], now_ - time_[idx(i)]),
+                                   advance(path_[idx(j)], now_ - time_[idx(j)]), contact_, horizon);
     if (t) slot = {now_ + *t, EventType::ball_ball, i, j};
   }
 
@@ -376,6 +380,8 @@ class Simulation {
   std::vector<double> time_;
   std::vector<MotionPhase> phase_;
   std::vector<NextTransition> transition_;  // relative to time_
+  std::vector<QuadraticPath> path_;         // from time_
+  double contact_ = 0.0;                    // 2R
   std::vector<char> active_;
   std::vector<Candidate> ball_next_;
   std::vector<Candidate> pair_next_;  // [i * n + j], i < j

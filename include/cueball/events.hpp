@@ -37,6 +37,33 @@ namespace cueball {
 /// Constant acceleration of the ball's centre in its current motion phase.
 Vec2 phase_acceleration(const BallState& s, const Parameters& p);
 
+/// The centre's path within one motion phase: r(t) = position + velocity t +
+/// acceleration t^2 / 2.
+struct QuadraticPath {
+  Vec2 position;
+  Vec2 velocity;
+  Vec2 acceleration;
+};
+
+QuadraticPath quadratic_path(const BallState& s, const Parameters& p);
+
+/// The same path seen from dt later.
+constexpr QuadraticPath advance(const QuadraticPath& q, double dt) {
+  return {q.position + dt * q.velocity + (0.5 * dt * dt) * q.acceleration, q.velocity + dt * q.acceleration,
+          q.acceleration};
+}
+
+/// The kernels on precomputed paths (what the simulator calls). Over a finite
+/// horizon they first reject cheaply: a quadratic path over [0, h] is a
+/// Bezier curve inside the triangle of its control points, so a triangle that
+/// stays farther away than the contact distance means no contact, and no
+/// polynomial is solved.
+std::optional<double> predict_contact(const QuadraticPath& a, const QuadraticPath& b, double contact_distance,
+                                      double horizon);
+std::optional<double> predict_line_contact(const QuadraticPath& s, Vec2 start, Vec2 end, double contact_distance,
+                                           double horizon);
+std::optional<double> predict_circle_contact(const QuadraticPath& s, Vec2 centre, double distance, double horizon);
+
 /// Earliest time in [0, horizon] at which balls a and b (same radius) touch
 /// while approaching.
 std::optional<double> predict_ball_ball_contact(const BallState& a, const BallState& b, const Parameters& p,

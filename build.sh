@@ -29,11 +29,8 @@ case "$mode" in
   demo)
     build release
     bin=build/release/cueball
-    echo "== cueball plan: speed and spin to stop a ball 1.5 m away, sliding for the first 0.3 m"
-    "$bin" plan --x1 0.3 --x2 1.5
-    echo
-    echo "== cueball roll: a 2 m/s draw shot, and its state 0.2 s after the strike"
-    "$bin" roll --v0 2 --w0 -40 --at 0.2
+    echo "== cueball simulate: the built-in 9-ball break, event by event (result in build/break.json)"
+    "$bin" simulate -o build/break.json
     ;;
   test)
     build release

@@ -128,7 +128,10 @@ int run(int argc, const char* const* argv, std::ostream& out, std::ostream& err)
     err << "cueball: error: " << e.what() << '\n';
     return 2;
   } catch (const InvalidArgument& e) {
-    err << "cueball: error: " << flag_for_field(e.field()) << ": " << e.what() << '\n';
+    // A JSON path (scenario.balls[1].position) is named in the message itself;
+    // a library field (mu_s) is shown as the flag that sets it (--mu-s).
+    const bool json_path = e.field().find_first_of(".[") != std::string::npos;
+    err << "cueball: error: " << (json_path ? "" : flag_for_field(e.field()) + ": ") << e.what() << '\n';
     return 2;
   } catch (const InfeasibleShot& e) {
     err << "cueball: error: " << e.what() << '\n';

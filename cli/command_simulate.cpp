@@ -66,10 +66,9 @@ void run_simulate(const SimulateFlags& f, std::ostream& out, std::ostream& err) 
   for (const Event& e : r.events) ++by_type[to_string(e.type)];
   out << (f.scenario.empty() ? std::string("built-in 9-ball break") : f.scenario) << " on " << s.table.name << ": "
       << r.events.size() << " events, every ball at rest after " << fixed(r.end_time, 2) << " s\n";
-  out << "  events:";
-  for (const auto& [type, count] : by_type) out << ' ' << type << " " << count << ',';
-  out.seekp(-1, std::ios_base::cur);
-  out << "\n  ball  name      pocketed          final position (m)   at t (s)\n";
+  std::string counts;
+  for (const auto& [type, count] : by_type) counts += (counts.empty() ? " " : ", ") + type + " " + std::to_string(count);
+  out << "  events:" << counts << "\n  ball  name      pocketed          final position (m)   at t (s)\n";
   for (const BallTrajectory& b : r.balls) {
     char line[160];
     const std::string pocket = b.pocketed ? s.table.pockets[static_cast<std::size_t>(b.pocket)].name : "-";

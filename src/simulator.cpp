@@ -442,7 +442,7 @@ void validate_simulation_input(const Table& table, const std::vector<SimulationB
       const double d = norm(balls[i].state.position - balls[j].state.position);
       if (d < 2 * radius - kOverlapTolerance)
         throw InvalidArgument(ball_field(i, "position"),
-                              "balls " + std::to_string(balls[j].id) + " and " + std::to_string(balls[i].id) +
+                              ball_field(i, "position") + ": balls " + std::to_string(balls[j].id) + " and " + std::to_string(balls[i].id) +
                                   " overlap by " + num(2 * radius - d) + " m (centres " + num(d) +
                                   " m apart, allowed >= 2R = " + num(2 * radius) + " m)");
     }

@@ -94,6 +94,7 @@ int run(int argc, const char* const* argv, std::ostream& out, std::ostream& err)
   add("cushion", add_cushion_command(app));
   add("cushion-sweep", add_cushion_sweep_command(app));
   add("figures", add_figures_command(app));
+  add("fit-cushion", add_fit_cushion_command(app));
   add("simulate", add_simulate_command(app));
   add("batch", add_batch_command(app));
 

@@ -8,10 +8,12 @@
 #include <memory>
 #include <numbers>
 #include <optional>
+#include <sstream>
 #include <ostream>
 #include <vector>
 
 #include "common.hpp"
+#include "cueball/cushion_fit.hpp"
 #include "cueball/cushion_impact.hpp"
 
 namespace cueball::cli {
@@ -390,7 +392,124 @@ void run_figures(const FigureFlags& f, std::ostream& out, std::ostream& err) {
   (void)err;
 }
 
+// ------------------------------------------------------------------ fit-cushion
+
+struct FitFlags {
+  std::string data;
+  std::string solver = "exact";
+  int steps = 5000;
+  double grid_step = 0.01;
+  ParameterFlags parameters;
+};
+
+// Reads measured impacts: per line either "v0,v_out" (head-on, rolling, no
+// side spin: the paper's experiment) or "v0,alpha_deg,topspin_k,sidespin_k,
+// v_out,beta_deg" (oblique). '#' starts a comment; a first line that is not
+// numeric is a header.
+CushionFitData read_fit_data(const std::string& path, double radius) {
+  std::ifstream in(path);
+  if (!in) throw UsageError(path + ": cannot open the data file");
+  CushionFitData data;
+  std::string line;
+  for (int number = 1; std::getline(in, line); ++number) {
+    if (const auto hash = line.find('#'); hash != std::string::npos) line.erase(hash);
+    if (line.find_first_not_of(" \t\r") == std::string::npos) continue;
+    std::vector<double> values;
+    std::stringstream cells(line);
+    std::string cell;
+    bool numeric = true;
+    while (std::getline(cells, cell, ',')) {
+      char* end = nullptr;
+      const double v = std::strtod(cell.c_str(), &end);
+      if (end == cell.c_str() || cell.find_first_not_of(" \t\r", static_cast<std::size_t>(end - cell.c_str())) != std::string::npos) {
+        numeric = false;
+        break;
+      }
+      values.push_back(v);
+    }
+    const std::string where = path + ":" + std::to_string(number);
+    if (!numeric) {
+      if (data.head_on.empty() && data.oblique.empty() && number == 1) continue;  // a header
+      throw UsageError(where + ": not a number in '" + line + "'");
+    }
+    for (double v : values)
+      if (!std::isfinite(v)) throw UsageError(where + ": every value must be finite");
+    if (values.size() == 2) {
+      check_flag((where + ": v0").c_str(), values[0], 1e-6, kMaxSpeed, "incoming speed, m/s");
+      check_flag((where + ": v_out").c_str(), values[1], 0.0, kMaxSpeed, "measured rebound speed, m/s");
+      data.head_on.push_back({values[0], values[1]});
+    } else if (values.size() == 6) {
+      check_flag((where + ": v0").c_str(), values[0], 1e-6, kMaxSpeed, "incoming speed, m/s");
+      check_flag((where + ": alpha_deg").c_str(), values[1], 1e-9, 90.0, "angle of incidence, degrees");
+      check_flag((where + ": topspin_k").c_str(), values[2], -20.0, 20.0, "topspin as K V0/R");
+      check_flag((where + ": sidespin_k").c_str(), values[3], -20.0, 20.0, "sidespin as K V0/R");
+      check_flag((where + ": v_out").c_str(), values[4], 0.0, kMaxSpeed, "measured rebound speed, m/s");
+      check_flag((where + ": beta_deg").c_str(), values[5], 0.0, 180.0, "measured rebound angle, degrees");
+      ObliqueRebound o;
+      o.incidence = {values[0], values[1] * kDegree, values[2] * values[0] / radius, values[3] * values[0] / radius};
+      o.rebound_speed = values[4];
+      o.rebound_angle = values[5] * kDegree;
+      data.oblique.push_back(o);
+    } else {
+      throw UsageError(where + ": expected 2 numbers (v0,v_out) or 6 (v0,alpha_deg,topspin_k,sidespin_k,v_out,beta_deg), got " +
+                       std::to_string(values.size()));
+    }
+  }
+  if (data.head_on.empty() && data.oblique.empty()) throw UsageError(path + ": no measurements found");
+  return data;
+}
+
+void run_fit(const FitFlags& f, std::ostream& out, std::ostream& err) {
+  check_flag("--steps", f.steps, 1, 1e7, "paper solver steps N");
+  check_flag("--grid-step", f.grid_step, 0.001, 0.5, "grid spacing over (0, 1]^2");
+  const Parameters p = resolve_parameters(f.parameters);
+  const CushionFitData data = read_fit_data(f.data, p.ball.radius);
+  CushionFitOptions options;
+  options.solver = f.solver == "paper" ? CushionSolver::paper : CushionSolver::exact;
+  options.paper_steps = f.steps;
+  options.grid_step = f.grid_step;
+  const CushionFit fit = fit_cushion(data, p, options);
+  Report r("cushion constants fitted to " + f.data + " (" + f.solver + " solver, " + f.parameters.preset + " ball)");
+  r.add("e", fit.restitution, "", "restitution e_e");
+  r.add("mu_w", fit.friction, "", "ball-cushion friction");
+  r.add("e_sigma", fit.restitution_sigma, "", "standard error of e_e");
+  r.add("mu_w_sigma", fit.friction_sigma, "", "standard error of mu_w");
+  r.add("correlation", fit.correlation, "", "of the two estimates");
+  r.add("residual", fit.residual, "m^2/s^2", "sum of squared errors at the fit");
+  r.add("grid_e", fit.grid_restitution, "", "best point of the 0.01 grid (paper 3.5)");
+  r.add("grid_mu_w", fit.grid_friction, "");
+  r.add("head_on_points", static_cast<double>(data.head_on.size()), "");
+  r.add("oblique_points", static_cast<double>(data.oblique.size()), "");
+  if (fit.poorly_separated)
+    r.warn("the data barely separate e_e from mu_w (correlation " + std::to_string(fit.correlation) + "): " +
+           (data.oblique.empty() ? "head-on rolling impacts alone fix only one combination of them; add oblique impacts"
+                                 : "add impacts at other angles and spins"));
+  if (fit.beyond_rigid_cushion_limit > 0)
+    r.warn(std::to_string(fit.beyond_rigid_cushion_limit) +
+           " measurements have a normal speed above 2.5 m/s, beyond the rigid-cushion model");
+  emit(r, f.parameters.json, out, err);
+}
+
 }  // namespace
+
+Command add_fit_cushion_command(CLI::App& app) {
+  auto flags = std::make_shared<FitFlags>();
+  CLI::App* sub = app.add_subcommand(
+      "fit-cushion",
+      "Fits the cushion constants e_e and mu_w to measured impacts (paper 000 section 3.5): the paper's\n"
+      "0.01 grid over (0, 1]^2, then a local refinement. DATA.csv has one impact per line: 'v0,v_out'\n"
+      "(head-on, rolling, no side spin, as in the paper's experiment) or\n"
+      "'v0,alpha_deg,topspin_k,sidespin_k,v_out,beta_deg' (oblique; spins as K V0/R). Speeds m/s.\n"
+      "Reports the fit, its residual and how well each constant is determined.");
+  sub->add_option("data", flags->data, "CSV file of measured impacts")->required();
+  sub->add_option("--solver", flags->solver, "Solver the constants are fitted for: exact or paper")
+      ->check(CLI::IsMember({"exact", "paper"}))
+      ->capture_default_str();
+  sub->add_option("--steps", flags->steps, "N for the paper solver")->capture_default_str();
+  sub->add_option("--grid-step", flags->grid_step, "Grid spacing (the paper's 0.01)")->capture_default_str();
+  add_parameter_flags(*sub, flags->parameters);
+  return [flags](std::ostream& out, std::ostream& err) { run_fit(*flags, out, err); };
+}
 
 Command add_cushion_command(CLI::App& app) {
   auto flags = std::make_shared<ImpactFlags>();

@@ -47,6 +47,7 @@ Command add_plan_command(CLI::App& app);
 Command add_cushion_command(CLI::App& app);
 Command add_cushion_sweep_command(CLI::App& app);
 Command add_figures_command(CLI::App& app);
+Command add_fit_cushion_command(CLI::App& app);
 Command add_simulate_command(CLI::App& app);
 Command add_batch_command(CLI::App& app);
 

@@ -168,3 +168,71 @@ TEST(CliCushion, FiguresWritesTheFourPlots) {
 
 }  // namespace
 }  // namespace cueball
+
+namespace cueball {
+namespace {
+
+// Synthetic measurements from known constants, written as the CSV the
+// command reads.
+std::filesystem::path write_fit_data(const std::string& name, bool oblique, double e, double mu_w) {
+  const Parameters p = snooker_parameters();
+  CushionParameters c = cushion_mathavan2010_paper_fit(p.ball);
+  c.restitution = e;
+  c.friction = mu_w;
+  const std::filesystem::path path = std::filesystem::temp_directory_path() / name;
+  std::ofstream csv(path);
+  csv << "# synthetic impacts\n";
+  for (double v0 : {0.4, 0.8, 1.2, 1.6}) {
+    const PaperIncidence head_on{v0, 90 * kDeg, v0 / p.ball.radius, 0.0};
+    csv << v0 << "," << cushion_impact(incoming_ball(head_on), p, c).rebound_speed << "\n";
+    if (oblique) {
+      for (double alpha : {20.0, 45.0, 70.0}) {
+        for (double side : {-1.5, 1.5}) {
+          const PaperIncidence in{v0, alpha * kDeg, 0.0, side * v0 / p.ball.radius};
+          const CushionImpactResult r = cushion_impact(incoming_ball(in), p, c);
+          csv << v0 << "," << alpha << ",0," << side << "," << r.rebound_speed << "," << r.rebound_angle / kDeg << "\n";
+        }
+      }
+    }
+  }
+  return path;
+}
+
+TEST(CliCushion, FitRecoversKnownConstantsFromObliqueData) {
+  const auto path = write_fit_data("cueball_fit_oblique.csv", true, 0.93, 0.2);
+  const CliRun r = run_cli({"fit-cushion", path.string(), "--grid-step", "0.05", "--json"});
+  ASSERT_EQ(r.status, 0) << r.err;
+  const auto j = nlohmann::json::parse(r.out);
+  EXPECT_NEAR(j.at("e").get<double>(), 0.93, 1e-3);
+  EXPECT_NEAR(j.at("mu_w").get<double>(), 0.2, 1e-3);
+  EXPECT_EQ(j.at("oblique_points").get<double>(), 24.0);
+  EXPECT_FALSE(j.contains("warnings")) << r.err;
+  std::filesystem::remove(path);
+}
+
+TEST(CliCushion, FitWarnsThatHeadOnDataBarelySeparateTheConstants) {
+  const auto path = write_fit_data("cueball_fit_head_on.csv", false, 0.93, 0.2);
+  const CliRun r = run_cli({"fit-cushion", path.string(), "--grid-step", "0.05", "--json"});
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.err.find("barely separate"), std::string::npos) << r.err;
+  std::filesystem::remove(path);
+}
+
+TEST(CliCushion, FitRejectsBadDataNamingTheLine) {
+  const std::filesystem::path path = std::filesystem::temp_directory_path() / "cueball_fit_bad.csv";
+  {
+    std::ofstream csv(path);
+    csv << "v0,v_out\n1.0,0.8\n1.2,0.9,3\n";
+  }
+  expect_usage_error({"fit-cushion", path.string()}, ":3: expected 2 numbers");
+  {
+    std::ofstream csv(path);
+    csv << "1.0,0.8\n-1.0,0.5\n";
+  }
+  expect_usage_error({"fit-cushion", path.string()}, ":2: v0");
+  expect_usage_error({"fit-cushion", "/nonexistent/impacts.csv"}, "cannot open");
+  std::filesystem::remove(path);
+}
+
+}  // namespace
+}  // namespace cueball

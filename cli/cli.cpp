@@ -131,7 +131,8 @@ int run(int argc, const char* const* argv, std::ostream& out, std::ostream& err)
   } catch (const InvalidArgument& e) {
     // A JSON path (scenario.balls[1].position) is named in the message itself;
     // a library field (mu_s) is shown as the flag that sets it (--mu-s).
-    const bool json_path = e.field().find_first_of(".[") != std::string::npos;
+    const std::string& field = e.field();
+    const bool json_path = field.find_first_of(".[") != std::string::npos || field == "scenario" || field == "table";
     err << "cueball: error: " << (json_path ? "" : flag_for_field(e.field()) + ": ") << e.what() << '\n';
     return 2;
   } catch (const InfeasibleShot& e) {

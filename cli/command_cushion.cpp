@@ -156,7 +156,7 @@ void run_cushion(const ImpactFlags& f, std::ostream& out, std::ostream& err) {
   report.add("e", cushion.restitution, "", "restitution e_e");
   report.add("mu_w", cushion.friction, "", "ball-cushion friction");
   report.add("height", cushion.contact_height, "m", "contact height h");
-  if (solver_of(f.cushion) == CushionSolver::paper) report.add("steps", f.cushion.steps, "", "Euler steps N");
+  if (solver_of(f.cushion) == CushionSolver::paper) report.add_count("steps", f.cushion.steps, "Euler steps N");
   report.end_section();
   if (r.beyond_rigid_cushion_limit) {
     report.warn("the normal speed " + std::to_string(f.v0 * std::sin(in.angle)) +
@@ -478,8 +478,8 @@ void run_fit(const FitFlags& f, std::ostream& out, std::ostream& err) {
   r.add("residual", fit.residual, "m^2/s^2", "sum of squared errors at the fit");
   r.add("grid_e", fit.grid_restitution, "", "best point of the 0.01 grid (paper 3.5)");
   r.add("grid_mu_w", fit.grid_friction, "");
-  r.add("head_on_points", static_cast<double>(data.head_on.size()), "");
-  r.add("oblique_points", static_cast<double>(data.oblique.size()), "");
+  r.add_count("head_on_points", static_cast<long long>(data.head_on.size()));
+  r.add_count("oblique_points", static_cast<long long>(data.oblique.size()));
   if (fit.poorly_separated)
     r.warn("the data barely separate e_e from mu_w (correlation " + std::to_string(fit.correlation) + "): " +
            (data.oblique.empty() ? "head-on rolling impacts alone fix only one combination of them; add oblique impacts"

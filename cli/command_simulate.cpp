@@ -113,10 +113,10 @@ void run_batch(const BatchFlags& f, std::ostream& out, std::ostream& err) {
   const BatchResult r = simulate_batch(s, {f.shots, f.threads, static_cast<std::uint64_t>(f.seed)});
   Report report("batch of " + std::to_string(r.shots) + " noisy shots (" + std::to_string(f.threads) + " threads, seed " +
                 std::to_string(f.seed) + ")");
-  report.add("shots", r.shots, "", "requested");
-  report.add("simulated", r.simulated, "", "shots simulated");
-  report.add("miscues", r.miscues, "", "noisy strikes beyond the miscue limit (not simulated)");
-  report.add("failures", r.failures, "", "shots stopped at the event limit");
+  report.add_count("shots", r.shots, "requested");
+  report.add_count("simulated", r.simulated, "shots simulated");
+  report.add_count("miscues", r.miscues, "noisy strikes beyond the miscue limit (not simulated)");
+  report.add_count("failures", r.failures, "shots stopped at the event limit");
   report.add("seconds", r.seconds, "s", "wall-clock time");
   report.add("shots_per_second", r.shots_per_second, "1/s");
   report.add("events_per_shot", r.simulated ? static_cast<double>(r.events) / r.simulated : 0.0, "");

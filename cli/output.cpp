@@ -35,6 +35,10 @@ void Report::add_text(const std::string& key, const std::string& value, const st
   entries_.push_back({section_, key, value, value, "", meaning});
 }
 
+void Report::add_count(const std::string& key, long long value, const std::string& meaning) {
+  entries_.push_back({section_, key, value, std::to_string(value), "", meaning});
+}
+
 void Report::begin_section(const std::string& name, const std::string& heading) {
   section_ = name;
   headings_.emplace_back(name, heading);

@@ -21,6 +21,8 @@ class Report {
   void add(const std::string& key, const std::vector<double>& value, const std::string& unit,
            const std::string& meaning = {});
   void add_text(const std::string& key, const std::string& value, const std::string& meaning = {});
+  /// A count: printed and written as an integer.
+  void add_count(const std::string& key, long long value, const std::string& meaning = {});
   /// Subsequent entries go into a nested JSON object (and an indented block).
   void begin_section(const std::string& name, const std::string& heading);
   void end_section();

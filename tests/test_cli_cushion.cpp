@@ -205,7 +205,7 @@ TEST(CliCushion, FitRecoversKnownConstantsFromObliqueData) {
   const auto j = nlohmann::json::parse(r.out);
   EXPECT_NEAR(j.at("e").get<double>(), 0.93, 1e-3);
   EXPECT_NEAR(j.at("mu_w").get<double>(), 0.2, 1e-3);
-  EXPECT_EQ(j.at("oblique_points").get<double>(), 24.0);
+  EXPECT_EQ(j.at("oblique_points").get<int>(), 24);
   EXPECT_FALSE(j.contains("warnings")) << r.err;
   std::filesystem::remove(path);
 }

@@ -2,12 +2,16 @@
 # cueball's one entry point for people and CI, on Debian bookworm as root:
 #   ./build.sh demo   install what is missing, build (Release), run the main job
 #   ./build.sh test   the same, then every test (Release), then the whole suite
-#                     again under AddressSanitizer + UndefinedBehaviorSanitizer
+#                     again under AddressSanitizer + UndefinedBehaviorSanitizer,
+#                     then a bounded libFuzzer run of the scenario and table readers
 set -euo pipefail
 cd "$(dirname "$0")"
 mode=${1:-demo}
 
 packages=(g++ cmake ninja-build libgtest-dev libgmock-dev libbenchmark-dev nlohmann-json3-dev libcli11-dev gnuplot-nox)
+if [[ "$mode" == test ]]; then
+  packages+=(clang-14 libclang-rt-14-dev llvm-14)  # libFuzzer (libclang_rt.fuzzer) and readable traces
+fi
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
@@ -37,6 +41,8 @@ case "$mode" in
     ctest --preset release
     build asan
     ctest --preset asan
+    build fuzz
+    fuzz/run.sh build/fuzz 30
     ;;
   *)
     echo "usage: $0 [demo|test]" >&2

@@ -11,7 +11,11 @@
 
 namespace cueball::detail {
 
-/// Parses `text`; malformed JSON and numbers too large for a double (1e999:
+/// Deeper nesting is rejected: valid documents nest at most 5 levels, and
+/// recursion over a deeper value (nlohmann's dump) could overflow the stack.
+inline constexpr std::size_t kMaxJsonDepth = 64;
+
+/// Parses `text`; too deep nesting, malformed JSON and numbers too large for a double (1e999:
 /// nlohmann's out_of_range 406, the only way JSON text can carry a non-finite
 /// number) throw InvalidArgument, the latter naming the field by its path
 /// below `path`, tracked by a parser callback.
@@ -28,8 +32,12 @@ inline nlohmann::json parse_json(std::string_view text, const std::string& path)
   };
   const json::parser_callback_t track = [&](int, json::parse_event_t event, json& parsed) {
     switch (event) {
-      case json::parse_event_t::object_start: stack.push_back({false, 0, {}}); break;
-      case json::parse_event_t::array_start: stack.push_back({true, 0, {}}); break;
+      case json::parse_event_t::object_start:
+      case json::parse_event_t::array_start:
+        if (stack.size() >= kMaxJsonDepth)
+          throw InvalidArgument(path, path + " nests deeper than " + std::to_string(kMaxJsonDepth) + " levels");
+        stack.push_back({event == json::parse_event_t::array_start, 0, {}});
+        break;
       case json::parse_event_t::key: stack.back().key = parsed.get<std::string>(); break;
       case json::parse_event_t::object_end:
       case json::parse_event_t::array_end:

@@ -60,7 +60,10 @@ class Reader {
     if (!has(key)) return fallback;
     const Json& v = j_.at(key);
     if (!v.is_number_integer()) throw InvalidArgument(field(key), field(key) + " must be an integer (" + meaning + ")");
-    const auto x = v.get<long long>();
+    // Unsigned values beyond long long (e.g. 2^64 - 1) are out of range, not negative.
+    const long long x = v.is_number_unsigned() && v.get<unsigned long long>() > 9000000000000000000ULL
+                            ? 9000000000000000000LL
+                            : v.get<long long>();
     if (x < lo || x > hi)
       throw InvalidArgument(field(key), static_cast<double>(x), "[" + std::to_string(lo) + ", " + std::to_string(hi) + "]",
                             meaning);

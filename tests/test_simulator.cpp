@@ -271,6 +271,10 @@ TEST(Scenario, MalformedScenariosNameTheField) {
   EXPECT_EQ(invalid_field(R"({"cue": {"ball": 42}})"), "scenario.cue.ball");
   EXPECT_EQ(invalid_field(R"({"cue": {"target": 1, "aim_deg": 3}})"), "scenario.cue.target");
   EXPECT_EQ(invalid_field(R"({"max_events": 0})"), "scenario.max_events");
+  EXPECT_EQ(invalid_field(R"({"max_events": 18446744073709551615})"), "scenario.max_events");
+  // Deep nesting is refused before anything recurses over it (a fuzzing find:
+  // 100000 levels once overflowed the stack).
+  EXPECT_EQ(invalid_field("{\"table\": " + std::string(100000, '[') + std::string(100000, ']') + "}"), "scenario");
 }
 
 TEST(Scenario, RackAndListedBallsCombine) {

@@ -56,7 +56,9 @@ ShotOutcome play(const Scenario& s, std::uint64_t seed, int shot) {
     return o;  // a miscue or an out-of-range strike
   }
   try {
-    const SimulationResult r = simulate(s.table, balls, s.settings);
+    // The scenario was validated once in simulate_batch; the strike is checked
+    // by balls_after_strike (miscues are caught above).
+    const SimulationResult r = simulate_unchecked(s.table, balls, s.settings);
     o.outcome = Outcome::simulated;
     o.events = static_cast<int>(r.events.size());
     for (const BallTrajectory& b : r.balls) {
@@ -77,6 +79,8 @@ BatchResult simulate_batch(const Scenario& s, const BatchOptions& options) {
   if (options.threads < 1 || options.threads > 256)
     throw InvalidArgument("threads", static_cast<double>(options.threads), "[1, 256]", "worker threads");
   if (!s.cue) throw InvalidArgument("cue", "the scenario has no cue strike to repeat");
+  validate_simulation_input(s.table, s.balls, s.settings);  // once; each shot then runs unchecked
+  validate(s.noise);
 
   const auto start = std::chrono::steady_clock::now();
   std::vector<ShotOutcome> outcomes(static_cast<std::size_t>(options.shots));

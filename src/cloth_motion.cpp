@@ -104,6 +104,16 @@ MotionPhase motion_phase(const BallState& s, const Parameters& p) {
   return MotionPhase::stationary;
 }
 
+double phase_end_time(const BallState& s, const Parameters& p) {
+  switch (motion_phase(s, p)) {
+    case MotionPhase::sliding: return sliding_time(norm(slip_velocity(s, p.ball.radius)), p);
+    case MotionPhase::rolling: return rolling_time(norm(s.velocity), p);
+    case MotionPhase::spinning:
+    case MotionPhase::stationary: break;
+  }
+  return kInfinity;
+}
+
 NextTransition next_transition(const BallState& s, const Parameters& p) {
   const double t_spin = vertical_spin_stop_time(s.angular_velocity.z, p);
   double t_phase = kInfinity;

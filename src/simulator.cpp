@@ -95,6 +95,8 @@ class Simulation {
     phase_.resize(n);
     transition_.resize(n);
     path_.resize(n);
+    path_end_.resize(n);
+    transition_next_.resize(n);
     contact_ = 2.0 * p_.ball.radius;
     active_.assign(n, 1);
     ball_next_.resize(n);
@@ -153,25 +155,37 @@ class Simulation {
     phase_[k] = motion_phase(state_[k], p_);
     transition_[k] = next_transition(state_[k], p_);
     path_[k] = quadratic_path(state_[k], p_);
+    path_end_[k] = now_ + phase_end_time(state_[k], p_);
     result_.balls[k].segments.push_back({now_, state_[k]});
   }
 
-  // Earliest own event of ball i: its next transition, a cushion, a jaw or a pocket.
+  // Ball i's next transition (sliding ends, rolling ends, vertical spin ends).
+  void predict_transition(int i) {
+    const std::size_t k = idx(i);
+    Candidate best;
+    const NextTransition& tr = transition_[k];
+    if (active_[k]) {
+      switch (tr.kind) {
+        case Transition::sliding_ends: best = {time_[k] + tr.time, EventType::slide_to_roll, i, -1}; break;
+        case Transition::rolling_ends: best = {time_[k] + tr.time, EventType::roll_to_rest, i, -1}; break;
+        case Transition::vertical_spin_ends: best = {time_[k] + tr.time, EventType::spin_stop, i, -1}; break;
+        case Transition::none: break;
+      }
+    }
+    transition_next_[k] = best;
+  }
+
+  // Ball i's earliest contact with the table: a cushion, a jaw or a pocket,
+  // within its current path (up to the end of sliding or rolling).
   void predict_ball(int i) {
+    predict_transition(i);
     const std::size_t k = idx(i);
     Candidate best;
     if (!active_[k]) {
       ball_next_[k] = best;
       return;
     }
-    const NextTransition& tr = transition_[k];
-    const double horizon = tr.time;
-    switch (tr.kind) {
-      case Transition::sliding_ends: best = {now_ + tr.time, EventType::slide_to_roll, i, -1}; break;
-      case Transition::rolling_ends: best = {now_ + tr.time, EventType::roll_to_rest, i, -1}; break;
-      case Transition::vertical_spin_ends: best = {now_ + tr.time, EventType::spin_stop, i, -1}; break;
-      case Transition::none: break;
-    }
+    const double horizon = path_end_[k] - now_;
     const QuadraticPath& s = path_[k];  // predict_ball runs right after begin_segment: time_[k] == now_
     if (phase_[k] == MotionPhase::sliding || phase_[k] == MotionPhase::rolling) {
       const auto consider = [&](std::optional<double> t, EventType type, std::size_t index) {
@@ -203,8 +217,7 @@ class Simulation {
     const bool i_moves = phase_[idx(i)] == MotionPhase::sliding || phase_[idx(i)] == MotionPhase::rolling;
     const bool j_moves = phase_[idx(j)] == MotionPhase::sliding || phase_[idx(j)] == MotionPhase::rolling;
     if (!i_moves && !j_moves) return;
-    const double horizon =
-        std::min(time_[idx(i)] + transition_[idx(i)].time, time_[idx(j)] + transition_[idx(j)].time) - now_;
+    const double horizon = std::min(path_end_[idx(i)], path_end_[idx(j)]) - now_;
     const auto t = predict_contact(advance(path_[idx(i)], now_ - time_[idx(i)]),
                                    advance(path_[idx(j)], now_ - time_[idx(j)]), contact_, horizon);
     if (t) slot = {now_ + *t, EventType::ball_ball, i, j};
@@ -213,6 +226,8 @@ class Simulation {
   Candidate earliest() const {
     Candidate best;
     for (const Candidate& c : ball_next_)
+      if (earlier(c, best)) best = c;
+    for (const Candidate& c : transition_next_)
       if (earlier(c, best)) best = c;
     for (int i = 0; i < n_; ++i)
       for (int j = i + 1; j < n_; ++j) {
@@ -243,10 +258,22 @@ class Simulation {
     const int i = c.a;
     const std::size_t k = idx(i);
     switch (c.type) {
+      case EventType::spin_stop: {
+        // The path does not change when the vertical spin stops: every
+        // prediction stands; only the ball's own next transition is new.
+        state_[k] = evolve_in_phase(state_[k], phase_[k], transition_[k].time, p_);
+        record(EventType::spin_stop, i, -1);
+        time_[k] = now_;
+        phase_[k] = motion_phase(state_[k], p_);
+        transition_[k] = next_transition(state_[k], p_);
+        path_[k] = quadratic_path(state_[k], p_);
+        result_.balls[k].segments.push_back({now_, state_[k]});
+        predict_transition(i);
+        break;
+      }
       case EventType::slide_to_roll:
       case EventType::roll_to_rest:
-      case EventType::roll_to_spin:
-      case EventType::spin_stop: {
+      case EventType::roll_to_spin: {
         // Exactly the transition's own duration, so the state snaps onto the new phase.
         state_[k] = evolve_in_phase(state_[k], phase_[k], transition_[k].time, p_);
         EventType type = c.type;
@@ -381,6 +408,8 @@ class Simulation {
   std::vector<MotionPhase> phase_;
   std::vector<NextTransition> transition_;  // relative to time_
   std::vector<QuadraticPath> path_;         // from time_
+  std::vector<double> path_end_;            // absolute time the path changes (sliding or rolling ends)
+  std::vector<Candidate> transition_next_;
   double contact_ = 0.0;                    // 2R
   std::vector<char> active_;
   std::vector<Candidate> ball_next_;
@@ -456,6 +485,11 @@ void validate_simulation_input(const Table& table, const std::vector<SimulationB
 SimulationResult simulate(const Table& table, const std::vector<SimulationBall>& balls,
                           const SimulationSettings& settings) {
   validate_simulation_input(table, balls, settings);
+  return Simulation(table, balls, settings).run();
+}
+
+SimulationResult simulate_unchecked(const Table& table, const std::vector<SimulationBall>& balls,
+                                    const SimulationSettings& settings) {
   return Simulation(table, balls, settings).run();
 }
 

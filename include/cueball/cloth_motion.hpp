@@ -67,6 +67,11 @@ MotionPhase motion_phase(const BallState& s, const Parameters& p);
 /// Time until the equations of motion next change, and what changes.
 NextTransition next_transition(const BallState& s, const Parameters& p);
 
+/// Time until the ball's path changes: the end of sliding or of rolling,
+/// ignoring the vertical spin (which never affects the path); +infinity for a
+/// ball that is not translating. Event predictors use it as their horizon.
+double phase_end_time(const BallState& s, const Parameters& p);
+
 /// The state after `dt` seconds, assuming the ball stays in `phase` for the
 /// whole interval (0 <= dt <= the next transition's time). At dt equal to the
 /// transition time the result is snapped exactly onto the new phase (zero

@@ -118,4 +118,10 @@ void validate_simulation_input(const Table& table, const std::vector<SimulationB
 SimulationResult simulate(const Table& table, const std::vector<SimulationBall>& balls,
                           const SimulationSettings& settings);
 
+/// simulate() without validate_simulation_input(), for inner loops whose
+/// table, balls and settings already passed it (a batch re-striking one
+/// validated scenario). Invalid input here is undefined behaviour.
+SimulationResult simulate_unchecked(const Table& table, const std::vector<SimulationBall>& balls,
+                                    const SimulationSettings& settings);
+
 }  // namespace cueball

@@ -5,7 +5,15 @@
 // the paper's constants (e_e = 0.98, mu_w = 0.14).
 //
 // Counters:
-//   BM_CushionExact / BM_CushionPaper5000   us_per_impact, steps (mean), events (mean)
+//   BM_CushionExact / BM_CushionPaper5000   us_per_impact, steps (mean), events (mean),
+//                           through cushion_impact() (validates the table's
+//                           Parameters on every call)
+//   BM_CushionExactModel    the simulator's path: the model validated once,
+//                           solve_cushion_impact() per impact
+//   BM_CushionExactUnchecked   solve_cushion_impact_unchecked() per impact
+//   BM_CushionExactRolling  the model path on rolling balls only (topspin
+//                           K = 1, sidespin -2..2, alpha 1..90 deg): the
+//                           usual cushion hit in a game
 //   BM_CushionSpeedup       exact and paper timed back to back in one process
 //                           (CPU time): speedup = paper time / exact time over
 //                           the same grid
@@ -61,13 +69,36 @@ struct GridRun {
   double checksum = 0.0;
 };
 
-GridRun run_grid(const CushionImpactOptions& options) {
+const std::vector<IncomingBall>& rolling_grid() {
+  static const std::vector<IncomingBall> balls = [] {
+    const double radius = snooker_parameters().ball.radius;
+    const double v0 = 1.0;
+    std::vector<IncomingBall> out;
+    for (int alpha = 1; alpha <= 90; ++alpha) {
+      for (int s = -4; s <= 4; ++s) {  // sidespin K = s / 2
+        out.push_back(incoming_ball({v0, alpha * kDegree, v0 / radius, 0.5 * s * v0 / radius}));
+      }
+    }
+    return out;
+  }();
+  return balls;
+}
+
+// How an impact is solved: through cushion_impact() with the table's
+// Parameters, or with a validated model, checked or not.
+enum class Entry { table, model, unchecked };
+
+GridRun run_grid(const CushionImpactOptions& options, Entry entry = Entry::table,
+                 const std::vector<IncomingBall>& balls = grid()) {
   static const Parameters table = snooker_parameters();
   static const CushionParameters cushion = cushion_mathavan2010_paper_fit(table.ball);
+  static const CushionImpactModel model = cushion_impact_model(table, cushion);
   GridRun run;
   const std::clock_t start = std::clock();  // CPU time: robust to a busy machine
-  for (const IncomingBall& ball : grid()) {
-    const CushionImpactResult r = cushion_impact(ball, table, cushion, options);
+  for (const IncomingBall& ball : balls) {
+    const CushionImpactResult r = entry == Entry::table ? cushion_impact(ball, table, cushion, options)
+                                  : entry == Entry::model ? solve_cushion_impact(ball, model, options)
+                                                          : solve_cushion_impact_unchecked(ball, model, options);
     run.steps += r.solver_steps;
     run.events += r.solver_events;
     run.checksum += r.velocity.x + r.velocity.y;
@@ -83,30 +114,40 @@ CushionImpactOptions paper_options(int n) {
   return o;
 }
 
-void report(benchmark::State& state, const GridRun& total, int runs) {
-  const double impacts = static_cast<double>(grid().size()) * runs;
+void report(benchmark::State& state, const GridRun& total, int runs, std::size_t grid_size) {
+  const double impacts = static_cast<double>(grid_size) * runs;
   state.counters["us_per_impact"] = 1e6 * total.seconds / impacts;
   state.counters["steps"] = total.steps / impacts;
   state.counters["events"] = total.events / impacts;
   state.counters["impacts"] = benchmark::Counter(impacts, benchmark::Counter::kIsRate);
 }
 
-void run_solver(benchmark::State& state, const CushionImpactOptions& options) {
+void run_solver(benchmark::State& state, const CushionImpactOptions& options, Entry entry = Entry::table,
+                const std::vector<IncomingBall>& balls = grid()) {
   GridRun total;
   int runs = 0;
   for (auto _ : state) {
-    const GridRun r = run_grid(options);
+    const GridRun r = run_grid(options, entry, balls);
     benchmark::DoNotOptimize(r.checksum);
     total.seconds += r.seconds;
     total.steps += r.steps;
     total.events += r.events;
     ++runs;
   }
-  report(state, total, runs);
+  report(state, total, runs, balls.size());
 }
 
 void BM_CushionExact(benchmark::State& state) { run_solver(state, {}); }
 BENCHMARK(BM_CushionExact)->Unit(benchmark::kMillisecond);
+
+void BM_CushionExactModel(benchmark::State& state) { run_solver(state, {}, Entry::model); }
+BENCHMARK(BM_CushionExactModel)->Unit(benchmark::kMillisecond);
+
+void BM_CushionExactUnchecked(benchmark::State& state) { run_solver(state, {}, Entry::unchecked); }
+BENCHMARK(BM_CushionExactUnchecked)->Unit(benchmark::kMillisecond);
+
+void BM_CushionExactRolling(benchmark::State& state) { run_solver(state, {}, Entry::model, rolling_grid()); }
+BENCHMARK(BM_CushionExactRolling)->Unit(benchmark::kMillisecond);
 
 void BM_CushionPaper5000(benchmark::State& state) { run_solver(state, paper_options(5000)); }
 BENCHMARK(BM_CushionPaper5000)->Unit(benchmark::kMillisecond);

@@ -372,7 +372,7 @@ class Simulation {
     if (!(in.velocity.y > 0.0)) return s;  // grazing by round-off: nothing to exchange
     CushionImpactResult r;
     try {
-      r = solve_cushion_impact(in, model);
+      r = solve_cushion_impact_unchecked(in, model);  // models validated at construction
     } catch (const InfeasibleShot&) {
       // The model has no rebound: the ball wedges between cushion and bed
       // (normal velocity never reverses). Treated as a plastic contact.

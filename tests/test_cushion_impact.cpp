@@ -4,9 +4,11 @@
 // (spec 2.3) for both solvers; limits and laws of the model (frictionless
 // impact, rate independence, mirror symmetry, energy); the exact solver as
 // the N -> infinity limit of the paper scheme (first-order convergence and
-// Richardson extrapolation), an independent closed form for head-on impacts
-// (including sticking at the cushion); input validation; no allocation on
-// the default path.
+// Richardson extrapolation, also through a slip's close pass by zero and at
+// high speed and spin), an independent closed form for head-on impacts
+// (including sticking at the cushion); the conserved angular momentum about
+// the contact line; input validation and the unchecked entry point; no
+// allocation on the default path; the exact solver's step count.
 #include "cueball/cushion_impact.hpp"
 
 #include <gtest/gtest.h>
@@ -19,6 +21,7 @@
 #include <new>
 #include <string>
 #include <tuple>
+#include <utility>
 #include <vector>
 
 #include "cueball/errors.hpp"
@@ -498,11 +501,11 @@ TEST(CushionImpactConvergence, PaperSchemeConvergesToExactAtFirstOrder) {
 // The paper solver with its last Euler step interpolated onto the end of
 // restitution, W = (1 - e_e^2) W_c (16b), from the recorded history: this
 // removes the stopping jitter and leaves an error smooth in 1/N.
-CushionImpactResult paper_interpolated(const IncomingBall& b, int n) {
+CushionImpactResult paper_interpolated(const IncomingBall& b, int n, const CushionParameters& cushion = paper_fit()) {
   CushionImpactOptions o = options(CushionSolver::paper, n);
   o.record_history = true;
-  CushionImpactResult r = cushion_impact(b, table(), paper_fit(), o);
-  const double e = paper_fit().restitution;
+  CushionImpactResult r = cushion_impact(b, table(), cushion, o);
+  const double e = cushion.restitution;
   const double target = (1.0 - e * e) * r.compression_work;
   const CushionImpactSample& s0 = r.history[r.history.size() - 2];
   const CushionImpactSample& s1 = r.history.back();
@@ -677,6 +680,61 @@ TEST(CushionImpactConvergence, StickingAtTheCushionIsTheLimitOfEulerChatter) {
   EXPECT_LT(gap(euler, r), 2.5 * b.velocity.y / 1000000);
 }
 
+TEST(CushionImpactConvergence, SlipPassingCloseToZeroIsResolved) {
+  // The slip at C starts at 2.6e-3 V and turns through 180 degrees while it
+  // passes zero at 1.7e-5 V (it never reaches zero): a step that jumps over
+  // the turn sees the slip's component along its old direction change sign,
+  // and taking that for a zero (and setting the slip to zero) would be an
+  // error of 1e-5. The exact solver must resolve the pass instead.
+  IncomingBall b;
+  b.velocity = {0.016539759813010545, 0.64582368185882122, 0.0};
+  b.angular_velocity = {-24.537676952894408, 0.62841808773874797, 130.98690910436852};
+  const CushionImpactResult exact = cushion_impact(b, table(), paper_fit());
+  CushionImpactResult limit = paper_interpolated(b, 100000);
+  const CushionImpactResult fine = paper_interpolated(b, 200000);
+  limit.velocity = 2.0 * fine.velocity - limit.velocity;
+  limit.angular_velocity = 2.0 * fine.angular_velocity - limit.angular_velocity;
+  EXPECT_LT(gap(exact, limit), 1e-7);
+  EXPECT_EQ(exact.solver_events, 2);  // no slip reached zero
+}
+
+TEST(CushionImpactConvergence, RollingBallsMatchTheLimitOnOtherCushionHeights) {
+  // A rolling ball arrives with no slip at C; with h != 7R/5 the slip that
+  // starts there turns as it grows (its rate along X couples to the cushion's
+  // friction, 1 - 5 sin(theta)/2 != 0), and how its direction lags behind its
+  // slow manifold while it grows from zero decides the outcome to ~1e-6.
+  for (const double s : {0.3, 0.5}) {
+    CushionParameters cushion = paper_fit();
+    cushion.contact_height = radius() * (1.0 + s);
+    for (const auto& [a, ks] :
+         {std::pair{30.0, -1.5}, std::pair{50.0, 0.0}, std::pair{70.0, 1.5}, std::pair{85.0, 0.0}}) {
+      const IncomingBall b = ball(1.0, a, 1.0, ks);
+      const CushionImpactResult exact = cushion_impact(b, table(), cushion);
+      CushionImpactResult limit = paper_interpolated(b, 100000, cushion);
+      const CushionImpactResult fine = paper_interpolated(b, 200000, cushion);
+      limit.velocity = 2.0 * fine.velocity - limit.velocity;
+      limit.angular_velocity = 2.0 * fine.angular_velocity - limit.angular_velocity;
+      EXPECT_LT(gap(exact, limit), 1e-7) << "sin(theta) " << s << " alpha " << a << " sidespin " << ks;
+    }
+  }
+}
+
+TEST(CushionImpactConvergence, ExactMatchesTheLimitAtHighSpeedAndSpin) {
+  // The accuracy is relative to the largest velocity of the incoming ball
+  // (R x spin included): 1e-6 of it against the Richardson limit.
+  for (const auto& [a, kt, ks] :
+       {Case{12.0, 2.5, -2.5}, Case{41.0, -2.0, 3.0}, Case{67.0, 3.0, 1.5}, Case{85.0, 1.0, -3.0}}) {
+    const IncomingBall b = ball(2.4, a, kt, ks);
+    const CushionImpactResult exact = solve(b, CushionSolver::exact);
+    CushionImpactResult limit = paper_interpolated(b, 100000);
+    const CushionImpactResult fine = paper_interpolated(b, 200000);
+    limit.velocity = 2.0 * fine.velocity - limit.velocity;
+    limit.angular_velocity = 2.0 * fine.angular_velocity - limit.angular_velocity;
+    const double largest = 2.4 * std::max({1.0, std::abs(kt), std::abs(ks)});
+    EXPECT_LT(gap(exact, limit), 1e-6 * largest) << "alpha " << a << " topspin " << kt << " sidespin " << ks;
+  }
+}
+
 // ------------------------------------------------------------------ robustness and the hot path
 
 TEST(CushionImpact, ExactSolverIsRobustAndDeterministic) {
@@ -713,6 +771,61 @@ TEST(CushionImpact, ExactSolverIsRobustAndDeterministic) {
   }
 }
 
+TEST(CushionImpact, AngularMomentumAboutTheContactLineIsConserved) {
+  // Both contact forces act at points of the line through C and I, so the
+  // angular momentum about that line is constant: per unit mass and in the
+  // ball's frame, J = cos(theta) xG' + 2/5 R (cos(theta) wy + (1 + sin(theta)) wz)
+  // (from (14a), (14e), (14f), whatever the friction). Both solvers keep it.
+  const double s = 0.4;
+  const double c = std::sqrt(1.0 - s * s);
+  const double r = radius();
+  auto line_momentum = [&](Vec3 v, Vec3 w) { return c * v.x + 0.4 * r * (c * w.y + (1.0 + s) * w.z); };
+  for (const CushionSolver solver : kSolvers) {
+    for (const auto& [a, kt, ks] :
+         {Case{5.0, 1.0, 0.0}, Case{33.0, -1.0, 2.0}, Case{58.0, 2.0, -1.5}, Case{89.0, 0.0, 1.0}}) {
+      const IncomingBall b = ball(1.3, a, kt, ks);
+      const CushionImpactResult res = solve(b, solver);
+      const double before = line_momentum(b.velocity, b.angular_velocity);
+      EXPECT_NEAR(line_momentum(res.velocity, res.angular_velocity), before, 1e-12) << name(solver) << " alpha " << a;
+    }
+  }
+}
+
+TEST(CushionImpact, UncheckedSolveIsTheValidatedSolveWithoutTheChecks) {
+  const CushionImpactModel m = cushion_impact_model(table(), paper_fit());
+  for (const CushionSolver solver : kSolvers) {
+    for (const IncomingBall& b : {ball(1, 90, 1, 0), ball(1, 44, 0, 1), ball(2, 45, 1.5, 2), ball(0.7, 12, -1, -2)}) {
+      const CushionImpactResult checked = solve_cushion_impact(b, m, options(solver));
+      const CushionImpactResult unchecked = solve_cushion_impact_unchecked(b, m, options(solver));
+      EXPECT_EQ(unchecked.velocity, checked.velocity) << name(solver);
+      EXPECT_EQ(unchecked.angular_velocity, checked.angular_velocity) << name(solver);
+      EXPECT_EQ(unchecked.total_impulse, checked.total_impulse) << name(solver);
+      EXPECT_EQ(unchecked.solver_steps, checked.solver_steps) << name(solver);
+    }
+  }
+  // The checks stay with the validated entry point.
+  IncomingBall away = ball(1, 45, 1, 0);
+  away.velocity.y = -away.velocity.y;
+  expect_invalid("velocity.y", [&] { solve_cushion_impact(away, m); });
+}
+
+TEST(CushionImpact, ExactSolverTakesFewSteps) {
+  // The cost of an impact is its Runge-Kutta steps (see bench_cushion_impact):
+  // a guard against a change that multiplies them while the answers stay right.
+  double steps = 0.0;
+  int count = 0;
+  const CushionImpactModel m = cushion_impact_model(table(), paper_fit());
+  for (int a = 1; a <= 90; ++a) {
+    for (const double kt : {-1.0, 0.0, 1.0, 2.0}) {
+      for (const double ks : {-2.0, 0.0, 2.0}) {
+        steps += solve_cushion_impact(ball(1, a, kt, ks), m).solver_steps;
+        ++count;
+      }
+    }
+  }
+  EXPECT_LT(steps / count, 16.0);
+}
+
 TEST(CushionImpact, SolvingAValidatedModelDoesNotAllocate) {
   // The simulator's inner loop: the model validated once, then solved without
   // touching the heap (cushion_impact() also runs validate(Parameters)).
@@ -724,8 +837,10 @@ TEST(CushionImpact, SolvingAValidatedModelDoesNotAllocate) {
     for (const IncomingBall& b : balls) {
       const long before = g_allocations.load();
       const CushionImpactResult r = solve_cushion_impact(b, m, o);
+      const CushionImpactResult u = solve_cushion_impact_unchecked(b, m, o);
       EXPECT_EQ(g_allocations.load(), before) << name(s);
       EXPECT_TRUE(r.history.empty());
+      EXPECT_TRUE(u.history.empty());
     }
   }
 }

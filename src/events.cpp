@@ -67,6 +67,13 @@ bool hull_reaches_origin(const Hull& h, double reach) {
 
 }  // namespace
 
+bool predict_contact_possible(const QuadraticPath& a, const QuadraticPath& b, double contact, double horizon) {
+  if (!std::isfinite(horizon)) return true;
+  return hull_reaches_origin(bezier_hull(b.position - a.position, b.velocity - a.velocity,
+                                         b.acceleration - a.acceleration, horizon),
+                             contact);
+}
+
 QuadraticPath quadratic_path(const BallState& s, const Parameters& p) {
   return {s.position, s.velocity, phase_acceleration(s, p)};
 }

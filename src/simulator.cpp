@@ -88,6 +88,7 @@ class Simulation {
       jaw_models_.push_back(model_for(j.contact_height));
       jaw_distance_.push_back(j.radius + cushion_contact_distance(j.contact_height, p_.ball.radius));
     }
+    group_pockets_and_jaws();
     result_.balls.resize(balls.size());
     const auto n = balls.size();
     state_.resize(n);
@@ -144,6 +145,37 @@ class Simulation {
 
   std::size_t idx(int i) const { return static_cast<std::size_t>(i); }
 
+  // A pocket and the jaws nearest to it (jaws far from every pocket form
+  // groups of their own), with a circle containing all their contact circles.
+  struct PocketGroup {
+    int pocket = -1;
+    std::vector<std::size_t> jaws;
+    Vec2 centre;
+    double radius = 0.0;
+  };
+
+  void group_pockets_and_jaws() {
+    for (std::size_t q = 0; q < table_.pockets.size(); ++q)
+      groups_.push_back({static_cast<int>(q), {}, table_.pockets[q].centre, table_.pockets[q].radius});
+    for (std::size_t j = 0; j < table_.jaws.size(); ++j) {
+      const Vec2 c = table_.jaws[j].centre;
+      PocketGroup* nearest = nullptr;
+      for (PocketGroup& g : groups_)
+        if (g.pocket >= 0 && (!nearest || norm(c - g.centre) < norm(c - nearest->centre))) nearest = &g;
+      if (!nearest || norm(c - nearest->centre) > 0.3) {
+        groups_.push_back({-1, {j}, c, jaw_distance_[j]});
+        continue;
+      }
+      nearest->jaws.push_back(j);
+      nearest->radius = std::max(nearest->radius, norm(c - nearest->centre) + jaw_distance_[j]);
+    }
+  }
+
+  // Whether the path's hull over the horizon comes within `radius` of `centre`.
+  static bool reaches_circle(const QuadraticPath& s, Vec2 centre, double radius, double horizon) {
+    return predict_contact_possible({centre, {}, {}}, s, radius, horizon);
+  }
+
   // The ball's state at now_ (no transition lies between its last update and now_).
   BallState state_at_now(int i) const {
     return evolve_in_phase(state_[idx(i)], phase_[idx(i)], now_ - time_[idx(i)], p_);
@@ -198,13 +230,16 @@ class Simulation {
         consider(predict_line_contact(s, seg.start, seg.end, cushion_distance_[c], horizon),
                  EventType::ball_cushion, c);
       }
-      for (std::size_t j = 0; j < table_.jaws.size(); ++j) {
-        consider(predict_circle_contact(s, table_.jaws[j].centre, jaw_distance_[j], horizon),
-                 EventType::ball_jaw, j);
-      }
-      for (std::size_t q = 0; q < table_.pockets.size(); ++q) {
-        consider(predict_circle_contact(s, table_.pockets[q].centre, table_.pockets[q].radius, horizon),
-                 EventType::ball_pocket, q);
+      // Each pocket with its jaws sits inside one bounding circle: a path
+      // whose hull misses that circle meets none of them.
+      for (const PocketGroup& g : groups_) {
+        if (!reaches_circle(s, g.centre, g.radius, horizon)) continue;
+        for (std::size_t j : g.jaws)
+          consider(predict_circle_contact(s, table_.jaws[j].centre, jaw_distance_[j], horizon), EventType::ball_jaw, j);
+        if (g.pocket >= 0) {
+          const Pocket& q = table_.pockets[idx(g.pocket)];
+          consider(predict_circle_contact(s, q.centre, q.radius, horizon), EventType::ball_pocket, idx(g.pocket));
+        }
       }
     }
     ball_next_[k] = best;
@@ -403,6 +438,7 @@ class Simulation {
   double now_ = 0.0;
   std::vector<CushionImpactModel> cushion_models_, jaw_models_;
   std::vector<double> cushion_distance_, jaw_distance_;
+  std::vector<PocketGroup> groups_;
   std::vector<BallState> state_;  // state at time_
   std::vector<double> time_;
   std::vector<MotionPhase> phase_;

@@ -60,6 +60,10 @@ constexpr QuadraticPath advance(const QuadraticPath& q, double dt) {
 /// polynomial is solved.
 std::optional<double> predict_contact(const QuadraticPath& a, const QuadraticPath& b, double contact_distance,
                                       double horizon);
+/// The cheap test alone: false when the relative path's hull over [0, horizon]
+/// stays farther than contact_distance (no contact possible).
+bool predict_contact_possible(const QuadraticPath& a, const QuadraticPath& b, double contact_distance,
+                              double horizon);
 std::optional<double> predict_line_contact(const QuadraticPath& s, Vec2 start, Vec2 end, double contact_distance,
                                            double horizon);
 std::optional<double> predict_circle_contact(const QuadraticPath& s, Vec2 centre, double distance, double horizon);

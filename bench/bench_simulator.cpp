@@ -27,6 +27,17 @@ void run_shot(benchmark::State& st, const Scenario& s) {
 void BM_NineBallBreak(benchmark::State& st) { run_shot(st, default_scenario()); }
 BENCHMARK(BM_NineBallBreak)->Unit(benchmark::kMicrosecond);
 
+// The same break without re-validating the table and balls: what a batch or
+// a planner pays per shot once its scenario has been validated.
+void BM_NineBallBreakUnchecked(benchmark::State& st) {
+  const Scenario s = default_scenario();
+  const std::vector<SimulationBall> balls = balls_after_strike(s);
+  for (auto _ : st) benchmark::DoNotOptimize(simulate_unchecked(s.table, balls, s.settings).end_time);
+  st.counters["us_per_shot"] = benchmark::Counter(static_cast<double>(st.iterations()) * 1e-6,
+                                                  benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
+}
+BENCHMARK(BM_NineBallBreakUnchecked)->Unit(benchmark::kMicrosecond);
+
 // One ball around the table: struck hard with running side, several rails.
 void BM_OneBallCushions(benchmark::State& st) {
   static const Scenario s = scenario_from_json(R"({"table": "pool_9ft",

@@ -127,7 +127,43 @@ void validate_size(double length, double width, const std::string& prefix) {
   check(join(prefix, "width"), width, positive_up_to(kMaxTableSize, "m"), "playing surface, cushion nose to nose");
 }
 
+// Exactly the rules of validate_table() below, as numbers only: the
+// simulator validates its table on every call, and building each element's
+// field name there costs more than the checks. The detailed pass runs only
+// when this finds something wrong, and it names the field.
+bool table_plainly_valid(const Table& t) {
+  const auto in_bounds = [&](Vec2 p) {
+    return is_finite(p) && p.x >= -kPointMargin && p.x <= t.length + kPointMargin && p.y >= -kPointMargin &&
+           p.y <= t.width + kPointMargin;
+  };
+  const Range size = positive_up_to(kMaxTableSize, "m");
+  if (t.name.empty() || !size.contains(t.length) || !size.contains(t.width)) return false;
+  if (!closed(kMassRange.min, kMassRange.max, "").contains(t.ball.mass) ||
+      !closed(kRadiusRange.min, kRadiusRange.max, "").contains(t.ball.radius))
+    return false;
+  const Range height = contact_height_range(t.ball.radius);
+  const Range round = positive_up_to(kMaxRoundRadius, "m");
+  if (t.cushions.size() < 3) return false;
+  for (const CushionSegment& c : t.cushions) {
+    if (!in_bounds(c.start) || !in_bounds(c.end) || !(norm(c.end - c.start) >= kMinSegmentLength) ||
+        !height.contains(c.contact_height))
+      return false;
+  }
+  for (const JawArc& j : t.jaws)
+    if (!in_bounds(j.centre) || !round.contains(j.radius) || !height.contains(j.contact_height)) return false;
+  for (std::size_t i = 0; i < t.pockets.size(); ++i) {
+    const Pocket& p = t.pockets[i];
+    if (p.name.empty() || !in_bounds(p.centre) || !round.contains(p.radius)) return false;
+    for (std::size_t k = 0; k < i; ++k)
+      if (t.pockets[k].name == p.name) return false;
+  }
+  for (Vec2 d : t.diamonds)
+    if (!in_bounds(d)) return false;
+  return true;
+}
+
 void validate_table(const Table& t, const std::string& prefix) {
+  if (table_plainly_valid(t)) return;
   if (t.name.empty()) fail(join(prefix, "name"), join(prefix, "name") + " must not be empty");
   validate_size(t.length, t.width, prefix);
   validate_ball(t.ball, prefix);

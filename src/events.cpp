@@ -95,27 +95,35 @@ std::optional<double> predict_contact(const QuadraticPath& a, const QuadraticPat
   });
 }
 
-std::optional<double> predict_line_contact(const QuadraticPath& s, Vec2 start, Vec2 end, double contact_distance,
-                                           double horizon) {
-  const Vec2 along = end - start;
-  const double length = norm(along);
-  const Vec2 e = along / length;
-  const Vec2 n = perp(e);  // inward normal: the playing surface is on the left
+ContactLine contact_line(Vec2 start, Vec2 end, double contact_distance) {
+  const double length = norm(end - start);
+  const Vec2 e = (end - start) / length;
+  return {start, e, perp(e), length, contact_distance};  // the playing surface is on the left
+}
+
+std::optional<double> predict_line_contact(const QuadraticPath& s, const ContactLine& line, double horizon) {
+  const Vec2 n = line.normal;
   const Vec2 a = s.acceleration;
-  const std::array<double, 3> c{dot(n, s.position - start) - contact_distance, dot(n, s.velocity), 0.5 * dot(n, a)};
+  const Vec2 r0 = s.position - line.start;
+  const double d = line.contact_distance;
+  const std::array<double, 3> c{dot(n, r0) - d, dot(n, s.velocity), 0.5 * dot(n, a)};
   if (c[1] == 0.0 && c[2] == 0.0) return std::nullopt;  // not moving across the line
   if (std::isfinite(horizon)) {
     // The hull's points all stay on the table side of the contact line.
-    const Hull h = bezier_hull(s.position - start, s.velocity, a, horizon);
-    const double d = contact_distance;
+    const Hull h = bezier_hull(r0, s.velocity, a, horizon);
     if (dot(n, h.p0) > d && dot(n, h.p1) > d && dot(n, h.p2) > d) return std::nullopt;
   }
   const auto t = earliest_entering_root(c, horizon, [&](double tt) { return dot(n, s.velocity + tt * a); });
   if (!t) return std::nullopt;
-  const Vec2 r = s.position + *t * s.velocity + (0.5 * *t * *t) * a;
-  const double foot = dot(e, r - start);
-  if (foot < 0.0 || foot > length) return std::nullopt;  // beyond the segment: a jaw's business
+  const Vec2 r = r0 + *t * s.velocity + (0.5 * *t * *t) * a;
+  const double foot = dot(line.direction, r);
+  if (foot < 0.0 || foot > line.length) return std::nullopt;  // beyond the segment: a jaw's business
   return t;
+}
+
+std::optional<double> predict_line_contact(const QuadraticPath& s, Vec2 start, Vec2 end, double contact_distance,
+                                           double horizon) {
+  return predict_line_contact(s, contact_line(start, end, contact_distance), horizon);
 }
 
 std::optional<double> predict_circle_contact(const QuadraticPath& s, Vec2 centre, double distance, double horizon) {

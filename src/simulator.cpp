@@ -82,7 +82,7 @@ class Simulation {
       : table_(table), settings_(settings), p_(settings.parameters), n_(static_cast<int>(balls.size())) {
     for (const CushionSegment& c : table.cushions) {
       cushion_models_.push_back(model_for(c.contact_height));
-      cushion_distance_.push_back(cushion_contact_distance(c.contact_height, p_.ball.radius));
+      cushion_lines_.push_back(contact_line(c.start, c.end, cushion_contact_distance(c.contact_height, p_.ball.radius)));
     }
     for (const JawArc& j : table.jaws) {
       jaw_models_.push_back(model_for(j.contact_height));
@@ -225,11 +225,8 @@ class Simulation {
         const Candidate c{now_ + *t, type, i, static_cast<int>(index)};
         if (earlier(c, best)) best = c;
       };
-      for (std::size_t c = 0; c < table_.cushions.size(); ++c) {
-        const CushionSegment& seg = table_.cushions[c];
-        consider(predict_line_contact(s, seg.start, seg.end, cushion_distance_[c], horizon),
-                 EventType::ball_cushion, c);
-      }
+      for (std::size_t c = 0; c < cushion_lines_.size(); ++c)
+        consider(predict_line_contact(s, cushion_lines_[c], horizon), EventType::ball_cushion, c);
       // Each pocket with its jaws sits inside one bounding circle: a path
       // whose hull misses that circle meets none of them.
       for (const PocketGroup& g : groups_) {
@@ -437,7 +434,8 @@ class Simulation {
   int n_;
   double now_ = 0.0;
   std::vector<CushionImpactModel> cushion_models_, jaw_models_;
-  std::vector<double> cushion_distance_, jaw_distance_;
+  std::vector<ContactLine> cushion_lines_;
+  std::vector<double> jaw_distance_;
   std::vector<PocketGroup> groups_;
   std::vector<BallState> state_;  // state at time_
   std::vector<double> time_;

@@ -66,6 +66,18 @@ bool predict_contact_possible(const QuadraticPath& a, const QuadraticPath& b, do
                               double horizon);
 std::optional<double> predict_line_contact(const QuadraticPath& s, Vec2 start, Vec2 end, double contact_distance,
                                            double horizon);
+
+/// A straight cushion nose prepared once: unit direction, inward normal,
+/// length and the contact distance.
+struct ContactLine {
+  Vec2 start;
+  Vec2 direction;  ///< unit, start -> end
+  Vec2 normal;     ///< unit, inward: perp(direction)
+  double length = 0.0;
+  double contact_distance = 0.0;
+};
+ContactLine contact_line(Vec2 start, Vec2 end, double contact_distance);
+std::optional<double> predict_line_contact(const QuadraticPath& s, const ContactLine& line, double horizon);
 std::optional<double> predict_circle_contact(const QuadraticPath& s, Vec2 centre, double distance, double horizon);
 
 /// Earliest time in [0, horizon] at which balls a and b (same radius) touch

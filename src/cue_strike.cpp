@@ -29,13 +29,6 @@ bool cue_tip_offset_ok(double tip_height, const BallParameters& ball) {
 
 namespace {
 
-std::string number(double v) {
-  std::ostringstream os;
-  os.precision(10);
-  os << v;
-  return os.str();
-}
-
 // sqrt rather than std::hypot (several times slower): an overflow to infinity
 // for absurd offsets is still rejected as a miscue.
 double tip_offset(const CueStrike& s) {
@@ -58,7 +51,7 @@ void validate(const CueStrike& s, const BallParameters& ball, const CueParameter
   require_in_range("cue_mass", cue.mass, kMinCueMass, kMaxCueMass, "cue mass, kg");
   require_in_range("cue_tip_e", cue.tip_restitution, 0.0, 1.0, "cue tip-ball restitution");
   if (!(std::isfinite(s.speed) && s.speed > 0.0 && s.speed <= kMaxCueSpeed)) {
-    throw InvalidArgument("speed", s.speed, "(0, " + number(kMaxCueSpeed) + "] m/s", "cue speed at impact");
+    throw InvalidArgument("speed", s.speed, "(0, " + format_number(kMaxCueSpeed) + "] m/s", "cue speed at impact");
   }
   require_finite("aim", s.aim);
   if (!(std::isfinite(s.elevation) && s.elevation >= 0.0 && s.elevation < std::numbers::pi / 2)) {
@@ -71,7 +64,7 @@ void validate(const CueStrike& s, const BallParameters& ball, const CueParameter
   const double offset = tip_offset(s);
   if (!(offset <= miscue_limit(ball))) {
     throw InvalidArgument("tip offset", offset,
-                          "[0, " + number(kMiscueOffsetFraction) + " R] = [0, " + number(limit) + "] m",
+                          "[0, " + format_number(kMiscueOffsetFraction) + " R] = [0, " + format_number(limit) + "] m",
                           "sqrt(side_offset^2 + height_offset^2): beyond it the tip slips, a miscue");
   }
 }

@@ -5,18 +5,18 @@
 
 namespace cueball {
 
-namespace {
-
-std::string format_value(double v) {
+std::string format_number(double v) {
   std::ostringstream os;
   os.precision(10);
   os << v;
   return os.str();
 }
 
+namespace {
+
 std::string range_message(const std::string& field, double value, const std::string& allowed,
                           const std::string& meaning) {
-  std::string m = field + " = " + format_value(value) + " is " +
+  std::string m = field + " = " + format_number(value) + " is " +
                   (std::isfinite(value) ? "outside the allowed range " : "not a finite number; allowed: ") + allowed;
   if (!meaning.empty()) m += " (" + meaning + ")";
   return m;
@@ -36,7 +36,7 @@ InfeasibleShot::InfeasibleShot(std::string condition, const std::string& explana
 
 void require_in_range(const char* field, double value, double lo, double hi, const char* meaning) {
   if (!(std::isfinite(value) && value >= lo && value <= hi)) {
-    throw InvalidArgument(field, value, "[" + format_value(lo) + ", " + format_value(hi) + "]", meaning);
+    throw InvalidArgument(field, value, "[" + format_number(lo) + ", " + format_number(hi) + "]", meaning);
   }
 }
 

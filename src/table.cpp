@@ -48,13 +48,6 @@ constexpr double kMaxDiamondOffset = 0.5;       // m
 
 // ------------------------------------------------------------------ messages
 
-std::string format_number(double v) {
-  std::ostringstream os;
-  os.precision(10);
-  os << v;
-  return os.str();
-}
-
 std::string format_point(Vec2 p) {
   std::ostringstream os;
   os.precision(10);

@@ -36,6 +36,9 @@ class InfeasibleShot : public std::domain_error {
   std::string condition_;
 };
 
+/// A number as error messages show it (10 significant digits).
+std::string format_number(double value);
+
 /// Throws InvalidArgument unless lo <= value <= hi (and value is finite).
 void require_in_range(const char* field, double value, double lo, double hi, const char* meaning = "");
 

@@ -105,6 +105,47 @@ TEST(Simulator, RandomBreaksStayPhysicalAtEveryEvent) {
   EXPECT_GT(events, shots * 20);
 }
 
+// The same invariants on the other tables and racks: snooker and 8-ball
+// breaks, and random three-ball shots (any aim, raised cue) on pool and carom.
+TEST(Simulator, OtherTablesAndRacksStayPhysicalAtEveryEvent) {
+  std::mt19937_64 rng(31);
+  // Offsets within +-0.35 R on each axis stay inside the 0.5 R miscue limit.
+  std::uniform_real_distribution<double> speed(0.5, 11.0), aim(-180.0, 180.0), offset(-0.35, 0.35), elevation(0.0, 25.0);
+  int simulated = 0;
+  const auto check = [&simulated](const std::string& json) {
+    SCOPED_TRACE(json);
+    Scenario s;
+    try {
+      s = scenario_from_json(json);
+    } catch (const InvalidArgument& e) {
+      ADD_FAILURE() << e.what();
+      return;
+    }
+    const SimulationResult r = run_scenario(s);
+    expect_physical_at_every_event(s.table, r, s.settings.parameters);
+    ++simulated;
+  };
+  char json[512];
+  for (int shot = 0; shot < 12; ++shot) {
+    const double v = speed(rng), side = offset(rng), height = offset(rng);
+    std::snprintf(json, sizeof json,
+                  R"({"table": "%s", "rack": {"type": "%s", "gap_sigma": 0.0002, "seed": %d},
+                      "cue": {"ball": 0, "target": 1, "speed": %.4f, "side": %.4f, "height": %.4f}})",
+                  shot % 2 ? "snooker_12ft" : "pool_9ft", shot % 2 ? "snooker" : "eight_ball", shot, v, side, height);
+    check(json);
+  }
+  for (int shot = 0; shot < 40; ++shot) {
+    const double v = speed(rng), a = aim(rng), side = offset(rng), height = offset(rng), e = elevation(rng);
+    std::snprintf(json, sizeof json,
+                  R"({"table": "%s", "balls": [{"id": 0, "position": [0.7, 0.5]}, {"id": 1, "position": [1.3, 0.7]},
+                                               {"id": 2, "position": [1.9, 0.9]}],
+                      "cue": {"ball": 0, "aim_deg": %.4f, "speed": %.4f, "side": %.4f, "height": %.4f, "elevation_deg": %.3f}})",
+                  shot % 2 ? "carom_10ft" : "pool_9ft", a, v, side, height, e);
+    check(json);
+  }
+  EXPECT_EQ(simulated, 52);
+}
+
 TEST(Simulator, SameInputGivesBitIdenticalOutput) {
   const Scenario s = default_scenario();
   const SimulationResult a = run_scenario(s);

@@ -516,6 +516,16 @@ CushionImpactResult paper_interpolated(const IncomingBall& b, int n, const Cushi
   return r;
 }
 
+// The N -> infinity limit of the paper scheme by Richardson extrapolation of
+// the first-order error: 2 x(2N) - x(N), with N = 1e5 (velocities and spins).
+CushionImpactResult richardson_limit(const IncomingBall& b, const CushionParameters& cushion = paper_fit()) {
+  CushionImpactResult limit = paper_interpolated(b, 100000, cushion);
+  const CushionImpactResult fine = paper_interpolated(b, 200000, cushion);
+  limit.velocity = 2.0 * fine.velocity - limit.velocity;
+  limit.angular_velocity = 2.0 * fine.angular_velocity - limit.angular_velocity;
+  return limit;
+}
+
 TEST(CushionImpactConvergence, ExactMatchesTheRichardsonLimitOfThePaperScheme) {
   // 2 x(2N) - x(N) estimates the N -> infinity limit; exact must be within
   // 1e-6 m/s (velocity and R x spin) and 1e-4 deg of it. (Head-on impacts
@@ -525,10 +535,7 @@ TEST(CushionImpactConvergence, ExactMatchesTheRichardsonLimitOfThePaperScheme) {
     for (const auto& [kt, ks] : {Spin{1.0, 0.0}, Spin{0.0, 1.0}, Spin{-1.0, -1.5}, Spin{2.0, 2.0}}) {
       const IncomingBall b = ball(1.0, a, kt, ks);
       const CushionImpactResult exact = solve(b, CushionSolver::exact);
-      CushionImpactResult limit = paper_interpolated(b, 100000);
-      const CushionImpactResult fine = paper_interpolated(b, 200000);
-      limit.velocity = 2.0 * fine.velocity - limit.velocity;
-      limit.angular_velocity = 2.0 * fine.angular_velocity - limit.angular_velocity;
+      const CushionImpactResult limit = richardson_limit(b);
       EXPECT_LT(gap(exact, limit), 1e-6) << "alpha " << a << " topspin " << kt << " sidespin " << ks;
       EXPECT_LT(std::abs(exact.rebound_angle - std::atan2(-limit.velocity.y, limit.velocity.x)) / kDeg, 1e-4) << a;
     }
@@ -690,10 +697,7 @@ TEST(CushionImpactConvergence, SlipPassingCloseToZeroIsResolved) {
   b.velocity = {0.016539759813010545, 0.64582368185882122, 0.0};
   b.angular_velocity = {-24.537676952894408, 0.62841808773874797, 130.98690910436852};
   const CushionImpactResult exact = cushion_impact(b, table(), paper_fit());
-  CushionImpactResult limit = paper_interpolated(b, 100000);
-  const CushionImpactResult fine = paper_interpolated(b, 200000);
-  limit.velocity = 2.0 * fine.velocity - limit.velocity;
-  limit.angular_velocity = 2.0 * fine.angular_velocity - limit.angular_velocity;
+  const CushionImpactResult limit = richardson_limit(b);
   EXPECT_LT(gap(exact, limit), 1e-7);
   EXPECT_EQ(exact.solver_events, 2);  // no slip reached zero
 }
@@ -710,10 +714,7 @@ TEST(CushionImpactConvergence, RollingBallsMatchTheLimitOnOtherCushionHeights) {
          {std::pair{30.0, -1.5}, std::pair{50.0, 0.0}, std::pair{70.0, 1.5}, std::pair{85.0, 0.0}}) {
       const IncomingBall b = ball(1.0, a, 1.0, ks);
       const CushionImpactResult exact = cushion_impact(b, table(), cushion);
-      CushionImpactResult limit = paper_interpolated(b, 100000, cushion);
-      const CushionImpactResult fine = paper_interpolated(b, 200000, cushion);
-      limit.velocity = 2.0 * fine.velocity - limit.velocity;
-      limit.angular_velocity = 2.0 * fine.angular_velocity - limit.angular_velocity;
+      const CushionImpactResult limit = richardson_limit(b, cushion);
       EXPECT_LT(gap(exact, limit), 1e-7) << "sin(theta) " << s << " alpha " << a << " sidespin " << ks;
     }
   }
@@ -726,10 +727,7 @@ TEST(CushionImpactConvergence, ExactMatchesTheLimitAtHighSpeedAndSpin) {
        {Case{12.0, 2.5, -2.5}, Case{41.0, -2.0, 3.0}, Case{67.0, 3.0, 1.5}, Case{85.0, 1.0, -3.0}}) {
     const IncomingBall b = ball(2.4, a, kt, ks);
     const CushionImpactResult exact = solve(b, CushionSolver::exact);
-    CushionImpactResult limit = paper_interpolated(b, 100000);
-    const CushionImpactResult fine = paper_interpolated(b, 200000);
-    limit.velocity = 2.0 * fine.velocity - limit.velocity;
-    limit.angular_velocity = 2.0 * fine.angular_velocity - limit.angular_velocity;
+    const CushionImpactResult limit = richardson_limit(b);
     const double largest = 2.4 * std::max({1.0, std::abs(kt), std::abs(ks)});
     EXPECT_LT(gap(exact, limit), 1e-6 * largest) << "alpha " << a << " topspin " << kt << " sidespin " << ks;
   }

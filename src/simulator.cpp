@@ -76,6 +76,37 @@ struct ImpactFrame {
   Vec2 from_frame(Vec3 v) const { return v.x * x + v.y * y; }
 };
 
+// An axis-aligned box bounding a path over an interval (or a cushion's
+// reach): a few comparisons reject most candidate contacts before any
+// polynomial is formed.
+struct Box {
+  Vec2 lo, hi;
+};
+
+// The box of a quadratic path over [0, horizon]: the box of its Bezier
+// control points, which contain the path (convex hull property). A ball that
+// is not translating has horizon +infinity and a zero path: its position.
+Box path_box(const QuadraticPath& s, double horizon) {
+  if (!std::isfinite(horizon)) {
+    if (s.velocity == Vec2{} && s.acceleration == Vec2{}) return {s.position, s.position};
+    constexpr double inf = std::numeric_limits<double>::infinity();
+    return {{-inf, -inf}, {inf, inf}};
+  }
+  const Vec2 p1 = s.position + (0.5 * horizon) * s.velocity;
+  const Vec2 p2 = s.position + horizon * s.velocity + (0.5 * horizon * horizon) * s.acceleration;
+  return {{std::min({s.position.x, p1.x, p2.x}), std::min({s.position.y, p1.y, p2.y})},
+          {std::max({s.position.x, p1.x, p2.x}), std::max({s.position.y, p1.y, p2.y})}};
+}
+
+// True when the boxes come within `gap` of each other.
+bool boxes_within(const Box& a, const Box& b, double gap) {
+  return a.lo.x - gap <= b.hi.x && b.lo.x - gap <= a.hi.x && a.lo.y - gap <= b.hi.y && b.lo.y - gap <= a.hi.y;
+}
+
+// Slack added to every box test so that rounding in the boxes can never
+// reject a contact the polynomial would find (a contact is found to ~1e-15 m).
+constexpr double kBoxSlack = 1e-9;
+
 class Simulation {
  public:
   Simulation(const Table& table, const std::vector<SimulationBall>& balls, const SimulationSettings& settings)
@@ -83,6 +114,11 @@ class Simulation {
     for (const CushionSegment& c : table.cushions) {
       cushion_models_.push_back(model_for(c.contact_height));
       cushion_lines_.push_back(contact_line(c.start, c.end, cushion_contact_distance(c.contact_height, p_.ball.radius)));
+      // A ball centre touching this cushion lies within the contact distance
+      // of the segment.
+      const double d = cushion_lines_.back().contact_distance + kBoxSlack;
+      cushion_boxes_.push_back({{std::min(c.start.x, c.end.x) - d, std::min(c.start.y, c.end.y) - d},
+                                {std::max(c.start.x, c.end.x) + d, std::max(c.start.y, c.end.y) + d}});
     }
     for (const JawArc& j : table.jaws) {
       jaw_models_.push_back(model_for(j.contact_height));
@@ -97,6 +133,7 @@ class Simulation {
     transition_.resize(n);
     path_.resize(n);
     path_end_.resize(n);
+    path_box_.resize(n);
     transition_next_.resize(n);
     contact_ = 2.0 * p_.ball.radius;
     active_.assign(n, 1);
@@ -188,6 +225,7 @@ class Simulation {
     transition_[k] = next_transition(state_[k], p_);
     path_[k] = quadratic_path(state_[k], p_);
     path_end_[k] = now_ + phase_end_time(state_[k], p_);
+    path_box_[k] = path_box(path_[k], path_end_[k] - now_);
     result_.balls[k].segments.push_back({now_, state_[k]});
   }
 
@@ -225,11 +263,15 @@ class Simulation {
         const Candidate c{now_ + *t, type, i, static_cast<int>(index)};
         if (earlier(c, best)) best = c;
       };
-      for (std::size_t c = 0; c < cushion_lines_.size(); ++c)
+      const Box& reach = path_box_[k];
+      for (std::size_t c = 0; c < cushion_lines_.size(); ++c) {
+        if (!boxes_within(reach, cushion_boxes_[c], 0.0)) continue;
         consider(predict_line_contact(s, cushion_lines_[c], horizon), EventType::ball_cushion, c);
+      }
       // Each pocket with its jaws sits inside one bounding circle: a path
       // whose hull misses that circle meets none of them.
       for (const PocketGroup& g : groups_) {
+        if (!boxes_within(reach, {g.centre, g.centre}, g.radius + kBoxSlack)) continue;
         if (!reaches_circle(s, g.centre, g.radius, horizon)) continue;
         for (std::size_t j : g.jaws)
           consider(predict_circle_contact(s, table_.jaws[j].centre, jaw_distance_[j], horizon), EventType::ball_jaw, j);
@@ -249,6 +291,9 @@ class Simulation {
     const bool i_moves = phase_[idx(i)] == MotionPhase::sliding || phase_[idx(i)] == MotionPhase::rolling;
     const bool j_moves = phase_[idx(j)] == MotionPhase::sliding || phase_[idx(j)] == MotionPhase::rolling;
     if (!i_moves && !j_moves) return;
+    // Each box holds its ball's path until the path changes, which bounds
+    // the pair's horizon: boxes apart by more than 2R rule contact out.
+    if (!boxes_within(path_box_[idx(i)], path_box_[idx(j)], contact_ + kBoxSlack)) return;
     const double horizon = std::min(path_end_[idx(i)], path_end_[idx(j)]) - now_;
     const auto t = predict_contact(advance(path_[idx(i)], now_ - time_[idx(i)]),
                                    advance(path_[idx(j)], now_ - time_[idx(j)]), contact_, horizon);
@@ -276,9 +321,11 @@ class Simulation {
       check_on_table(i);
     }
     for (int i : changed) predict_ball(i);
-    for (int i : changed)
+    const int* first = changed.begin();
+    for (const int* i = first; i != changed.end(); ++i)
       for (int j = 0; j < n_; ++j) {
-        if (j != i) predict_pair(std::min(i, j), std::max(i, j));
+        // A pair of two changed balls is predicted once, with the first.
+        if (j != *i && std::find(first, i, j) == i) predict_pair(std::min(*i, j), std::max(*i, j));
       }
   }
 
@@ -443,6 +490,8 @@ class Simulation {
   std::vector<NextTransition> transition_;  // relative to time_
   std::vector<QuadraticPath> path_;         // from time_
   std::vector<double> path_end_;            // absolute time the path changes (sliding or rolling ends)
+  std::vector<Box> path_box_;               // bounds path_ from time_ to path_end_
+  std::vector<Box> cushion_boxes_;          // where a ball centre can touch each cushion
   std::vector<Candidate> transition_next_;
   double contact_ = 0.0;                    // 2R
   std::vector<char> active_;

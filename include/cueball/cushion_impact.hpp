@@ -27,7 +27,7 @@
 //          (e_e = 0.98, mu_w = 0.14) were fitted with it.
 //   exact  the same model without discretisation error, i.e. the N -> infinity
 //          limit of `paper` (checked against its Richardson extrapolation, to
-//          ~1e-7 of the largest incoming velocity or R x spin): event-driven
+//          ~2e-7 of the largest incoming velocity or R x spin): event-driven
 //          (a slip reaching zero, a stick breaking; the ends of compression
 //          and restitution located on the way), each contact slipping or
 //          sticking (the friction that holds it, while inside its cone),

@@ -3,7 +3,9 @@
 #   ./build.sh demo   install what is missing, build (Release), run the main job
 #   ./build.sh test   the same, then every test (Release), then the whole suite
 #                     again under AddressSanitizer + UndefinedBehaviorSanitizer,
-#                     then a bounded libFuzzer run of the scenario and table readers
+#                     then a bounded libFuzzer run of the scenario and table readers;
+#                     the Release suite includes the HTML viewer's tests in
+#                     headless Chromium (viewer/, npm packages from its lockfile)
 set -euo pipefail
 cd "$(dirname "$0")"
 mode=${1:-demo}
@@ -11,6 +13,8 @@ mode=${1:-demo}
 packages=(g++ cmake ninja-build libgtest-dev libgmock-dev libbenchmark-dev nlohmann-json3-dev libcli11-dev gnuplot-nox)
 if [[ "$mode" == test ]]; then
   packages+=(clang-14 libclang-rt-14-dev llvm-14)  # libFuzzer (libclang_rt.fuzzer) and readable traces
+  packages+=(chromium)                             # the viewer's end-to-end tests
+  command -v npm >/dev/null || packages+=(nodejs npm)
 fi
 missing=()
 for p in "${packages[@]}"; do
@@ -24,8 +28,8 @@ if ((${#missing[@]})); then
 fi
 
 jobs=$(nproc)
-build() {  # build <preset>
-  cmake --preset "$1" >/dev/null
+build() {  # build <preset> [cmake -D options]
+  cmake --preset "$@" >/dev/null
   cmake --build --preset "$1" -j "$jobs"
 }
 
@@ -33,11 +37,12 @@ case "$mode" in
   demo)
     build release
     bin=build/release/cueball
-    echo "== cueball simulate: the built-in 9-ball break, event by event (result in build/break.json)"
-    "$bin" simulate -o build/break.json
+    echo "== cueball simulate: the built-in 9-ball break (result in build/break.json, viewer page build/break.html)"
+    "$bin" simulate -o build/break.json --html build/break.html
     ;;
   test)
-    build release
+    (cd viewer && npm ci --no-audit --no-fund --loglevel=error)
+    build release -DCUEBALL_VIEWER_TESTS=ON
     ctest --preset release
     build asan
     ctest --preset asan

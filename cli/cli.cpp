@@ -2,6 +2,8 @@
 
 #include <cmath>
 #include <cstdio>
+#include <fstream>
+#include <sstream>
 #include <ostream>
 #include <vector>
 
@@ -30,6 +32,20 @@ std::string flag_for_field(const std::string& field) {
   std::string flag = "--";
   for (char c : field) flag += (c == '_' ? '-' : c);
   return flag;
+}
+
+std::string read_text_file(const std::string& path, const std::string& what) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw UsageError(path + ": cannot open " + what);
+  std::ostringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+void write_text_file(const std::string& path, std::string_view text, const std::string& flag, const std::string& what) {
+  std::ofstream file(path, std::ios::binary);
+  if (!file || !file.write(text.data(), static_cast<std::streamsize>(text.size())) || !file.flush())
+    throw UsageError(flag + " " + path + ": cannot write " + what);
 }
 
 void check_flag(const char* flag, double value, double lo, double hi, const char* meaning) {
@@ -97,6 +113,7 @@ int run(int argc, const char* const* argv, std::ostream& out, std::ostream& err)
   add("fit-cushion", add_fit_cushion_command(app));
   add("simulate", add_simulate_command(app));
   add("batch", add_batch_command(app));
+  add("view", add_view_command(app));
 
   if (argc > 1 && argv[1][0] != '-') {
     std::string names;

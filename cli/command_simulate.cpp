@@ -12,20 +12,15 @@
 #include "cueball/batch.hpp"
 #include "cueball/errors.hpp"
 #include "cueball/scenario.hpp"
+#include "viewer_page.hpp"
 
 namespace cueball::cli {
 
 namespace {
 
-std::string read_file(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw UsageError(path + ": cannot open the scenario file");
-  std::ostringstream text;
-  text << in.rdbuf();
-  return text.str();
+Scenario load_scenario(const std::string& path) {
+  return path.empty() ? default_scenario() : scenario_from_json(read_text_file(path, "the scenario file"));
 }
-
-Scenario load_scenario(const std::string& path) { return path.empty() ? default_scenario() : scenario_from_json(read_file(path)); }
 
 std::string fixed(double v, int decimals = 3) {
   char buf[32];
@@ -53,11 +48,10 @@ void run_simulate(const SimulateFlags& f, std::ostream& out, std::ostream& err) 
     throw std::runtime_error(std::string("simulation stopped: ") + e.what());
   }
   const std::string json = result_to_json(s, r, f.sample);
-  if (!f.output.empty()) {
-    std::ofstream file(f.output, std::ios::binary);
-    if (!file) throw UsageError("-o " + f.output + ": cannot write the result file");
-    file << json << '\n';
-  }
+  if (!f.output.empty()) write_text_file(f.output, json + '\n', "-o", "the result file");
+  if (!f.html.empty())
+    write_text_file(f.html, viewer_page(viewer_template(), checked_result_for_viewer("simulate", json)), "--html",
+                    "the viewer page");
   if (f.json) {
     out << json << '\n';
     return;
@@ -78,6 +72,7 @@ void run_simulate(const SimulateFlags& f, std::ostream& out, std::ostream& err) 
     out << line;
   }
   if (!f.output.empty()) out << "  result written to " << f.output << '\n';
+  if (!f.html.empty()) out << "  viewer written to " << f.html << " (open it in a browser)\n";
   (void)err;
 }
 
@@ -162,6 +157,7 @@ Command add_simulate_command(CLI::App& app) {
       "full result (events, final states, trajectory segments), --json prints it.");
   sub->add_option("scenario", flags->scenario, "Scenario JSON file (default: the built-in 9-ball break)");
   sub->add_option("-o,--output", flags->output, "Write the result JSON to this file");
+  sub->add_option("--html", flags->html, "Write the shot as a self-contained HTML viewer page to this file");
   sub->add_option("--sample", flags->sample, "Also sample every ball's state at this rate, Hz");
   sub->add_flag("--json", flags->json, "Print the result JSON instead of the summary");
   return [flags](std::ostream& out, std::ostream& err) { run_simulate(*flags, out, err); };

@@ -6,6 +6,7 @@
 #include <optional>
 #include <stdexcept>
 #include <string>
+#include <string_view>
 
 #include <CLI/CLI.hpp>
 
@@ -37,6 +38,11 @@ Parameters resolve_parameters(const ParameterFlags& flags);
 /// unless value is finite and within [lo, hi].
 void check_flag(const char* flag, double value, double lo, double hi, const char* meaning);
 
+/// The whole file; throws UsageError "PATH: cannot open WHAT".
+std::string read_text_file(const std::string& path, const std::string& what);
+/// Writes (replaces) the file; throws UsageError "FLAG PATH: cannot write WHAT".
+void write_text_file(const std::string& path, std::string_view text, const std::string& flag, const std::string& what);
+
 /// The CLI flag that sets a library field ("mu_s" -> "--mu-s").
 std::string flag_for_field(const std::string& field);
 
@@ -50,6 +56,7 @@ Command add_figures_command(CLI::App& app);
 Command add_fit_cushion_command(CLI::App& app);
 Command add_simulate_command(CLI::App& app);
 Command add_batch_command(CLI::App& app);
+Command add_view_command(CLI::App& app);
 
 /// Prints the report, then its warnings on stderr.
 void emit(const Report& report, bool json, std::ostream& out, std::ostream& err);

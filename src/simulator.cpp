@@ -138,7 +138,7 @@ class Simulation {
     contact_ = 2.0 * p_.ball.radius;
     active_.assign(n, 1);
     ball_next_.resize(n);
-    pair_next_.resize(n * n);
+    pair_next_.resize(n == 0 ? 0 : n * (n - 1) / 2);
     for (std::size_t i = 0; i < n; ++i) {
       result_.balls[i].id = balls[i].id;
       result_.balls[i].name = balls[i].name;
@@ -284,8 +284,13 @@ class Simulation {
     ball_next_[k] = best;
   }
 
+  // Pairs i < j row by row: (0,1) (0,2) ... (0,n-1) (1,2) ...
+  std::size_t pair_index(int i, int j) const {
+    return idx(i) * (2 * idx(n_) - idx(i) - 1) / 2 + idx(j - i - 1);
+  }
+
   void predict_pair(int i, int j) {
-    Candidate& slot = pair_next_[idx(i) * idx(n_) + idx(j)];
+    Candidate& slot = pair_next_[pair_index(i, j)];
     slot = {};
     if (!active_[idx(i)] || !active_[idx(j)]) return;
     const bool i_moves = phase_[idx(i)] == MotionPhase::sliding || phase_[idx(i)] == MotionPhase::rolling;
@@ -306,11 +311,8 @@ class Simulation {
       if (earlier(c, best)) best = c;
     for (const Candidate& c : transition_next_)
       if (earlier(c, best)) best = c;
-    for (int i = 0; i < n_; ++i)
-      for (int j = i + 1; j < n_; ++j) {
-        const Candidate& c = pair_next_[idx(i) * idx(n_) + idx(j)];
-        if (earlier(c, best)) best = c;
-      }
+    for (const Candidate& c : pair_next_)
+      if (earlier(c, best)) best = c;
     return best;
   }
 
@@ -496,7 +498,7 @@ class Simulation {
   double contact_ = 0.0;                    // 2R
   std::vector<char> active_;
   std::vector<Candidate> ball_next_;
-  std::vector<Candidate> pair_next_;  // [i * n + j], i < j
+  std::vector<Candidate> pair_next_;  // [pair_index(i, j)], i < j
   SimulationResult result_;
 };
 

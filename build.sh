@@ -10,7 +10,7 @@ set -euo pipefail
 cd "$(dirname "$0")"
 mode=${1:-demo}
 
-packages=(g++ cmake ninja-build libgtest-dev libgmock-dev libbenchmark-dev nlohmann-json3-dev libcli11-dev gnuplot-nox)
+packages=(g++ cmake ninja-build libgtest-dev libgmock-dev libbenchmark-dev nlohmann-json3-dev libcli11-dev gnuplot-nox pybind11-dev python3-dev)
 if [[ "$mode" == test ]]; then
   packages+=(clang-14 libclang-rt-14-dev llvm-14)  # libFuzzer (libclang_rt.fuzzer) and readable traces
   packages+=(chromium)                             # the viewer's end-to-end tests
@@ -35,14 +35,14 @@ build() {  # build <preset> [cmake -D options]
 
 case "$mode" in
   demo)
-    build release
+    build release -DCUEBALL_BUILD_PYTHON=ON
     bin=build/release/cueball
     echo "== cueball simulate: the built-in 9-ball break (result in build/break.json, viewer page build/break.html)"
     "$bin" simulate -o build/break.json --html build/break.html
     ;;
   test)
     (cd viewer && npm ci --no-audit --no-fund --loglevel=error)
-    build release -DCUEBALL_VIEWER_TESTS=ON
+    build release -DCUEBALL_VIEWER_TESTS=ON -DCUEBALL_BUILD_PYTHON=ON
     ctest --preset release
     build asan
     ctest --preset asan

@@ -612,18 +612,25 @@ void reject_non_finite(const py::handle& value, const std::string& path) {
 }
 
 // The scenario's JSON text, or nothing for the built-in 9-ball break.
-// Accepts None, JSON text (str), a dict (serialised with Python's json
-// module) or a path (os.PathLike) to a scenario file.
+// Accepts None, a dict (serialised with Python's json module), a str that is
+// JSON text (a scenario is an object: its first non-blank character is '{')
+// or else a file's path, or a path (os.PathLike).
 std::optional<std::string> scenario_text(const py::object& scenario) {
   if (scenario.is_none()) return std::nullopt;
-  if (py::isinstance<py::str>(scenario)) return scenario.cast<std::string>();
-  if (py::isinstance(scenario, py::module_::import("os").attr("PathLike")))
-    return py::module_::import("pathlib").attr("Path")(scenario).attr("read_text")().cast<std::string>();
+  const auto read = [](const py::object& path) {
+    return py::module_::import("pathlib").attr("Path")(path).attr("read_text")().cast<std::string>();
+  };
+  if (py::isinstance<py::str>(scenario)) {
+    std::string text = scenario.cast<std::string>();
+    const std::size_t first = text.find_first_not_of(" \t\r\n");
+    return first != std::string::npos && text[first] == '{' ? text : read(scenario);
+  }
+  if (py::isinstance(scenario, py::module_::import("os").attr("PathLike"))) return read(scenario);
   if (py::isinstance<py::dict>(scenario)) {
     reject_non_finite(scenario, "scenario");
     return py::module_::import("json").attr("dumps")(scenario).cast<std::string>();
   }
-  throw py::type_error("scenario must be None (the built-in 9-ball break), JSON text (str), a dict or a path");
+  throw py::type_error("scenario must be None (the built-in 9-ball break), a dict, JSON text, or a path (str or os.PathLike)");
 }
 
 cueball::Scenario load_scenario(const std::optional<std::string>& text) {
@@ -672,7 +679,8 @@ void bind_whole_shots(py::module_& m) {
       "the result as `cueball simulate --json` prints it (json.loads of it): table, parameters,\n"
       "end_time, events, balls (final states, pocketing, trajectory segments) and, with\n"
       "sample_rate > 0 (Hz), samples. scenario: None (the built-in 9-ball break), the scenario's\n"
-      "JSON text, a dict of the same, or a path (pathlib.Path) to a scenario file; see the README's\n"
+      "JSON text (a str starting with '{'), a dict of the same, or a path (any other str, or a\n"
+      "pathlib.Path) to a scenario file; see the README's\n"
       "'Scenario format'. Releases the GIL while simulating.");
   m.def(
       "simulate_batch",

@@ -372,6 +372,8 @@ class SimulateTest(unittest.TestCase):
         from_text = cueball.simulate(text)
         self.assertEqual(cueball.simulate(json.loads(text)), from_text)
         self.assertEqual(cueball.simulate(CUT_SHOT), from_text)
+        self.assertEqual(cueball.simulate(str(CUT_SHOT)), from_text)  # a str that is not JSON is a path
+        self.assertEqual(cueball.simulate("  \n" + text), from_text)  # JSON text after blanks
         self.assertEqual(cueball.simulate(text), from_text)  # bit-identical rerun
         pockets = {b["name"]: b["pocket"] for b in from_text["balls"]}
         self.assertEqual(pockets["1"], "top-right")

@@ -139,7 +139,11 @@ class Simulation {
     active_.assign(n, 1);
     ball_next_.resize(n);
     pair_next_.resize(n == 0 ? 0 : n * (n - 1) / 2);
+    // Room for a typical shot's events and segments (a break has ~100
+    // events, ~10 segments a ball): the vectors rarely grow.
+    result_.events.reserve(16 * n);
     for (std::size_t i = 0; i < n; ++i) {
+      result_.balls[i].segments.reserve(16);
       result_.balls[i].id = balls[i].id;
       result_.balls[i].name = balls[i].name;
       state_[i] = balls[i].state;

@@ -43,121 +43,113 @@ namespace {
 
 using Json = nlohmann::json;
 
-// Walks a result document, checking what the page reads; errors name the
-// JSON path.
-class ResultChecker {
+// A value in the result document with its JSON path; each check returns the
+// value or throws UsageError naming the path.
+class Node {
  public:
-  explicit ResultChecker(std::string source) : source_(std::move(source)) {}
+  Node(const Json& value, std::string path, const std::string& source)
+      : value_(value), path_(std::move(path)), source_(source) {}
 
-  const Json& member(const Json& object, const std::string& path, const char* key) const {
-    if (!object.contains(key)) fail(path.empty() ? key : path + "." + key, "missing");
-    return object.at(key);
+  Node operator[](const char* key) const {
+    const std::string path = path_.empty() ? key : path_ + "." + key;
+    if (!value_.is_object() || !value_.contains(key)) Node(value_, path, source_).fail("missing");
+    return {value_.at(key), path, source_};
   }
-  const Json& object(const Json& parent, const std::string& path, const char* key) const {
-    const Json& v = member(parent, path, key);
-    if (!v.is_object()) fail(join(path, key), "expected an object");
-    return v;
+  Node operator[](std::size_t i) const { return {value_.at(i), path_ + "[" + std::to_string(i) + "]", source_}; }
+  bool has(const char* key) const { return value_.contains(key) && !value_.at(key).is_null(); }
+
+  const Node& object() const { return expect(value_.is_object(), "expected an object"); }
+  std::size_t array() const { return expect(value_.is_array(), "expected an array").value_.size(); }
+  double number(double lo, double hi) const {
+    expect(value_.is_number() && std::isfinite(value_.get<double>()), "expected a finite number");
+    const double x = value_.get<double>();
+    expect(x >= lo && x <= hi,
+           format_number(x) + " is outside [" + format_number(lo) + ", " + format_number(hi) + "]");
+    return x;
   }
-  const Json& array(const Json& parent, const std::string& path, const char* key) const {
-    const Json& v = member(parent, path, key);
-    if (!v.is_array()) fail(join(path, key), "expected an array");
-    return v;
+  void string() const { expect(value_.is_string(), "expected a string"); }
+  void integer() const { expect(value_.is_number_integer(), "expected an integer"); }
+  void integers() const {
+    expect(value_.is_array(), "expected an array");
+    for (const Json& x : value_) expect(x.is_number_integer(), "expected an array of ball ids");
   }
-  void number(const Json& parent, const std::string& path, const char* key, double lo, double hi) const {
-    const Json& v = member(parent, path, key);
-    if (!v.is_number() || !std::isfinite(v.get<double>()))
-      fail(join(path, key), "expected a finite number");
-    const double x = v.get<double>();
-    if (x < lo || x > hi)
-      fail(join(path, key), format_number(x) + " is outside [" + format_number(lo) + ", " + format_number(hi) + "]");
+  void boolean() const { expect(value_.is_boolean(), "expected true or false"); }
+  void vector(std::size_t size) const {
+    const std::string what = "expected an array of " + std::to_string(size);
+    expect(value_.is_array() && value_.size() == size, what + " numbers");
+    for (const Json& x : value_) expect(x.is_number() && std::isfinite(x.get<double>()), what + " finite numbers");
   }
-  void optional_number(const Json& parent, const std::string& path, const char* key) const {
-    if (parent.contains(key) && !parent.at(key).is_null()) number(parent, path, key, 0.0, 1e9);
-  }
-  void string(const Json& parent, const std::string& path, const char* key) const {
-    if (!member(parent, path, key).is_string()) fail(join(path, key), "expected a string");
-  }
-  void vector(const Json& parent, const std::string& path, const char* key, std::size_t size) const {
-    const Json& v = member(parent, path, key);
-    if (!v.is_array() || v.size() != size) fail(join(path, key), "expected an array of " + std::to_string(size) + " numbers");
-    for (const Json& x : v)
-      if (!x.is_number() || !std::isfinite(x.get<double>()))
-        fail(join(path, key), "expected an array of " + std::to_string(size) + " finite numbers");
-  }
-  static std::string join(const std::string& path, const char* key) { return path.empty() ? key : path + "." + key; }
-  static std::string item(const std::string& path, std::size_t i) { return path + "[" + std::to_string(i) + "]"; }
-  [[noreturn]] void fail(const std::string& path, const std::string& what) const {
-    throw UsageError(source_ + ": " + path + ": " + what + " (expected a result written by `cueball simulate -o`)");
+  [[noreturn]] void fail(const std::string& what) const {
+    throw UsageError(source_ + ": " + path_ + ": " + what + " (expected a result written by `cueball simulate -o`)");
   }
 
  private:
-  std::string source_;
+  const Node& expect(bool ok, const std::string& what) const {
+    if (!ok) fail(what);
+    return *this;
+  }
+
+  const Json& value_;
+  std::string path_;
+  const std::string& source_;
 };
 
-void check_result(const Json& r, const ResultChecker& c) {
-  if (!r.is_object()) c.fail("(document)", "expected a JSON object");
+// Checks the keys and types the page reads.
+void check_result(const Node& r) {
   constexpr double kBig = 1e6;
-  const Json& table = c.object(r, "", "table");
-  c.string(table, "table", "name");
-  c.number(table, "table", "length", 1e-3, 100.0);
-  c.number(table, "table", "width", 1e-3, 100.0);
-  const Json& cushions = c.array(table, "table", "cushions");
-  for (std::size_t i = 0; i < cushions.size(); ++i) {
-    const std::string p = ResultChecker::item("table.cushions", i);
-    c.vector(cushions[i], p, "start", 2);
-    c.vector(cushions[i], p, "end", 2);
+  const Node table = r["table"];
+  table.object();
+  table["name"].string();
+  table["length"].number(1e-3, 100.0);
+  table["width"].number(1e-3, 100.0);
+  const Node cushions = table["cushions"];
+  for (std::size_t i = 0, n = cushions.array(); i < n; ++i) {
+    cushions[i]["start"].vector(2);
+    cushions[i]["end"].vector(2);
   }
-  const Json& jaws = c.array(table, "table", "jaws");
-  for (std::size_t i = 0; i < jaws.size(); ++i) {
-    const std::string p = ResultChecker::item("table.jaws", i);
-    c.vector(jaws[i], p, "centre", 2);
-    c.number(jaws[i], p, "radius", 0.0, 10.0);
+  const Node jaws = table["jaws"];
+  for (std::size_t i = 0, n = jaws.array(); i < n; ++i) {
+    jaws[i]["centre"].vector(2);
+    jaws[i]["radius"].number(0.0, 10.0);
   }
-  const Json& pockets = c.array(table, "table", "pockets");
-  for (std::size_t i = 0; i < pockets.size(); ++i) {
-    const std::string p = ResultChecker::item("table.pockets", i);
-    c.vector(pockets[i], p, "centre", 2);
-    c.number(pockets[i], p, "radius", 0.0, 10.0);
-    c.string(pockets[i], p, "name");
+  const Node pockets = table["pockets"];
+  for (std::size_t i = 0, n = pockets.array(); i < n; ++i) {
+    pockets[i]["centre"].vector(2);
+    pockets[i]["radius"].number(0.0, 10.0);
+    pockets[i]["name"].string();
   }
-  const Json& diamonds = c.array(table, "table", "diamonds");
-  for (std::size_t i = 0; i < diamonds.size(); ++i) {
-    const Json holder{{"d", diamonds[i]}};
-    c.vector(holder, ResultChecker::item("table.diamonds", i), "d", 2);
+  const Node diamonds = table["diamonds"];
+  for (std::size_t i = 0, n = diamonds.array(); i < n; ++i) diamonds[i].vector(2);
+  const Node parameters = r["parameters"];
+  parameters.object();
+  parameters["radius"].number(1e-4, 1.0);
+  for (const char* mu : {"mu_s", "mu_r", "mu_sp"}) parameters[mu].number(0.0, 10.0);
+  parameters["g"].number(1e-3, 1e3);
+  r["end_time"].number(0.0, kBig);
+  const Node events = r["events"];
+  for (std::size_t i = 0, n = events.array(); i < n; ++i) {
+    events[i]["time"].number(0.0, kBig);
+    events[i]["type"].string();
+    events[i]["balls"].integers();
   }
-  const Json& parameters = c.object(r, "", "parameters");
-  c.number(parameters, "parameters", "radius", 1e-4, 1.0);
-  c.number(parameters, "parameters", "mu_s", 0.0, 10.0);
-  c.number(parameters, "parameters", "mu_r", 0.0, 10.0);
-  c.number(parameters, "parameters", "mu_sp", 0.0, 10.0);
-  c.number(parameters, "parameters", "g", 1e-3, 1e3);
-  c.number(r, "", "end_time", 0.0, kBig);
-  const Json& events = c.array(r, "", "events");
-  for (std::size_t i = 0; i < events.size(); ++i) {
-    const std::string p = ResultChecker::item("events", i);
-    c.number(events[i], p, "time", 0.0, kBig);
-    c.string(events[i], p, "type");
-    for (const Json& id : c.array(events[i], p, "balls"))
-      if (!id.is_number_integer()) c.fail(p + ".balls", "expected an array of ball ids");
-  }
-  const Json& balls = c.array(r, "", "balls");
-  for (std::size_t i = 0; i < balls.size(); ++i) {
-    const std::string p = ResultChecker::item("balls", i);
-    if (!c.member(balls[i], p, "id").is_number_integer()) c.fail(p + ".id", "expected an integer");
-    c.string(balls[i], p, "name");
-    if (!c.member(balls[i], p, "pocketed").is_boolean()) c.fail(p + ".pocketed", "expected true or false");
-    c.optional_number(balls[i], p, "pocket_time");
-    const Json& segments = c.array(balls[i], p, "segments");
-    if (segments.empty()) c.fail(p + ".segments", "expected at least one segment");
+  const Node balls = r["balls"];
+  for (std::size_t i = 0, n = balls.array(); i < n; ++i) {
+    const Node ball = balls[i];
+    ball["id"].integer();
+    ball["name"].string();
+    ball["pocketed"].boolean();
+    if (ball.has("pocket_time")) ball["pocket_time"].number(0.0, 1e9);
+    const Node segments = ball["segments"];
+    const std::size_t count = segments.array();
+    if (count == 0) segments.fail("expected at least one segment");
     double previous = 0.0;
-    for (std::size_t k = 0; k < segments.size(); ++k) {
-      const std::string q = ResultChecker::item(p + ".segments", k);
-      c.number(segments[k], q, "t", previous, kBig);
-      previous = segments[k].at("t").get<double>();
-      c.string(segments[k], q, "phase");
-      c.vector(segments[k], q, "position", 2);
-      c.vector(segments[k], q, "velocity", 2);
-      c.vector(segments[k], q, "angular_velocity", 3);
+    for (std::size_t k = 0; k < count; ++k) {
+      const Node segment = segments[k];
+      previous = segment["t"].number(previous, kBig);
+      segment["phase"].string();
+      segment["position"].vector(2);
+      segment["velocity"].vector(2);
+      segment["angular_velocity"].vector(3);
     }
   }
 }
@@ -171,7 +163,8 @@ std::string checked_result_for_viewer(const std::string& source, std::string_vie
   } catch (const InvalidArgument& e) {
     throw UsageError(source + ": " + e.what());
   }
-  check_result(r, ResultChecker(source));
+  if (!r.is_object()) Node(r, "(document)", source).fail("expected a JSON object");
+  check_result(Node(r, "", source));
   return r.dump();
 }
 

@@ -50,7 +50,7 @@ void run_simulate(const SimulateFlags& f, std::ostream& out, std::ostream& err) 
   const std::string json = result_to_json(s, r, f.sample);
   if (!f.output.empty()) write_text_file(f.output, json + '\n', "-o", "the result file");
   if (!f.html.empty())
-    write_text_file(f.html, viewer_page(viewer_template(), checked_result_for_viewer("simulate", json)), "--html",
+    write_text_file(f.html, viewer_page(viewer_template(), result_to_json(s, r, f.sample, -1)), "--html",
                     "the viewer page");
   if (f.json) {
     out << json << '\n';

@@ -670,7 +670,7 @@ void bind_whole_shots(py::module_& m) {
           py::gil_scoped_release release;
           cueball::require_in_range("sample_rate", sample_rate, 0.0, 1e4, "sampling rate, Hz (0: none)");
           const cueball::Scenario s = load_scenario(text);
-          json = cueball::result_to_json(s, cueball::run_scenario(s), sample_rate);
+          json = cueball::result_to_json(s, cueball::run_scenario(s), sample_rate, -1);
         }
         return py::module_::import("json").attr("loads")(json);
       },

@@ -311,7 +311,7 @@ SimulationResult run_scenario(const Scenario& s) {
   return r;
 }
 
-std::string result_to_json(const Scenario& s, const SimulationResult& r, double sample_rate) {
+std::string result_to_json(const Scenario& s, const SimulationResult& r, double sample_rate, int indent) {
   const Parameters& p = s.settings.parameters;
   Json out;
   out["table"] = Json::parse(table_to_json(s.table));
@@ -373,7 +373,7 @@ std::string result_to_json(const Scenario& s, const SimulationResult& r, double 
     }
     out["samples"] = {{"rate_hz", sample_rate}, {"times", times}, {"balls", per_ball}};
   }
-  return out.dump(1);
+  return out.dump(indent);
 }
 
 }  // namespace cueball

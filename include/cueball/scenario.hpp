@@ -71,7 +71,8 @@ SimulationResult run_scenario(const Scenario& s);
 
 /// The documented result JSON: table, parameters, events, balls (final
 /// states, pocketing, trajectory segments) and, when sample_rate > 0, the
-/// states sampled at that rate (Hz).
-std::string result_to_json(const Scenario& s, const SimulationResult& r, double sample_rate = 0.0);
+/// states sampled at that rate (Hz). `indent`: spaces per nesting level, or
+/// -1 for everything on one line.
+std::string result_to_json(const Scenario& s, const SimulationResult& r, double sample_rate = 0.0, int indent = 1);
 
 }  // namespace cueball

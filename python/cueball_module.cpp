@@ -392,13 +392,23 @@ void bind_planner(py::module_& m) {
       "Positions in m along the line of the shot, increasing in the direction of travel; v2 (m/s)\n"
       "is the speed wanted at x2 (0: stop there). Valid plans satisfy v0 >= R w0 >= -5/2 v0;\n"
       "otherwise InfeasibleShot names the failed condition.";
-  m.def(
-      "plan_shot_with_slide_end",
-      [](double x1, double x2, double v2, double x0, const Parameters& p) {
-        return cueball::plan_shot_with_slide_end(ShotTarget{x0, x2, v2}, x1, p);
-      },
-      py::kw_only(), "x1"_a, "x2"_a, "v2"_a = 0.0, "x0"_a = 0.0, params_arg(),
-      (std::string("The paper's inverse problem (eqs 25-28): sliding ends at x1.\n") + kPlanDoc).c_str());
+  // The three variants with one given quantity besides the target.
+  using PlanWith = ShotPlan (*)(const ShotTarget&, double, const Parameters&);
+  const auto def_plan_with = [&](const char* name, PlanWith solve, const char* given, const char* doc) {
+    m.def(
+        name,
+        [solve](double value, double x2, double v2, double x0, const Parameters& p) {
+          return solve(ShotTarget{x0, x2, v2}, value, p);
+        },
+        py::kw_only(), py::arg(given), "x2"_a, "v2"_a = 0.0, "x0"_a = 0.0, params_arg(),
+        (std::string(doc) + kPlanDoc).c_str());
+  };
+  def_plan_with("plan_shot_with_slide_end", cueball::plan_shot_with_slide_end, "x1",
+                "The paper's inverse problem (eqs 25-28): sliding ends at x1.\n");
+  def_plan_with("plan_shot_with_spin", cueball::plan_shot_with_spin, "w0",
+                "Given topspin w0 (rad/s); v0 and x1 follow.\n");
+  def_plan_with("plan_shot_with_speed", cueball::plan_shot_with_speed, "v0",
+                "Given speed v0 (m/s); w0 and x1 follow.\n");
   m.def(
       "plan_natural_roll_shot",
       [](double x2, double v2, double x0, const Parameters& p) {
@@ -406,20 +416,6 @@ void bind_planner(py::module_& m) {
       },
       py::kw_only(), "x2"_a, "v2"_a = 0.0, "x0"_a = 0.0, params_arg(),
       (std::string("Natural roll from the start (x1 = x0, R w0 = v0).\n") + kPlanDoc).c_str());
-  m.def(
-      "plan_shot_with_spin",
-      [](double w0, double x2, double v2, double x0, const Parameters& p) {
-        return cueball::plan_shot_with_spin(ShotTarget{x0, x2, v2}, w0, p);
-      },
-      py::kw_only(), "w0"_a, "x2"_a, "v2"_a = 0.0, "x0"_a = 0.0, params_arg(),
-      (std::string("Given topspin w0 (rad/s); v0 and x1 follow.\n") + kPlanDoc).c_str());
-  m.def(
-      "plan_shot_with_speed",
-      [](double v0, double x2, double v2, double x0, const Parameters& p) {
-        return cueball::plan_shot_with_speed(ShotTarget{x0, x2, v2}, v0, p);
-      },
-      py::kw_only(), "v0"_a, "x2"_a, "v2"_a = 0.0, "x0"_a = 0.0, params_arg(),
-      (std::string("Given speed v0 (m/s); w0 and x1 follow.\n") + kPlanDoc).c_str());
 }
 
 // ------------------------------------------------------------------ cue strike

@@ -477,9 +477,12 @@ Modes select_modes(const Coefficients& k, Vec2 cushion_slip_now, Vec2 bed_slip_n
 //   xG' = s_C,x + u_y,   u_z = (s_C,x - s_I,x + (1 + s) u_y) / c    (12a), (13a)
 // (s = sin(theta), c = cos(theta)). The work W (16a) is integrated
 // alongside. Slip events are then conditions on components of the state, and
-// a stage of the Runge-Kutta method needs only the four slips.
+// a stage of the Runge-Kutta method needs only the four slips. They are
+// stored x components first, (s_I,x, s_C,x, s_I,y', s_C,y), so that the two
+// x components and the two y components each fill one SIMD register
+// (FreeSlipStep).
 using SlipState = std::array<double, 5>;
-enum : std::size_t { kSix = 0, kSiy = 1, kScx = 2, kScy = 3, kW = 4 };
+enum : std::size_t { kSix = 0, kScx = 1, kSiy = 2, kScy = 3, kW = 4 };
 constexpr std::size_t kSlips = 4;
 
 constexpr Vec2 slip_i(const SlipState& z) { return {z[kSix], z[kSiy]}; }
@@ -494,7 +497,13 @@ double line_momentum(const Coefficients& k, const State& y) {
 SlipState slip_state(const Coefficients& k, const State& y) {
   const Vec2 si = cushion_slip(k, y);
   const Vec2 sc = bed_slip(y);
-  return {si.x, si.y, sc.x, sc.y, y[kWork]};
+  SlipState z;
+  z[kSix] = si.x;
+  z[kSiy] = si.y;
+  z[kScx] = sc.x;
+  z[kScy] = sc.y;
+  z[kW] = y[kWork];
+  return z;
 }
 State velocity_state(const Coefficients& k, const SlipState& z, double j) {
   const double vy = scaled_normal_speed(z) * k.inv_1ps;
@@ -509,11 +518,13 @@ State velocity_state(const Coefficients& k, const SlipState& z, double j) {
 inline SlipState slip_rates(const Coefficients& k, const SlipState& z, const Friction& f) {
   const Vec2 a = f.cushion;
   const Vec2 g = f.bed;
-  return {3.5 * a.x + k.k1 * g.x,
-          k.s * k.c + k.kyy * a.y + k.k2 * g.y,
-          k.k1 * a.x + 3.5 * g.x,
-          -k.c + k.k2 * a.y + 3.5 * g.y,
-          -k.c * (scaled_normal_speed(z) * k.inv_1ps)};
+  SlipState d;
+  d[kSix] = 3.5 * a.x + k.k1 * g.x;
+  d[kSiy] = k.s * k.c + k.kyy * a.y + k.k2 * g.y;
+  d[kScx] = k.k1 * a.x + 3.5 * g.x;
+  d[kScy] = -k.c + k.k2 * a.y + 3.5 * g.y;
+  d[kW] = -k.c * (scaled_normal_speed(z) * k.inv_1ps);
+  return d;
 }
 
 // Sets a contact's slip exactly to zero by adjusting the spins (by the
@@ -963,124 +974,166 @@ double dopri5_step(const Rhs& sys, const SlipState& y0, const SlipState& k1, dou
 // friction as soon as that is known: every other term is summed in advance
 // (each rate as it becomes available is added to the sums of all later
 // stages), and the new state waits for two products and two sums only.
+//
+// The two contacts are computed side by side, as Pairs: the x components
+// (s_I,x, s_C,x) in one and the y components (s_I,y', s_C,y) in the other,
+// so that both slip speeds take one square root and one division, and each
+// sum one operation for two components. Every lane performs exactly the
+// operations of the scalar formulae in Exact::rhs, in the same order: the
+// results are those of dopri5_step bit for bit.
 class FreeSlipStep {
  public:
   explicit FreeSlipStep(const Exact& e)
       : sys_(&e),
-        mu_w_(e.k.mu_w),
-        mu_s_(e.k.mu_s),
         s_(e.k.s),
         c_(e.k.c),
-        sc_(e.k.s * e.k.c),
-        k1_(e.k.k1),
-        k2_(e.k.k2),
-        kyy_(e.k.kyy),
         c_n_(e.k.c * e.k.inv_1ps),
         zero2_(e.zero_slip2),
-        cushion_ref_(e.cushion_ref),
-        bed_ref_(e.bed_ref) {}
+        mu_{e.k.mu_w, e.k.mu_s},
+        ref_x_{e.cushion_ref.x, e.bed_ref.x},
+        ref_y_{e.cushion_ref.y, e.bed_ref.y},
+        f_x_{3.5, e.k.k1},
+        g_x_{e.k.k1, 3.5},
+        const_y_{e.k.s * e.k.c, -e.k.c},
+        f_y_{e.k.kyy, e.k.k2},
+        g_y_{e.k.k2, 3.5} {}
 
   double operator()(const SlipState& y0, const SlipState& k1, double h, double atol, Step& st) const {
     using namespace dp;
-    constexpr std::size_t n = std::tuple_size_v<SlipState>;
-    // Sums of the stages 3 to 6, of y1 and of the error estimate.
-    double b3[kSlips], b4[kSlips], b5[kSlips], b6[kSlips];
-    SlipState yb;
-    SlipState eb;
-    double t[kSlips];
-    double t_next[kSlips];
-    SlipState k2;
-    for (std::size_t i = 0; i < kSlips; ++i) {
-      t[i] = y0[i] + (h * a21) * k1[i];
-      b3[i] = y0[i] + (h * a31) * k1[i];
-      b4[i] = y0[i] + (h * a41) * k1[i];
-      b5[i] = y0[i] + (h * a51) * k1[i];
-      b6[i] = y0[i] + (h * a61) * k1[i];
-    }
-    for (std::size_t i = 0; i < n; ++i) {
-      yb[i] = y0[i] + (h * a71) * k1[i];
-      eb[i] = e1 * k1[i];
-    }
-    stage(t, b3, h * a32, t_next, k2);
-    for (std::size_t i = 0; i < kSlips; ++i) {
-      b4[i] += (h * a42) * k2[i];
-      b5[i] += (h * a52) * k2[i];
-      b6[i] += (h * a62) * k2[i];
-    }
-    stage(t_next, b4, h * a43, t, st.k3);
-    for (std::size_t i = 0; i < kSlips; ++i) {
-      b5[i] += (h * a53) * st.k3[i];
-      b6[i] += (h * a63) * st.k3[i];
-    }
-    for (std::size_t i = 0; i < n; ++i) {
-      yb[i] += (h * a73) * st.k3[i];
-      eb[i] += e3 * st.k3[i];
-    }
-    stage(t, b5, h * a54, t_next, st.k4);
-    for (std::size_t i = 0; i < kSlips; ++i) b6[i] += (h * a64) * st.k4[i];
-    for (std::size_t i = 0; i < n; ++i) {
-      yb[i] += (h * a74) * st.k4[i];
-      eb[i] += e4 * st.k4[i];
-    }
-    stage(t_next, b6, h * a65, t, st.k5);
-    for (std::size_t i = 0; i < n; ++i) {
-      yb[i] += (h * a75) * st.k5[i];
-      eb[i] += e5 * st.k5[i];
-    }
-    stage(t, yb.data(), h * a76, st.y1.data(), st.k6);
-    st.y1[kW] = yb[kW] + (h * a76) * st.k6[kW];
-    stage(st.y1.data(), nullptr, 0.0, nullptr, st.k7);
-    double err = 0.0;
-    for (std::size_t i = 0; i < n; ++i) {
-      err = std::max(err, std::abs((eb[i] + e6 * st.k6[i]) + e7 * st.k7[i]));
-    }
+    const Slips z0 = load(y0);
+    const Slips f1 = load(k1);  // k1's slips
+    // Sums of the stages 3 to 6, of y1 and of the error estimate (W apart).
+    Slips b3 = axpy(z0, h * a31, f1);
+    Slips b4 = axpy(z0, h * a41, f1);
+    Slips b5 = axpy(z0, h * a51, f1);
+    Slips b6 = axpy(z0, h * a61, f1);
+    Slips yb = axpy(z0, h * a71, f1);
+    Slips eb = scale(e1, f1);
+    double yb_w = y0[kW] + (h * a71) * k1[kW];
+    double eb_w = e1 * k1[kW];
+    Rates r;
+    Slips t = stage(axpy(z0, h * a21, f1), b3, h * a32, r);  // k2
+    b4 = axpy(b4, h * a42, r.slips);
+    b5 = axpy(b5, h * a52, r.slips);
+    b6 = axpy(b6, h * a62, r.slips);
+    t = stage(t, b4, h * a43, r);  // k3
+    store(r, st.k3);
+    b5 = axpy(b5, h * a53, r.slips);
+    b6 = axpy(b6, h * a63, r.slips);
+    yb = axpy(yb, h * a73, r.slips);
+    eb = axpy(eb, e3, r.slips);
+    yb_w += (h * a73) * r.w;
+    eb_w += e3 * r.w;
+    t = stage(t, b5, h * a54, r);  // k4
+    store(r, st.k4);
+    b6 = axpy(b6, h * a64, r.slips);
+    yb = axpy(yb, h * a74, r.slips);
+    eb = axpy(eb, e4, r.slips);
+    yb_w += (h * a74) * r.w;
+    eb_w += e4 * r.w;
+    t = stage(t, b6, h * a65, r);  // k5
+    store(r, st.k5);
+    yb = axpy(yb, h * a75, r.slips);
+    eb = axpy(eb, e5, r.slips);
+    yb_w += (h * a75) * r.w;
+    eb_w += e5 * r.w;
+    const Slips z1 = stage(t, yb, h * a76, r);  // k6, and the new slips
+    store(r, st.k6);
+    store(z1, st.y1);
+    st.y1[kW] = yb_w + (h * a76) * r.w;
+    eb = axpy(eb, e6, r.slips);
+    eb_w += e6 * r.w;
+    stage(z1, z1, 0.0, r);  // k7 (first same as last)
+    store(r, st.k7);
+    eb = axpy(eb, e7, r.slips);
+    eb_w += e7 * r.w;
+    const double err = std::max({std::abs(eb.x[0]), std::abs(eb.x[1]), std::abs(eb.y[0]), std::abs(eb.y[1]),
+                                 std::abs(eb_w)});
     return h * err / atol;
   }
 
  private:
-  // The rates k at the slips z (Exact::rhs), and next = base + hk k for the
-  // slips of the next stage (when `next` is given).
-  void stage(const double* z, const double* base, double hk, double* next, SlipState& k) const {
-    const double six = z[kSix];
-    const double siy = z[kSiy];
-    const double scx = z[kScx];
-    const double scy = z[kScy];
-    const double ri2 = six * six + siy * siy;
-    const double rc2 = scx * scx + scy * scy;
-    if (!(ri2 > zero2_ && rc2 > zero2_)) {
+  // Two doubles in one SIMD register (a GCC/Clang vector extension: SSE2 on
+  // x86-64, NEON on AArch64, pairs of scalars elsewhere).
+  using Pair = double __attribute__((vector_size(16)));
+  struct Slips {
+    Pair x;  // (s_I,x, s_C,x)
+    Pair y;  // (s_I,y', s_C,y)
+  };
+  struct Rates {
+    Slips slips;
+    double w;  // dW/dP
+  };
+
+  static Pair pair(double a) { return Pair{a, a}; }
+  static Slips load(const SlipState& z) {
+    static_assert(kSix + 1 == kScx && kSiy + 1 == kScy, "x and y components side by side");
+    return {Pair{z[kSix], z[kScx]}, Pair{z[kSiy], z[kScy]}};
+  }
+  static void store(const Slips& s, SlipState& z) {
+    z[kSix] = s.x[0];
+    z[kScx] = s.x[1];
+    z[kSiy] = s.y[0];
+    z[kScy] = s.y[1];
+  }
+  static void store(const Rates& r, SlipState& z) {
+    store(r.slips, z);
+    z[kW] = r.w;
+  }
+  // base + a d, per component.
+  static Slips axpy(const Slips& base, double a, const Slips& d) {
+    const Pair pa = pair(a);
+    return {base.x + pa * d.x, base.y + pa * d.y};
+  }
+  static Slips scale(double a, const Slips& d) { return {pair(a) * d.x, pair(a) * d.y}; }
+
+  // The rates r at the slips z (Exact::rhs), and returns base + hk r for
+  // the slips of the next stage.
+  Slips stage(const Slips& z, const Slips& base, double hk, Rates& r) const {
+    const Pair r2 = z.x * z.x + z.y * z.y;  // (|s_I|^2, |s_C|^2)
+    if (!(r2[0] > zero2_ && r2[1] > zero2_)) {
       SlipState zz{};
-      for (std::size_t i = 0; i < kSlips; ++i) zz[i] = z[i];
-      k = sys_->rhs_general(zz);
-      if (next) {
-        for (std::size_t i = 0; i < kSlips; ++i) next[i] = base[i] + hk * k[i];
-      }
-      return;
+      store(z, zz);
+      const SlipState d = sys_->rhs_general(zz);
+      r = {load(d), d[kW]};
+      return axpy(base, hk, r.slips);
     }
     // (7a), (7b): the friction at I opposes the slip (continued through zero
     // with the sign at the step start); (3d), (10a), (10b) at C:
     //   f = wi s_I,  g = q s_C,  q = wc (sin(theta) - cos(theta) f_y').
-    const double wi = (six * cushion_ref_.x + siy * cushion_ref_.y < 0.0 ? mu_w_ : -mu_w_) / std::sqrt(ri2);
-    const double wc = (scx * bed_ref_.x + scy * bed_ref_.y < 0.0 ? mu_s_ : -mu_s_) / std::sqrt(rc2);
-    const double q = wc * s_ - (wc * wi) * (c_ * siy);
-    if (next) {
-      // The slip rates (header comment) are a f + b g + const per component.
-      next[kSix] = (base[kSix] + (hk * 3.5 * six) * wi) + (hk * k1_ * scx) * q;
-      next[kSiy] = ((base[kSiy] + hk * sc_) + (hk * kyy_ * siy) * wi) + (hk * k2_ * scy) * q;
-      next[kScx] = (base[kScx] + (hk * k1_ * six) * wi) + (hk * 3.5 * scx) * q;
-      next[kScy] = ((base[kScy] - hk * c_) + (hk * k2_ * siy) * wi) + (hk * 3.5 * scy) * q;
-    }
-    const double ax = wi * six;
-    const double ay = wi * siy;
-    const double gx = q * scx;
-    const double gy = q * scy;
-    k = {3.5 * ax + k1_ * gx, sc_ + kyy_ * ay + k2_ * gy, k1_ * ax + 3.5 * gx, -c_ + k2_ * ay + 3.5 * gy,
-         -c_n_ * (scy - siy)};
+    const Pair along_ref = z.x * ref_x_ + z.y * ref_y_;
+    const Pair mu = along_ref < 0.0 ? mu_ : -mu_;
+    const Pair w = mu / Pair{std::sqrt(r2[0]), std::sqrt(r2[1])};  // (wi, wc)
+    const double wi = w[0];
+    const double wc = w[1];
+    const double q = wc * s_ - (wc * wi) * (c_ * z.y[0]);
+    const Pair pwi = pair(wi);
+    const Pair pq = pair(q);
+    const Pair phk = pair(hk);
+    // The slip rates (header comment) are a f + b g + const per component:
+    // x: (7/2, k1) f_x + (k1, 7/2) g_x;  y: (sc, -c) + (kyy, k2) f_y + (k2, 7/2) g_y.
+    const Pair six = pair(z.x[0]);
+    const Pair scx = pair(z.x[1]);
+    const Pair siy = pair(z.y[0]);
+    const Pair scy = pair(z.y[1]);
+    const Slips next{(base.x + ((phk * f_x_) * six) * pwi) + ((phk * g_x_) * scx) * pq,
+                     ((base.y + phk * const_y_) + ((phk * f_y_) * siy) * pwi) + ((phk * g_y_) * scy) * pq};
+    const Pair ax = pair(wi * z.x[0]);
+    const Pair ay = pair(wi * z.y[0]);
+    const Pair gx = pair(q * z.x[1]);
+    const Pair gy = pair(q * z.y[1]);
+    r.slips = {f_x_ * ax + g_x_ * gx, (const_y_ + f_y_ * ay) + g_y_ * gy};
+    r.w = -c_n_ * (z.y[1] - z.y[0]);
+    return next;
   }
 
   const Exact* sys_;
-  double mu_w_, mu_s_, s_, c_, sc_, k1_, k2_, kyy_, c_n_;  // c_n = cos(theta) / (1 + sin(theta))
+  double s_, c_, c_n_;  // c_n = cos(theta) / (1 + sin(theta))
   double zero2_;
-  Vec2 cushion_ref_, bed_ref_;
+  Pair mu_;              // (mu_w, mu_s)
+  Pair ref_x_, ref_y_;   // the reference slip directions, x and y components
+  Pair f_x_, g_x_;       // coefficients of the friction rates in the x rates
+  Pair const_y_, f_y_, g_y_;  // and in the y rates
 };
 
 void make_dense(const SlipState& y0, const SlipState& k1, double h, Step& st) {

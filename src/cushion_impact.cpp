@@ -1349,8 +1349,11 @@ Outcome solve_exact(const Coefficients& k, const State& y0, const Units& units,
       double g_hi = -dot(slip_end, ref);
       if (!(g_hi > 0.0) && ev.may_dip(at_cushion, y, k1, st.y1, st.k7, h)) {
         dense();
+        const std::size_t ix = at_cushion ? kSix : kScx;
+        const std::size_t iy = at_cushion ? kSiy : kScy;
         for (const double tt : {0.25, 0.5, 0.75}) {
-          const double g = ev.value(e, interpolate(y, st, tt));
+          // ev.value(e, ...) on the two components it reads
+          const double g = -dot(Vec2{interpolate(y, st, tt, ix), interpolate(y, st, tt, iy)}, ref);
           if (g > 0.0) {
             t_hi = tt;
             g_hi = g;

@@ -8,6 +8,7 @@
 #include <limits>
 #include <string>
 #include <tuple>
+#include <utility>
 
 #include "cueball/errors.hpp"
 #include "cueball/events.hpp"
@@ -180,8 +181,16 @@ class Simulation {
   }
 
  private:
-  CushionImpactModel model_for(double contact_height) const {
-    return cushion_impact_model(p_, {settings_.cushion_restitution, settings_.cushion_friction, contact_height});
+  // The impact model of a cushion or jaw at this contact height. A table has
+  // one height or a few: each model (and its validation) is built once.
+  CushionImpactModel model_for(double contact_height) {
+    for (const auto& [height, model] : models_by_height_) {
+      if (height == contact_height) return model;
+    }
+    const CushionImpactModel m =
+        cushion_impact_model(p_, {settings_.cushion_restitution, settings_.cushion_friction, contact_height});
+    models_by_height_.emplace_back(contact_height, m);
+    return m;
   }
 
   std::size_t idx(int i) const { return static_cast<std::size_t>(i); }
@@ -487,6 +496,7 @@ class Simulation {
   int n_;
   double now_ = 0.0;
   std::vector<CushionImpactModel> cushion_models_, jaw_models_;
+  std::vector<std::pair<double, CushionImpactModel>> models_by_height_;  // model_for()'s cache
   std::vector<ContactLine> cushion_lines_;
   std::vector<double> jaw_distance_;
   std::vector<PocketGroup> groups_;

@@ -1348,12 +1348,22 @@ Outcome solve_exact(const Coefficients& k, const State& y0, const Units& units,
       double t_hi = 1.0;
       double g_hi = -dot(slip_end, ref);
       if (!(g_hi > 0.0) && ev.may_dip(at_cushion, y, k1, st.y1, st.k7, h)) {
-        dense();
+        // Probed first on the cubic Hermite interpolant of the step's ends
+        // (the dense output without its fourth-order term, which needs all
+        // the stages); a sign change found there is confirmed on the dense
+        // output, which then locates it.
+        auto hermite = [&](double t, std::size_t i) {
+          const double r2 = st.y1[i] - y[i];
+          const double r3 = h * k1[i] - r2;
+          const double r4 = r2 - h * st.k7[i] - r3;
+          return y[i] + t * (r2 + (1.0 - t) * (r3 + t * r4));
+        };
         const std::size_t ix = at_cushion ? kSix : kScx;
         const std::size_t iy = at_cushion ? kSiy : kScy;
         for (const double tt : {0.25, 0.5, 0.75}) {
-          // ev.value(e, ...) on the two components it reads
-          const double g = -dot(Vec2{interpolate(y, st, tt, ix), interpolate(y, st, tt, iy)}, ref);
+          if (!(-dot(Vec2{hermite(tt, ix), hermite(tt, iy)}, ref) > 0.0)) continue;
+          dense();
+          const double g = -dot(Vec2{interpolate(y, st, tt, ix), interpolate(y, st, tt, iy)}, ref);  // ev.value(e, ...)
           if (g > 0.0) {
             t_hi = tt;
             g_hi = g;

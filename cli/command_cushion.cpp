@@ -48,7 +48,8 @@ void add_cushion_flags(CLI::App& app, CushionFlags& f) {
   app.add_option("--height", f.height, "Contact height h of the cushion above the bed, m, in (R, 2R); default 7R/5");
 }
 
-CushionSolver solver_of(const CushionFlags& f) { return f.solver == "paper" ? CushionSolver::paper : CushionSolver::exact; }
+// A --solver value (checked by CLI11 to be "exact" or "paper").
+CushionSolver solver_named(const std::string& name) { return name == "paper" ? CushionSolver::paper : CushionSolver::exact; }
 
 CushionParameters cushion_of(const CushionFlags& f, const Parameters& p) {
   CushionParameters c = f.constants == "translator-fit" ? cushion_translator_exact_fit(p.ball)
@@ -73,7 +74,7 @@ CushionParameters cushion_of(const CushionFlags& f, const Parameters& p) {
 
 CushionImpactOptions options_of(const CushionFlags& f, bool history) {
   CushionImpactOptions o;
-  o.solver = solver_of(f);
+  o.solver = solver_named(f.solver);
   o.paper_steps = f.steps;
   o.record_history = history;
   return o;
@@ -156,7 +157,7 @@ void run_cushion(const ImpactFlags& f, std::ostream& out, std::ostream& err) {
   report.add("e", cushion.restitution, "", "restitution e_e");
   report.add("mu_w", cushion.friction, "", "ball-cushion friction");
   report.add("height", cushion.contact_height, "m", "contact height h");
-  if (solver_of(f.cushion) == CushionSolver::paper) report.add_count("steps", f.cushion.steps, "Euler steps N");
+  if (solver_named(f.cushion.solver) == CushionSolver::paper) report.add_count("steps", f.cushion.steps, "Euler steps N");
   report.end_section();
   if (r.beyond_rigid_cushion_limit) {
     report.warn("the normal speed " + std::to_string(f.v0 * std::sin(in.angle)) +
@@ -465,7 +466,7 @@ void run_fit(const FitFlags& f, std::ostream& out, std::ostream& err) {
   const Parameters p = resolve_parameters(f.parameters);
   const CushionFitData data = read_fit_data(f.data, p.ball.radius);
   CushionFitOptions options;
-  options.solver = f.solver == "paper" ? CushionSolver::paper : CushionSolver::exact;
+  options.solver = solver_named(f.solver);
   options.paper_steps = f.steps;
   options.grid_step = f.grid_step;
   const CushionFit fit = fit_cushion(data, p, options);

@@ -973,14 +973,19 @@ double dopri5_step(const Rhs& sys, const SlipState& y0, const SlipState& k1, dou
 // division), so each stage's state is formed from the previous stage's
 // friction as soon as that is known: every other term is summed in advance
 // (each rate as it becomes available is added to the sums of all later
-// stages), and the new state waits for two products and two sums only.
+// stages), and the new state waits for few operations:
+//  - mu/|s| is formed as (mu/|s|^2) |s|, so that the square root and the
+//    division run side by side instead of one after the other;
+//  - the bed's friction q s_C (q = wc (sin(theta) - wi cos(theta) s_I,y'),
+//    (8), (10)) enters expanded, wc sin(theta) s_C - wi wc cos(theta) s_I,y' s_C,
+//    so the new slips wait on wi, wc and wi wc, not on q.
+// The results agree with dopri5_step (the scalar formulae of Exact::rhs) to
+// rounding, not bit for bit.
 //
 // The two contacts are computed side by side, as Pairs: the x components
 // (s_I,x, s_C,x) in one and the y components (s_I,y', s_C,y) in the other,
 // so that both slip speeds take one square root and one division, and each
-// sum one operation for two components. Every lane performs exactly the
-// operations of the scalar formulae in Exact::rhs, in the same order: the
-// results are those of dopri5_step bit for bit.
+// sum one operation for two components.
 class FreeSlipStep {
  public:
   explicit FreeSlipStep(const Exact& e)
@@ -1103,21 +1108,28 @@ class FreeSlipStep {
     //   f = wi s_I,  g = q s_C,  q = wc (sin(theta) - cos(theta) f_y').
     const Pair along_ref = z.x * ref_x_ + z.y * ref_y_;
     const Pair mu = along_ref < 0.0 ? mu_ : -mu_;
-    const Pair w = mu / Pair{std::sqrt(r2[0]), std::sqrt(r2[1])};  // (wi, wc)
+    const Pair w = (mu / r2) * Pair{std::sqrt(r2[0]), std::sqrt(r2[1])};  // (wi, wc) = mu / |s|
     const double wi = w[0];
     const double wc = w[1];
-    const double q = wc * s_ - (wc * wi) * (c_ * z.y[0]);
+    const double wiwc = wi * wc;
     const Pair pwi = pair(wi);
-    const Pair pq = pair(q);
+    const Pair pwc = pair(wc);
+    const Pair pwiwc = pair(wiwc);
     const Pair phk = pair(hk);
     // The slip rates (header comment) are a f + b g + const per component:
-    // x: (7/2, k1) f_x + (k1, 7/2) g_x;  y: (sc, -c) + (kyy, k2) f_y + (k2, 7/2) g_y.
+    // x: (7/2, k1) f_x + (k1, 7/2) g_x;  y: (sc, -c) + (kyy, k2) f_y + (k2, 7/2) g_y,
+    // with f = wi s_I and g = q s_C = (wc s - wi wc c s_I,y') s_C.
     const Pair six = pair(z.x[0]);
     const Pair scx = pair(z.x[1]);
     const Pair siy = pair(z.y[0]);
     const Pair scy = pair(z.y[1]);
-    const Slips next{(base.x + ((phk * f_x_) * six) * pwi) + ((phk * g_x_) * scx) * pq,
-                     ((base.y + phk * const_y_) + ((phk * f_y_) * siy) * pwi) + ((phk * g_y_) * scy) * pq};
+    const Pair c_siy = pair(c_ * z.y[0]);
+    const Pair bed_x = (phk * g_x_) * scx;  // multiplies q
+    const Pair bed_y = (phk * g_y_) * scy;
+    const Slips next{((base.x + ((phk * f_x_) * six) * pwi) + (bed_x * s_) * pwc) - (bed_x * c_siy) * pwiwc,
+                     (((base.y + phk * const_y_) + ((phk * f_y_) * siy) * pwi) + (bed_y * s_) * pwc) -
+                         (bed_y * c_siy) * pwiwc};
+    const double q = wc * s_ - wiwc * (c_ * z.y[0]);
     const Pair ax = pair(wi * z.x[0]);
     const Pair ay = pair(wi * z.y[0]);
     const Pair gx = pair(q * z.x[1]);

@@ -1,6 +1,7 @@
 // Batch simulation with execution noise; see batch.hpp.
 #include "cueball/batch.hpp"
 
+#include <atomic>
 #include <chrono>
 #include <cmath>
 #include <numbers>
@@ -84,15 +85,21 @@ BatchResult simulate_batch(const Scenario& s, const BatchOptions& options) {
 
   const auto start = std::chrono::steady_clock::now();
   std::vector<ShotOutcome> outcomes(static_cast<std::size_t>(options.shots));
-  const auto work = [&](int worker) {
-    for (int k = worker; k < options.shots; k += options.threads)
+  // Each worker takes the next shot not yet taken, so a worker whose core is
+  // slower (or whose shots are longer) does fewer of them and no worker waits
+  // at the end. Each shot's outcome depends on its index only: the numbers
+  // are the same whichever worker played it.
+  std::atomic<int> next_shot{0};
+  const auto work = [&] {
+    for (int k = next_shot.fetch_add(1, std::memory_order_relaxed); k < options.shots;
+         k = next_shot.fetch_add(1, std::memory_order_relaxed))
       outcomes[static_cast<std::size_t>(k)] = play(s, options.seed, k);
   };
   if (options.threads == 1) {
-    work(0);
+    work();
   } else {
     std::vector<std::thread> pool;
-    for (int w = 0; w < options.threads; ++w) pool.emplace_back(work, w);
+    for (int w = 0; w < options.threads; ++w) pool.emplace_back(work);
     for (std::thread& t : pool) t.join();
   }
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

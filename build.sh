@@ -44,7 +44,7 @@ case "$mode" in
     (cd viewer && npm ci --no-audit --no-fund --loglevel=error)
     build release -DCUEBALL_VIEWER_TESTS=ON -DCUEBALL_BUILD_PYTHON=ON
     ctest --preset release
-    build asan
+    build asan -DCUEBALL_BUILD_PYTHON=ON
     ctest --preset asan
     build fuzz
     fuzz/run.sh build/fuzz 30

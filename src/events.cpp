@@ -15,10 +15,7 @@ namespace {
 // contact), f given by ascending coefficients and f' by `slope`, which is
 // scaled so that it is a normal approach speed in m/s when negative. A
 // contact function already <= 0 and decreasing at t = 0 means contact now.
-// Approach speeds below kMinApproachSpeed count as none: they are round-off
-// (e.g. of a contact just resolved), and even sustained for a whole shot they
-// would move a ball by less than 1e-10 m.
-constexpr double kMinApproachSpeed = 1e-12;  // m/s
+// Approach speeds below kMinApproachSpeed count as none (events.hpp).
 
 template <std::size_t N, typename Slope>
 std::optional<double> earliest_entering_root(const std::array<double, N>& c, double horizon, Slope slope) {
@@ -35,6 +32,33 @@ std::optional<double> earliest_entering_root(const std::array<double, N>& c, dou
     if (slope(t) < -kMinApproachSpeed) return t;
   }
   return std::nullopt;
+}
+
+// A pair touching at t = 0 (gap g within kContactTolerance, overlap by
+// round-off included) that is not approaching (normal speed g1 >= -1e-12)
+// but whose relative normal acceleration g2 drives it together, parting (if
+// at all) too slowly to get farther than kContactTolerance apart before it
+// turns back: it would enter the contact at once, yet f has a (near) double
+// root at 0 with no decreasing crossing, so the root rule above cannot see
+// it. Pressed contacts are contacts now. Accelerations below
+// kMinPressAcceleration are round-off (|a| ~ 2 m/s^2 carries ~1e-16 of it);
+// sustained over a 1 s slide, 1e-9 m/s^2 moves a ball 5e-10 m.
+constexpr double kMinPressAcceleration = 1e-9;  // m/s^2
+
+bool pressed_now(double g, double g1, double g2) {
+  if (!(g <= kContactTolerance && g1 >= -kMinApproachSpeed && g2 < -kMinPressAcceleration)) return false;
+  const double parting = std::max(g1, 0.0);
+  return g + parting * parting / (2.0 * -g2) <= kContactTolerance;
+}
+
+// The same for the distance between two centres d(t) = dr + dv t + da t^2/2
+// against the contact distance: gap, normal speed and normal acceleration
+// of |d| at t = 0 (the last with the curvature term |dv_t|^2 / |d|).
+bool pair_pressed_now(Vec2 dr, Vec2 dv, Vec2 da, double contact) {
+  const double d = norm(dr);
+  if (!(d > 0.0)) return false;
+  const double g1 = dot(dr, dv) / d;
+  return pressed_now(d - contact, g1, (dot(dv, dv) - g1 * g1 + dot(dr, da)) / d);
 }
 
 // Control points of the relative path d(t) = d0 + v t + a t^2/2 over [0, h]
@@ -86,6 +110,7 @@ std::optional<double> predict_contact(const QuadraticPath& a, const QuadraticPat
   if (dv == Vec2{} && da == Vec2{}) return std::nullopt;  // no relative motion
   // Cheap rejection: the relative path's hull never comes within contact.
   if (std::isfinite(horizon) && !hull_reaches_origin(bezier_hull(dr, dv, da, horizon), contact)) return std::nullopt;
+  if (pair_pressed_now(dr, dv, da, contact)) return 0.0;
   // |dr + dv t + da t^2/2|^2 - contact^2, ascending powers.
   const std::array<double, 5> c{dot(dr, dr) - contact * contact, 2.0 * dot(dr, dv), dot(dv, dv) + dot(dr, da),
                                 dot(dv, da), 0.25 * dot(da, da)};
@@ -113,7 +138,9 @@ std::optional<double> predict_line_contact(const QuadraticPath& s, const Contact
     const Hull h = bezier_hull(r0, s.velocity, a, horizon);
     if (dot(n, h.p0) > d && dot(n, h.p1) > d && dot(n, h.p2) > d) return std::nullopt;
   }
-  const auto t = earliest_entering_root(c, horizon, [&](double tt) { return dot(n, s.velocity + tt * a); });
+  const auto t = pressed_now(c[0], c[1], 2.0 * c[2])
+                     ? std::optional<double>(0.0)
+                     : earliest_entering_root(c, horizon, [&](double tt) { return dot(n, s.velocity + tt * a); });
   if (!t) return std::nullopt;
   const Vec2 r = r0 + *t * s.velocity + (0.5 * *t * *t) * a;
   const double foot = dot(line.direction, r);

@@ -6,49 +6,29 @@
 #include <cmath>
 #include <cstdio>
 #include <limits>
+#include <span>
 #include <string>
 #include <tuple>
 #include <utility>
 
 #include "cueball/errors.hpp"
 #include "cueball/events.hpp"
+#include "cueball/resting_contact.hpp"
 
 namespace cueball {
 
 namespace {
 
 constexpr double kInfinity = std::numeric_limits<double>::infinity();
-/// Balls overlapping by more than this at the start are rejected, m.
-constexpr double kOverlapTolerance = 1e-9;
 
-// Pushes. A ball that meets another ball or a cushion at a normal approach
-// speed below kPushSpeed (a slow roll tapping a resting ball, a ball whose
-// spin drives it on into the one it just hit) would, with instantaneous
-// impulses, bounce ever smaller and ever sooner without end (inelastic
-// collapse, a Zeno sequence) or, pressed by its acceleration, slowly overlap;
-// real balls stay in contact and move on together. Such a contact is resolved
-// as a plastic push, which only removes energy:
-//   1. each ball's slip on the cloth is ended by the friction impulse that
-//      sliding would apply anyway, -(2/7) m u (paper 001 eq. 9 reached at once);
-//   2. two balls then move on together, rolling at their mean velocity (their
-//      momentum kept; 7/10 m v^2 is convex, so energy does not rise); a ball at
-//      a cushion loses its velocity into the cushion and rolls along it.
-// Afterwards nothing approaches and nothing presses, so the cascade ends. At
-// these speeds a bounce would move the balls by well under a millimetre.
-constexpr double kPushSpeed = 0.01;  // m/s
+// Slow and pressed contacts (resting_contact.hpp) below this closing speed
+// are parted by press_apart before any group is formed, m/s.
+constexpr double kPressSpeed = 1e-9;
 
 std::string num(double v) {
   char buf[32];
   std::snprintf(buf, sizeof buf, "%.9g", v);
   return buf;
-}
-
-// Step 1: the ball rolls, v1 = v - (2/7) u (w_z unchanged).
-void end_slip(BallState& s, double radius) {
-  s.velocity = s.velocity - (2.0 / 7.0) * slip_velocity(s, radius);
-  const Vec2 w = perp(s.velocity) / radius;
-  s.angular_velocity.x = w.x;
-  s.angular_velocity.y = w.y;
 }
 
 // A predicted event: ball index a, and b = the other ball's index (pairs) or
@@ -330,17 +310,17 @@ class Simulation {
   }
 
   // New states for the balls in `changed` at now_: new segments, new predictions.
-  void commit(std::initializer_list<int> changed) {
+  void commit(std::initializer_list<int> changed) { commit(std::span<const int>(changed.begin(), changed.size())); }
+  void commit(std::span<const int> changed) {
     for (int i : changed) {
       begin_segment(i);
       check_on_table(i);
     }
     for (int i : changed) predict_ball(i);
-    const int* first = changed.begin();
-    for (const int* i = first; i != changed.end(); ++i)
+    for (auto i = changed.begin(); i != changed.end(); ++i)
       for (int j = 0; j < n_; ++j) {
         // A pair of two changed balls is predicted once, with the first.
-        if (j != *i && std::find(first, i, j) == i) predict_pair(std::min(*i, j), std::max(*i, j));
+        if (j != *i && std::find(changed.begin(), i, j) == i) predict_pair(std::min(*i, j), std::max(*i, j));
       }
   }
 
@@ -377,16 +357,9 @@ class Simulation {
         commit({i});
         break;
       }
-      case EventType::ball_ball: {
-        const int j = c.b;
-        BallState a = state_at_now(i), b = state_at_now(j);
-        if (!push_balls(a, b)) std::tie(a, b) = collide_balls(a, b, p_.ball, settings_.ball_collision);
-        state_[k] = a;
-        state_[idx(j)] = b;
-        result_.events.push_back({now_, EventType::ball_ball, result_.balls[k].id, result_.balls[idx(j)].id});
-        commit({i, j});
+      case EventType::ball_ball:
+        resolve_ball_contact(i, c.b);
         break;
-      }
       case EventType::ball_cushion: {
         const CushionSegment& seg = table_.cushions[idx(c.b)];
         const Vec2 e = (seg.end - seg.start) / norm(seg.end - seg.start);
@@ -421,44 +394,138 @@ class Simulation {
     }
   }
 
-  // The plastic push of two touching balls (see kPushSpeed); false (nothing
-  // changed) unless they approach slowly.
-  bool push_balls(BallState& a, BallState& b) const {
-    const Vec2 n = (b.position - a.position) / norm(b.position - a.position);
-    if (!(-dot(b.velocity - a.velocity, n) < kPushSpeed)) return false;
-    end_slip(a, p_.ball.radius);
-    end_slip(b, p_.ball.radius);
-    const Vec2 mean = 0.5 * (a.velocity + b.velocity);
-    const Vec2 w = perp(mean) / p_.ball.radius;
-    a.velocity = b.velocity = mean;
-    a.angular_velocity.x = b.angular_velocity.x = w.x;
-    a.angular_velocity.y = b.angular_velocity.y = w.y;
-    return true;
+  // Two balls touching now: an impact when they close at kPushSpeed or
+  // faster, else a resting contact (resting_contact.hpp): press_apart for a
+  // pair with no closing speed whose slip presses it together, a group
+  // otherwise.
+  void resolve_ball_contact(int i, int j) {
+    BallState a = state_at_now(i), b = state_at_now(j);
+    const double closing = -dot(b.velocity - a.velocity, unit(b.position - a.position));
+    record(EventType::ball_ball, i, result_.balls[idx(j)].id);
+    if (closing >= kPushSpeed) {
+      std::tie(a, b) = collide_balls(a, b, p_.ball, settings_.ball_collision);
+    } else if (!(closing <= kPressSpeed && press_apart(a, b, p_.ball.radius))) {
+      push_group(i, j);
+      return;
+    }
+    state_[idx(i)] = a;
+    state_[idx(j)] = b;
+    commit({i, j});
   }
 
-  // The same for a ball pressed into a cushion or jaw with inward normal n.
-  bool push_wall(BallState& s, Vec2 n) const {
-    if (!(-dot(s.velocity, n) < kPushSpeed)) return false;
-    plastic_wall_contact(s, n);
-    return true;
+  static Vec2 unit(Vec2 d) { return d / norm(d); }
+
+  // The inward normal of each wall (cushion nose or jaw) that ball state s
+  // touches now, within kContactTolerance, with the event that names it.
+  struct WallContact {
+    Vec2 normal;
+    EventType type;
+    int index;
+    int ball;
+  };
+  void touching_walls(int ball, const BallState& s, std::vector<WallContact>& out) const {
+    for (std::size_t c = 0; c < cushion_lines_.size(); ++c) {
+      const ContactLine& line = cushion_lines_[c];
+      const Vec2 r = s.position - line.start;
+      const double foot = dot(line.direction, r);
+      if (foot < 0.0 || foot > line.length) continue;
+      if (std::abs(dot(line.normal, r) - line.contact_distance) <= kContactTolerance)
+        out.push_back({line.normal, EventType::ball_cushion, static_cast<int>(c), ball});
+    }
+    for (std::size_t j = 0; j < table_.jaws.size(); ++j) {
+      const Vec2 d = s.position - table_.jaws[j].centre;
+      if (std::abs(norm(d) - jaw_distance_[j]) <= kContactTolerance)
+        out.push_back({unit(d), EventType::ball_jaw, static_cast<int>(j), ball});
+    }
   }
 
-  // Ends the slip, then removes the velocity into the wall: the ball rolls on
-  // along it (energy only goes down).
-  void plastic_wall_contact(BallState& s, Vec2 n) const {
-    end_slip(s, p_.ball.radius);
-    const double into = dot(s.velocity, n);
-    if (into < 0.0) s.velocity = s.velocity - into * n;
-    const Vec2 w = perp(s.velocity) / p_.ball.radius;
-    s.angular_velocity.x = w.x;
-    s.angular_velocity.y = w.y;
+  // A slow contact of balls i and j: the group of balls that the contact
+  // gathers moves on as one, rolling at its mean velocity, less what walls
+  // it touches take away (resting_contact.hpp, 3.). A ball touching the
+  // group joins it when the group closes on it, slower than kPushSpeed
+  // (faster: an impact of its own at this instant).
+  void push_group(int i, int j) {
+    std::vector<int> group{i, j};
+    std::vector<BallState> now(idx(n_));
+    std::vector<char> member(idx(n_), 0);
+    for (int k = 0; k < n_; ++k)
+      if (active_[idx(k)]) now[idx(k)] = state_at_now(k);
+    member[idx(i)] = member[idx(j)] = 1;
+    std::vector<WallContact> walls;
+    Vec2 mean, v;
+    for (;;) {
+      Vec2 sum;
+      walls.clear();
+      for (int m : group) {
+        sum = sum + end_slip(now[idx(m)], p_.ball.radius).velocity;
+        touching_walls(m, now[idx(m)], walls);
+      }
+      mean = sum / static_cast<double>(group.size());
+      v = stay_out_of_walls(mean, walls);
+      const std::size_t before = group.size();
+      for (std::size_t g = 0; g < before; ++g) {
+        const int m = group[g];
+        for (int k = 0; k < n_; ++k) {
+          if (member[idx(k)] || !active_[idx(k)]) continue;
+          const Vec2 d = now[idx(k)].position - now[idx(m)].position;
+          if (norm(d) - contact_ > kContactTolerance) continue;
+          const double closing = -dot(now[idx(k)].velocity - v, unit(d));
+          if (closing > 0.0 && closing < kPushSpeed) {
+            member[idx(k)] = 1;
+            group.push_back(k);
+            record(EventType::ball_ball, m, result_.balls[idx(k)].id);
+          }
+        }
+      }
+      if (group.size() == before) break;
+    }
+    for (const WallContact& w : walls)
+      if (dot(mean, w.normal) < 0.0) record(w.type, w.ball, w.index);
+    for (int m : group) state_[idx(m)] = rolling_with(now[idx(m)], v, p_.ball.radius);
+    commit(std::span<const int>(group));
+  }
+
+  // v with no part into any of the walls (alternating projections onto the
+  // half-planes v . n >= 0: each shortens v, and they converge into the
+  // cone; two walls at an angle, a corner, leave nothing).
+  static Vec2 stay_out_of_walls(Vec2 v, const std::vector<WallContact>& walls) {
+    for (int sweep = 0; sweep < 64; ++sweep) {
+      bool inside = true;
+      for (const WallContact& w : walls) {
+        const double into = dot(v, w.normal);
+        if (into < 0.0) {
+          v = v - into * w.normal;
+          if (dot(v, w.normal) < 0.0) v = v - dot(v, w.normal) * w.normal;
+          inside = false;
+        }
+      }
+      if (inside) return v;
+    }
+    for (const WallContact& w : walls)
+      if (dot(v, w.normal) < -kMinApproachSpeed) return {};
+    return v;
+  }
+
+  // A slow or pressed contact with a wall (resting_contact.hpp, 1.). A ball
+  // leaving the wall is here only when it was found pressed, parting too
+  // slowly to clear kContactTolerance: it is held at the wall. Should the
+  // wall's impulses change nothing (a rolling ball's own deceleration
+  // pressing it), the ball rolls on along the wall: its slip ended, no
+  // normal velocity.
+  BallState rest_on_wall(BallState s, Vec2 n) const {
+    const double leaving = dot(s.velocity, n);
+    if (leaving > 0.0) s.velocity = s.velocity - leaving * n;
+    const BallState out = rest_against_wall(s, n, p_.ball.radius);
+    if (!(out.velocity == s.velocity && horizontal(out.angular_velocity) == horizontal(s.angular_velocity)) || leaving > 0.0)
+      return out;
+    const BallState rolled = end_slip(out, p_.ball.radius);
+    return rolling_with(rolled, rolled.velocity - dot(rolled.velocity, n) * n, p_.ball.radius);
   }
 
   // A ball meeting a cushion or jaw whose inward normal at the contact is n:
   // solved in the impact frame by the Mathavan model (exact solver).
   BallState wall_impact(const BallState& s, Vec2 n, const CushionImpactModel& model) const {
-    BallState pushed = s;
-    if (push_wall(pushed, n)) return pushed;
+    if (-dot(s.velocity, n) < kPushSpeed) return rest_on_wall(s, n);
     const ImpactFrame frame(n);
     IncomingBall in;
     in.velocity = frame.to_frame(s.velocity, 0.0);
@@ -470,9 +537,7 @@ class Simulation {
     } catch (const InfeasibleShot&) {
       // The model has no rebound: the ball wedges between cushion and bed
       // (normal velocity never reverses). Treated as a plastic contact.
-      BallState wedged = s;
-      plastic_wall_contact(wedged, n);
-      return wedged;
+      return rest_on_wall(s, n);
     }
     BallState out = s;
     out.velocity = frame.from_frame(r.velocity);
@@ -568,7 +633,7 @@ void validate_simulation_input(const Table& table, const std::vector<SimulationB
         throw InvalidArgument(ball_field(i, "id"), ball_field(i, "id") + " = " + std::to_string(balls[i].id) +
                                                        " is used twice (also by balls[" + std::to_string(j) + "])");
       const double d = norm(balls[i].state.position - balls[j].state.position);
-      if (d < 2 * radius - kOverlapTolerance)
+      if (d < 2 * radius - kContactTolerance)
         throw InvalidArgument(ball_field(i, "position"),
                               ball_field(i, "position") + ": balls " + std::to_string(balls[j].id) + " and " + std::to_string(balls[i].id) +
                                   " overlap by " + num(2 * radius - d) + " m (centres " + num(d) +

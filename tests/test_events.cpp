@@ -183,5 +183,55 @@ TEST(Events, CircleContactIsTheFirstEntry) {
   EXPECT_GT(hits, 30);
 }
 
+// Issue 11: a pair touching with no normal speed that its acceleration drives
+// together is a contact now; the root rule alone missed it for the whole
+// segment (a double root at 0, never crossed decreasing).
+TEST(Events, PressedContactsAreContactsNow) {
+  const Parameters p = pool_parameters();
+  const double r = p.ball.radius;
+  const Vec2 start{3.0, 1.0}, end{-1.0, 1.0};  // inward normal -y: the table is below y = 1
+  const double d = r;
+  // Sliding along the cushion, slip pulling it in (a swerve along a frozen rail).
+  const BallState swerve{{0.0, 1.0 - d}, {1.0, 0.0}, {-30.0, 1.0 / r, 0}};
+  const double h = next_transition(swerve, p).time;
+  const auto now = predict_ball_line_contact(swerve, p, start, end, d, h);
+  ASSERT_TRUE(now);
+  EXPECT_EQ(*now, 0.0);
+  // The same just beyond the tolerance is found by its root, at
+  // sqrt(2 gap / a): not now, not missed.
+  BallState near = swerve;
+  near.position.y -= 4e-9;
+  const auto soon = predict_ball_line_contact(near, p, start, end, d, h);
+  ASSERT_TRUE(soon);
+  const double a_n = -phase_acceleration(near, p).y;
+  EXPECT_NEAR(*soon, std::sqrt(2 * 4e-9 / -a_n), 1e-9);
+  // Slip pulling it off the cushion: no contact.
+  BallState off = swerve;
+  off.angular_velocity.x = 30.0;
+  EXPECT_FALSE(predict_ball_line_contact(off, p, start, end, d, h));
+  // Rolling along the cushion: nothing presses.
+  const BallState rolling{{0.0, 1.0 - d}, {1.0, 0.0}, {0, 1.0 / r, 0}};
+  EXPECT_FALSE(predict_ball_line_contact(rolling, p, start, end, d, next_transition(rolling, p).time));
+
+  // Two balls: a spinning ball against a resting one, touching, overlapping
+  // by round-off and parting at 1e-9 m/s (its spin turns it back at once).
+  const BallState resting{{0.0, 0.0}, {0, 0}, {0, 0, 0}};
+  const BallState spun{{2 * r - 1e-15, 0.0}, {1e-9, 0}, {0, -30, 0}};
+  const double hs = next_transition(spun, p).time;
+  const auto pressed = predict_ball_ball_contact(resting, spun, p, hs);
+  ASSERT_TRUE(pressed);
+  EXPECT_EQ(*pressed, 0.0);
+  // Parting at 1 mm/s it clears the contact first: the return is a later root.
+  BallState parting = spun;
+  parting.velocity.x = 1e-3;
+  const auto later = predict_ball_ball_contact(resting, parting, p, next_transition(parting, p).time);
+  ASSERT_TRUE(later);
+  EXPECT_GT(*later, 1e-4);
+  // A ball rolling past along the tangent of a touching one parts by the
+  // curvature of the contact circle: no contact.
+  const BallState passing{{0.0, 2 * r}, {1.0, 0}, {0, 1.0 / r, 0}};
+  EXPECT_FALSE(predict_ball_ball_contact(resting, passing, p, next_transition(passing, p).time));
+}
+
 }  // namespace
 }  // namespace cueball

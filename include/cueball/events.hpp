@@ -21,6 +21,11 @@
 // approaches nor separates, is no collision: no impulse would be exchanged;
 // neither is an approach slower than 1e-12 m/s (round-off of a contact just
 // resolved, which even sustained for a whole shot moves a ball < 1e-10 m).
+// A pair touching now (gap within kContactTolerance, either side) with no
+// normal speed whose relative acceleration drives it together (a sliding
+// ball curving into a rail, spin pressing a resting ball into a contact) is a
+// contact now (t = 0): f has a double root at 0 and never crosses it
+// decreasing, so the root rule alone would miss it for the whole segment.
 //
 // `horizon` is how long the current pieces of trajectory stay valid (the
 // earliest next transition of the balls involved); roots beyond it are not
@@ -33,6 +38,14 @@
 #include "cueball/parameters.hpp"
 
 namespace cueball {
+
+/// Gap within which two bodies count as touching, m, either side of contact
+/// (the simulator accepts balls overlapping by up to this much).
+inline constexpr double kContactTolerance = 1e-9;
+/// Normal approach speeds below this count as none, m/s: round-off (e.g. of a
+/// contact just resolved), which even sustained for a whole shot would move a
+/// ball by less than 1e-10 m.
+inline constexpr double kMinApproachSpeed = 1e-12;
 
 /// Constant acceleration of the ball's centre in its current motion phase.
 Vec2 phase_acceleration(const BallState& s, const Parameters& p);

@@ -1,0 +1,67 @@
+// Resting contacts: see resting_contact.hpp for the model and its argument.
+#include "cueball/resting_contact.hpp"
+
+#include "cueball/events.hpp"
+
+namespace cueball {
+
+namespace {
+
+// The spin change that alters the slip u = v + R z^ x w by du without
+// touching v: w -> w - (1/R) z^ x du (the torque of a friction impulse at
+// the bed, (2/5) m du, whose push on the centre is cancelled by a reaction).
+void change_slip_by_spin(BallState& s, Vec2 du, double radius) {
+  s.angular_velocity.x += du.y / radius;
+  s.angular_velocity.y -= du.x / radius;
+}
+
+}  // namespace
+
+BallState rolling_with(const BallState& s, Vec2 velocity, double radius) {
+  const Vec2 w = perp(velocity) / radius;
+  return {s.position, velocity, {w.x, w.y, s.angular_velocity.z}};
+}
+
+BallState end_slip(const BallState& s, double radius) {
+  return rolling_with(s, s.velocity - (2.0 / 7.0) * slip_velocity(s, radius), radius);
+}
+
+BallState rest_against_wall(const BallState& s, Vec2 n, double radius) {
+  BallState out = s;
+  // a. plastic; a normal speed within round-off of zero is made zero, so
+  // that a rolling ball moving along the wall is not left drifting into it.
+  const double into = dot(out.velocity, n);
+  const bool leaving = into >= kMinApproachSpeed;
+  if (!leaving) out.velocity = out.velocity - into * n;
+  // b. the pressing slip, while the ball is not leaving the wall (a wall
+  // cannot push a ball that moves away from it).
+  const double pressing = dot(slip_velocity(out, radius), n);
+  if (pressing > 0.0 && !leaving) change_slip_by_spin(out, -pressing * n, radius);
+  return out;
+}
+
+bool press_apart(BallState& a, BallState& b, double radius) {
+  const Vec2 n = (b.position - a.position) / norm(b.position - a.position);  // a -> b
+  // Any normal relative speed (of round-off size, or a parting too slow to
+  // clear the contact) is absorbed first (plastic, momentum kept).
+  const double closing = -dot(b.velocity - a.velocity, n);
+  bool changed = false;
+  if (closing != 0.0) {
+    a.velocity = a.velocity - (0.5 * closing) * n;
+    b.velocity = b.velocity + (0.5 * closing) * n;
+    changed = true;
+  }
+  // a's friction, -mu_s g u^, points at b when u_a . n < 0; b's at a when u_b . n > 0.
+  const double a_presses = -dot(slip_velocity(a, radius), n);
+  const double b_presses = dot(slip_velocity(b, radius), n);
+  if (!(a_presses > 0.0) && !(b_presses > 0.0)) return changed;
+  const double push_b = a_presses > 0.0 ? (2.0 / 5.0) * a_presses : 0.0;  // J / m on b, along n
+  const double push_a = b_presses > 0.0 ? (2.0 / 5.0) * b_presses : 0.0;  // J / m on a, along -n
+  if (a_presses > 0.0) change_slip_by_spin(a, a_presses * n, radius);
+  if (b_presses > 0.0) change_slip_by_spin(b, -b_presses * n, radius);
+  a.velocity = a.velocity - push_a * n;
+  b.velocity = b.velocity + push_b * n;
+  return true;
+}
+
+}  // namespace cueball

@@ -110,10 +110,11 @@ std::optional<double> predict_contact(const QuadraticPath& a, const QuadraticPat
   if (dv == Vec2{} && da == Vec2{}) return std::nullopt;  // no relative motion
   // Cheap rejection: the relative path's hull never comes within contact.
   if (std::isfinite(horizon) && !hull_reaches_origin(bezier_hull(dr, dv, da, horizon), contact)) return std::nullopt;
-  if (pair_pressed_now(dr, dv, da, contact)) return 0.0;
   // |dr + dv t + da t^2/2|^2 - contact^2, ascending powers.
   const std::array<double, 5> c{dot(dr, dr) - contact * contact, 2.0 * dot(dr, dv), dot(dv, dv) + dot(dr, da),
                                 dot(dv, da), 0.25 * dot(da, da)};
+  // c[0] ~ 2 contact gap: only a pair within the tolerance can be pressed now.
+  if (c[0] <= 3.0 * contact * kContactTolerance && pair_pressed_now(dr, dv, da, contact)) return 0.0;
   return earliest_entering_root(c, horizon, [&](double t) {
     const Vec2 d = dr + t * dv + (0.5 * t * t) * da;
     return dot(d, dv + t * da) / contact;  // normal relative velocity at contact, m/s

@@ -41,27 +41,25 @@ BallState rest_against_wall(const BallState& s, Vec2 n, double radius) {
 }
 
 bool press_apart(BallState& a, BallState& b, double radius) {
+  const BallState a0 = a, b0 = b;
   const Vec2 n = (b.position - a.position) / norm(b.position - a.position);  // a -> b
   // Any normal relative speed (of round-off size, or a parting too slow to
   // clear the contact) is absorbed first (plastic, momentum kept).
   const double closing = -dot(b.velocity - a.velocity, n);
-  bool changed = false;
-  if (closing != 0.0) {
-    a.velocity = a.velocity - (0.5 * closing) * n;
-    b.velocity = b.velocity + (0.5 * closing) * n;
-    changed = true;
-  }
+  a.velocity = a.velocity - (0.5 * closing) * n;
+  b.velocity = b.velocity + (0.5 * closing) * n;
   // a's friction, -mu_s g u^, points at b when u_a . n < 0; b's at a when u_b . n > 0.
   const double a_presses = -dot(slip_velocity(a, radius), n);
   const double b_presses = dot(slip_velocity(b, radius), n);
-  if (!(a_presses > 0.0) && !(b_presses > 0.0)) return changed;
   const double push_b = a_presses > 0.0 ? (2.0 / 5.0) * a_presses : 0.0;  // J / m on b, along n
   const double push_a = b_presses > 0.0 ? (2.0 / 5.0) * b_presses : 0.0;  // J / m on a, along -n
   if (a_presses > 0.0) change_slip_by_spin(a, a_presses * n, radius);
   if (b_presses > 0.0) change_slip_by_spin(b, -b_presses * n, radius);
   a.velocity = a.velocity - push_a * n;
   b.velocity = b.velocity + push_b * n;
-  return true;
+  // Changes below the resolution of the numbers are no change.
+  return !(a.velocity == a0.velocity && b.velocity == b0.velocity && a.angular_velocity == a0.angular_velocity &&
+           b.angular_velocity == b0.angular_velocity);
 }
 
 }  // namespace cueball

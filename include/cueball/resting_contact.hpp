@@ -89,7 +89,7 @@ BallState rest_against_wall(const BallState& s, Vec2 n, double radius);
 /// Two touching balls, a and b, held in contact (closing by round-off, or
 /// parting too slowly to clear it): absorbs their normal relative speed
 /// (plastic), then removes the slip that presses each into the other (2.
-/// above). Returns false when nothing changed.
+/// above). Returns false when nothing changed (bit for bit).
 bool press_apart(BallState& a, BallState& b, double radius);
 
 }  // namespace cueball

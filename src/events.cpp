@@ -11,15 +11,57 @@ namespace cueball {
 
 namespace {
 
-// The earliest root of f in [0, horizon] at which f is decreasing (entering
-// contact), f given by ascending coefficients and f' by `slope`, which is
-// scaled so that it is a normal approach speed in m/s when negative. A
-// contact function already <= 0 and decreasing at t = 0 means contact now.
-// Approach speeds below kMinApproachSpeed count as none (events.hpp).
+// Which contact counts (events.hpp). A contact at one instant is described
+// by its gap g (m, < 0 overlapping), normal speed g1 (m/s, < 0 closing) and
+// normal acceleration g2 (m/s^2, < 0 driving it together).
+struct GapKinematics {
+  double g, g1, g2;
+};
 
-template <std::size_t N, typename Slope>
-std::optional<double> earliest_entering_root(const std::array<double, N>& c, double horizon, Slope slope) {
-  if (c[0] <= 0.0 && slope(0.0) < -kMinApproachSpeed) return 0.0;
+// Closing into contact, and not a graze: a pair closing so slowly that its
+// own relative motion (g2 > 0: the curvature of a path past a ball or jaw)
+// turns it back before it is kGrazeDepth deep never really meets (a ball
+// running along a cushion past the point where a jaw is tangent to it closes
+// on the jaw at ~1e-8 m/s, 1e-17 m deep); taking it as a contact would only
+// set two nearly parallel walls against each other at one instant. A thin
+// cut a nanometre deep is still a contact. Approach speeds below
+// kMinApproachSpeed are none.
+constexpr double kGrazeDepth = 1e-12;  // m
+
+bool closing(const GapKinematics& k) {
+  if (!(k.g1 < -kMinApproachSpeed)) return false;
+  return !(k.g2 > 0.0) || k.g - k.g1 * k.g1 / (2.0 * k.g2) < -kGrazeDepth;
+}
+
+// A pair touching (gap within kContactTolerance, overlap by round-off
+// included) that is not closing (g1 >= -1e-12) but whose relative normal
+// acceleration drives it together, parting (if at all) too slowly to get
+// farther than kContactTolerance apart before it turns back: it would enter
+// the contact at once, yet f has a (near) double root at 0 with no
+// decreasing crossing, so the root rule alone cannot see it. Accelerations
+// below kMinPressAcceleration are round-off (|a| ~ 2 m/s^2 carries ~1e-16 of
+// it); sustained over a 1 s slide, 1e-9 m/s^2 moves a ball 5e-10 m.
+constexpr double kMinPressAcceleration = 1e-9;  // m/s^2
+
+bool pressed(const GapKinematics& k) {
+  if (!(k.g <= kContactTolerance && k.g1 >= -kMinApproachSpeed && k.g2 < -kMinPressAcceleration)) return false;
+  const double parting = std::max(k.g1, 0.0);
+  return k.g + parting * parting / (2.0 * -k.g2) <= kContactTolerance;
+}
+
+// A contact now (t = 0): touching or overlapping and closing, or pressed.
+// Closing from a gap of up to `closing_gap` counts.
+bool entering_now(const GapKinematics& k, double closing_gap = 0.0) {
+  return (k.g <= closing_gap && closing(k)) || pressed(k);
+}
+
+// The earliest t in [0, horizon] at which the contact is entered: now, or a
+// root of the contact function f (ascending coefficients) at which it is
+// closing. `at(t)` gives the gap kinematics at time t.
+template <std::size_t N, typename At>
+std::optional<double> earliest_entering_root(const std::array<double, N>& c, double horizon, At at,
+                                             bool may_touch_now) {
+  if (may_touch_now && entering_now(at(0.0))) return 0.0;
   RealRoots<N - 1> roots;
   if constexpr (N == 3) {
     roots = solve_quadratic(c);
@@ -29,36 +71,33 @@ std::optional<double> earliest_entering_root(const std::array<double, N>& c, dou
   for (double t : roots) {
     if (t < 0.0) continue;
     if (t > horizon) break;
-    if (slope(t) < -kMinApproachSpeed) return t;
+    if (closing(at(t))) return t;
   }
   return std::nullopt;
 }
 
-// A pair touching at t = 0 (gap g within kContactTolerance, overlap by
-// round-off included) that is not approaching (normal speed g1 >= -1e-12)
-// but whose relative normal acceleration g2 drives it together, parting (if
-// at all) too slowly to get farther than kContactTolerance apart before it
-// turns back: it would enter the contact at once, yet f has a (near) double
-// root at 0 with no decreasing crossing, so the root rule above cannot see
-// it. Pressed contacts are contacts now. Accelerations below
-// kMinPressAcceleration are round-off (|a| ~ 2 m/s^2 carries ~1e-16 of it);
-// sustained over a 1 s slide, 1e-9 m/s^2 moves a ball 5e-10 m.
-constexpr double kMinPressAcceleration = 1e-9;  // m/s^2
-
-bool pressed_now(double g, double g1, double g2) {
-  if (!(g <= kContactTolerance && g1 >= -kMinApproachSpeed && g2 < -kMinPressAcceleration)) return false;
-  const double parting = std::max(g1, 0.0);
-  return g + parting * parting / (2.0 * -g2) <= kContactTolerance;
+// Gap kinematics of |d(t)| against the contact distance, d(t) = dr + dv t +
+// da t^2/2 the relative path: the normal acceleration carries the curvature
+// term |w_t|^2 / |d| of the relative velocity w's tangential part.
+GapKinematics pair_kinematics(Vec2 dr, Vec2 dv, Vec2 da, double contact, double t) {
+  const Vec2 d = dr + t * dv + (0.5 * t * t) * da;
+  const Vec2 w = dv + t * da;
+  const double r = norm(d);
+  if (!(r > 0.0)) return {-contact, 0.0, 0.0};
+  const double g1 = dot(d, w) / r;
+  return {r - contact, g1, (dot(w, w) - g1 * g1 + dot(d, da)) / r};
 }
 
-// The same for the distance between two centres d(t) = dr + dv t + da t^2/2
-// against the contact distance: gap, normal speed and normal acceleration
-// of |d| at t = 0 (the last with the curvature term |dv_t|^2 / |d|).
-bool pair_pressed_now(Vec2 dr, Vec2 dv, Vec2 da, double contact) {
-  const double d = norm(dr);
-  if (!(d > 0.0)) return false;
-  const double g1 = dot(dr, dv) / d;
-  return pressed_now(d - contact, g1, (dot(dv, dv) - g1 * g1 + dot(dr, da)) / d);
+GapKinematics line_kinematics(const QuadraticPath& s, const ContactLine& line, double t) {
+  const Vec2 r = s.position - line.start + t * s.velocity + (0.5 * t * t) * s.acceleration;
+  return {dot(line.normal, r) - line.contact_distance, dot(line.normal, s.velocity + t * s.acceleration),
+          dot(line.normal, s.acceleration)};
+}
+
+bool within_segment(const QuadraticPath& s, const ContactLine& line, double t) {
+  const Vec2 r = s.position - line.start + t * s.velocity + (0.5 * t * t) * s.acceleration;
+  const double foot = dot(line.direction, r);
+  return foot >= 0.0 && foot <= line.length;  // beyond the segment: a jaw's business
 }
 
 // Control points of the relative path d(t) = d0 + v t + a t^2/2 over [0, h]
@@ -113,12 +152,16 @@ std::optional<double> predict_contact(const QuadraticPath& a, const QuadraticPat
   // |dr + dv t + da t^2/2|^2 - contact^2, ascending powers.
   const std::array<double, 5> c{dot(dr, dr) - contact * contact, 2.0 * dot(dr, dv), dot(dv, dv) + dot(dr, da),
                                 dot(dv, da), 0.25 * dot(da, da)};
-  // c[0] ~ 2 contact gap: only a pair within the tolerance can be pressed now.
-  if (c[0] <= 3.0 * contact * kContactTolerance && pair_pressed_now(dr, dv, da, contact)) return 0.0;
-  return earliest_entering_root(c, horizon, [&](double t) {
-    const Vec2 d = dr + t * dv + (0.5 * t * t) * da;
-    return dot(d, dv + t * da) / contact;  // normal relative velocity at contact, m/s
-  });
+  // c[0] ~ 2 contact gap: only a pair within the tolerance can touch now.
+  return earliest_entering_root(
+      c, horizon, [&](double t) { return pair_kinematics(dr, dv, da, contact, t); },
+      c[0] <= 3.0 * contact * kContactTolerance);
+}
+
+bool contact_now(const QuadraticPath& a, const QuadraticPath& b, double contact) {
+  return entering_now(pair_kinematics(b.position - a.position, b.velocity - a.velocity,
+                                      b.acceleration - a.acceleration, contact, 0.0),
+                      kContactTolerance);
 }
 
 ContactLine contact_line(Vec2 start, Vec2 end, double contact_distance) {
@@ -139,14 +182,14 @@ std::optional<double> predict_line_contact(const QuadraticPath& s, const Contact
     const Hull h = bezier_hull(r0, s.velocity, a, horizon);
     if (dot(n, h.p0) > d && dot(n, h.p1) > d && dot(n, h.p2) > d) return std::nullopt;
   }
-  const auto t = pressed_now(c[0], c[1], 2.0 * c[2])
-                     ? std::optional<double>(0.0)
-                     : earliest_entering_root(c, horizon, [&](double tt) { return dot(n, s.velocity + tt * a); });
-  if (!t) return std::nullopt;
-  const Vec2 r = r0 + *t * s.velocity + (0.5 * *t * *t) * a;
-  const double foot = dot(line.direction, r);
-  if (foot < 0.0 || foot > line.length) return std::nullopt;  // beyond the segment: a jaw's business
+  const auto t = earliest_entering_root(
+      c, horizon, [&](double tt) { return line_kinematics(s, line, tt); }, c[0] <= kContactTolerance);
+  if (!t || !within_segment(s, line, *t)) return std::nullopt;
   return t;
+}
+
+bool line_contact_now(const QuadraticPath& s, const ContactLine& line) {
+  return within_segment(s, line, 0.0) && entering_now(line_kinematics(s, line, 0.0), kContactTolerance);
 }
 
 std::optional<double> predict_line_contact(const QuadraticPath& s, Vec2 start, Vec2 end, double contact_distance,

@@ -1,6 +1,8 @@
 // Resting contacts: see resting_contact.hpp for the model and its argument.
 #include "cueball/resting_contact.hpp"
 
+#include <array>
+
 #include "cueball/events.hpp"
 
 namespace cueball {
@@ -26,18 +28,53 @@ BallState end_slip(const BallState& s, double radius) {
   return rolling_with(s, s.velocity - (2.0 / 7.0) * slip_velocity(s, radius), radius);
 }
 
-BallState rest_against_wall(const BallState& s, Vec2 n, double radius) {
+Vec2 nearest_clear_of_walls(Vec2 v, std::span<const Vec2> normals) {
+  const double slack = 1e-14 * norm(v);  // a projection's own round-off
+  const auto clear = [&](Vec2 w) {
+    for (Vec2 n : normals)
+      if (dot(w, n) < -slack) return false;
+    return true;
+  };
+  if (clear(v)) return v;
+  // The allowed set is a cone in the plane: the nearest point of it is the
+  // projection onto one of its edges, or its apex.
+  Vec2 best{};
+  double best_distance = dot(v, v);
+  for (Vec2 n : normals) {
+    const double into = dot(v, n);
+    if (!(into < 0.0)) continue;
+    const Vec2 w = v - into * n;
+    if (clear(w) && into * into < best_distance) {
+      best = w;
+      best_distance = into * into;
+    }
+  }
+  return best;
+}
+
+BallState rest_against_walls(const BallState& s, std::span<const Vec2> normals, double radius) {
   BallState out = s;
-  // a. plastic; a normal speed within round-off of zero is made zero, so
-  // that a rolling ball moving along the wall is not left drifting into it.
-  const double into = dot(out.velocity, n);
-  const bool leaving = into >= kMinApproachSpeed;
-  if (!leaving) out.velocity = out.velocity - into * n;
-  // b. the pressing slip, while the ball is not leaving the wall (a wall
-  // cannot push a ball that moves away from it).
-  const double pressing = dot(slip_velocity(out, radius), n);
-  if (pressing > 0.0 && !leaving) change_slip_by_spin(out, -pressing * n, radius);
+  // a. plastic: the velocity into the walls the ball is not leaving (normal
+  // speed below kMinApproachSpeed) goes.
+  std::array<Vec2, kMaxWalls> held{};
+  std::size_t count = 0;
+  for (Vec2 n : normals)
+    if (dot(s.velocity, n) < kMinApproachSpeed && count < held.size()) held[count++] = n;
+  out.velocity = nearest_clear_of_walls(s.velocity, std::span<const Vec2>(held.data(), count));
+  // b. the pressing slip, against the walls the ball still rests on (a wall
+  // cannot push a ball that moves away from it): the nearest slip that
+  // presses into none of them, reached through the spin.
+  std::size_t resting = 0;
+  for (std::size_t k = 0; k < count; ++k)
+    if (dot(out.velocity, held[k]) < kMinApproachSpeed) held[resting++] = held[k];
+  const Vec2 u = slip_velocity(out, radius);
+  const Vec2 clear = -nearest_clear_of_walls(-u, std::span<const Vec2>(held.data(), resting));
+  if (!(clear == u)) change_slip_by_spin(out, clear - u, radius);
   return out;
+}
+
+BallState rest_against_wall(const BallState& s, Vec2 n, double radius) {
+  return rest_against_walls(s, std::span<const Vec2>(&n, 1), radius);
 }
 
 bool press_apart(BallState& a, BallState& b, double radius) {

@@ -363,7 +363,7 @@ class Simulation {
       case EventType::ball_cushion: {
         const CushionSegment& seg = table_.cushions[idx(c.b)];
         const Vec2 e = (seg.end - seg.start) / norm(seg.end - seg.start);
-        state_[k] = wall_impact(state_at_now(i), perp(e), cushion_models_[idx(c.b)]);
+        state_[k] = wall_impact(i, state_at_now(i), perp(e), cushion_models_[idx(c.b)]);
         record(EventType::ball_cushion, i, c.b);
         commit({i});
         break;
@@ -371,7 +371,7 @@ class Simulation {
       case EventType::ball_jaw: {
         const BallState s = state_at_now(i);
         const Vec2 d = s.position - table_.jaws[idx(c.b)].centre;
-        state_[k] = wall_impact(s, d / norm(d), jaw_models_[idx(c.b)]);
+        state_[k] = wall_impact(i, s, d / norm(d), jaw_models_[idx(c.b)]);
         record(EventType::ball_jaw, i, c.b);
         commit({i});
         break;
@@ -416,25 +416,25 @@ class Simulation {
   static Vec2 unit(Vec2 d) { return d / norm(d); }
 
   // The inward normal of each wall (cushion nose or jaw) that ball state s
-  // touches now, within kContactTolerance, with the event that names it.
+  // is entering now (touching and closing, or pressed: events.hpp), with the
+  // event that names it. A wall the ball only grazes is not one of them.
   struct WallContact {
     Vec2 normal;
     EventType type;
     int index;
     int ball;
   };
-  void touching_walls(int ball, const BallState& s, std::vector<WallContact>& out) const {
+  void walls_entered(int ball, const BallState& s, std::vector<WallContact>& out) const {
+    const QuadraticPath path = quadratic_path(s, p_);
     for (std::size_t c = 0; c < cushion_lines_.size(); ++c) {
-      const ContactLine& line = cushion_lines_[c];
-      const Vec2 r = s.position - line.start;
-      const double foot = dot(line.direction, r);
-      if (foot < 0.0 || foot > line.length) continue;
-      if (std::abs(dot(line.normal, r) - line.contact_distance) <= kContactTolerance)
-        out.push_back({line.normal, EventType::ball_cushion, static_cast<int>(c), ball});
+      if (!boxes_within({s.position, s.position}, cushion_boxes_[c], 0.0)) continue;
+      if (line_contact_now(path, cushion_lines_[c]))
+        out.push_back({cushion_lines_[c].normal, EventType::ball_cushion, static_cast<int>(c), ball});
     }
     for (std::size_t j = 0; j < table_.jaws.size(); ++j) {
       const Vec2 d = s.position - table_.jaws[j].centre;
-      if (std::abs(norm(d) - jaw_distance_[j]) <= kContactTolerance)
+      if (std::abs(norm(d) - jaw_distance_[j]) > kContactTolerance) continue;
+      if (contact_now({table_.jaws[j].centre, {}, {}}, path, jaw_distance_[j]))
         out.push_back({unit(d), EventType::ball_jaw, static_cast<int>(j), ball});
     }
   }
@@ -452,25 +452,28 @@ class Simulation {
       if (active_[idx(k)]) now[idx(k)] = state_at_now(k);
     member[idx(i)] = member[idx(j)] = 1;
     std::vector<WallContact> walls;
+    std::vector<Vec2> normals;
     Vec2 mean, v;
     for (;;) {
       Vec2 sum;
-      walls.clear();
-      for (int m : group) {
-        sum = sum + end_slip(now[idx(m)], p_.ball.radius).velocity;
-        touching_walls(m, now[idx(m)], walls);
-      }
+      for (int m : group) sum = sum + end_slip(now[idx(m)], p_.ball.radius).velocity;
       mean = sum / static_cast<double>(group.size());
-      v = stay_out_of_walls(mean, walls);
+      // The walls the group, rolling at its mean velocity, would enter.
+      walls.clear();
+      for (int m : group) walls_entered(m, rolling_with(now[idx(m)], mean, p_.ball.radius), walls);
+      normals.clear();
+      for (const WallContact& w : walls) normals.push_back(w.normal);
+      v = nearest_clear_of_walls(mean, normals);
       const std::size_t before = group.size();
       for (std::size_t g = 0; g < before; ++g) {
         const int m = group[g];
+        const QuadraticPath moving = quadratic_path(rolling_with(now[idx(m)], v, p_.ball.radius), p_);
         for (int k = 0; k < n_; ++k) {
           if (member[idx(k)] || !active_[idx(k)]) continue;
           const Vec2 d = now[idx(k)].position - now[idx(m)].position;
           if (norm(d) - contact_ > kContactTolerance) continue;
           const double closing = -dot(now[idx(k)].velocity - v, unit(d));
-          if (closing > 0.0 && closing < kPushSpeed) {
+          if (closing < kPushSpeed && contact_now(moving, quadratic_path(now[idx(k)], p_), contact_)) {
             member[idx(k)] = 1;
             group.push_back(k);
             record(EventType::ball_ball, m, result_.balls[idx(k)].id);
@@ -485,47 +488,34 @@ class Simulation {
     commit(std::span<const int>(group));
   }
 
-  // v with no part into any of the walls (alternating projections onto the
-  // half-planes v . n >= 0: each shortens v, and they converge into the
-  // cone; two walls at an angle, a corner, leave nothing).
-  static Vec2 stay_out_of_walls(Vec2 v, const std::vector<WallContact>& walls) {
-    for (int sweep = 0; sweep < 64; ++sweep) {
-      bool inside = true;
-      for (const WallContact& w : walls) {
-        const double into = dot(v, w.normal);
-        if (into < 0.0) {
-          v = v - into * w.normal;
-          if (dot(v, w.normal) < 0.0) v = v - dot(v, w.normal) * w.normal;
-          inside = false;
-        }
-      }
-      if (inside) return v;
-    }
-    for (const WallContact& w : walls)
-      if (dot(v, w.normal) < -kMinApproachSpeed) return {};
-    return v;
-  }
-
-  // A slow or pressed contact with a wall (resting_contact.hpp, 1.). A ball
+  // A slow or pressed contact of ball i with a wall of inward normal n
+  // (resting_contact.hpp, 1.), taken together with every other wall it
+  // touches (a cushion and a jaw at their tangent point, a corner). A ball
   // leaving the wall is here only when it was found pressed, parting too
   // slowly to clear kContactTolerance: it is held at the wall. Should the
-  // wall's impulses change nothing (a rolling ball's own deceleration
+  // walls' impulses change nothing (a rolling ball's own deceleration
   // pressing it), the ball rolls on along the wall: its slip ended, no
   // normal velocity.
-  BallState rest_on_wall(BallState s, Vec2 n) const {
+  BallState rest_on_wall(int i, BallState s, Vec2 n) const {
     const double leaving = dot(s.velocity, n);
     if (leaving > 0.0) s.velocity = s.velocity - leaving * n;
-    const BallState out = rest_against_wall(s, n, p_.ball.radius);
+    std::vector<WallContact> walls;
+    walls_entered(i, s, walls);
+    std::vector<Vec2> normals{n};
+    for (const WallContact& w : walls)
+      if (normals.size() < kMaxWalls) normals.push_back(w.normal);
+    const BallState out = rest_against_walls(s, normals, p_.ball.radius);
     if (!(out.velocity == s.velocity && horizontal(out.angular_velocity) == horizontal(s.angular_velocity)) || leaving > 0.0)
       return out;
     const BallState rolled = end_slip(out, p_.ball.radius);
-    return rolling_with(rolled, rolled.velocity - dot(rolled.velocity, n) * n, p_.ball.radius);
+    const Vec2 along = rolled.velocity - dot(rolled.velocity, n) * n;
+    return rolling_with(rolled, nearest_clear_of_walls(along, normals), p_.ball.radius);
   }
 
   // A ball meeting a cushion or jaw whose inward normal at the contact is n:
   // solved in the impact frame by the Mathavan model (exact solver).
-  BallState wall_impact(const BallState& s, Vec2 n, const CushionImpactModel& model) const {
-    if (-dot(s.velocity, n) < kPushSpeed) return rest_on_wall(s, n);
+  BallState wall_impact(int i, const BallState& s, Vec2 n, const CushionImpactModel& model) const {
+    if (-dot(s.velocity, n) < kPushSpeed) return rest_on_wall(i, s, n);
     const ImpactFrame frame(n);
     IncomingBall in;
     in.velocity = frame.to_frame(s.velocity, 0.0);
@@ -537,7 +527,7 @@ class Simulation {
     } catch (const InfeasibleShot&) {
       // The model has no rebound: the ball wedges between cushion and bed
       // (normal velocity never reverses). Treated as a plastic contact.
-      return rest_on_wall(s, n);
+      return rest_on_wall(i, s, n);
     }
     BallState out = s;
     out.velocity = frame.from_frame(r.velocity);

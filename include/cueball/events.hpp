@@ -15,7 +15,8 @@
 //
 // Which root (equipment-and-pitfalls.md, items 2-4): the earliest root in
 // [0, horizon] at which the pair is approaching (the contact function is
-// decreasing). A pair already touching or overlapping by round-off that is
+// decreasing), unless it is a graze so slow that the pair's own relative
+// motion turns it back within 1e-12 m (it never really meets). A pair already touching or overlapping by round-off that is
 // approaching collides now (t = 0); one that is touching and separating does
 // not collide again. A tangent (grazing) root, where the pair neither
 // approaches nor separates, is no collision: no impulse would be exchanged;
@@ -92,6 +93,15 @@ struct ContactLine {
 ContactLine contact_line(Vec2 start, Vec2 end, double contact_distance);
 std::optional<double> predict_line_contact(const QuadraticPath& s, const ContactLine& line, double horizon);
 std::optional<double> predict_circle_contact(const QuadraticPath& s, Vec2 centre, double distance, double horizon);
+
+/// Whether the pair is entering contact at this instant by the rules above:
+/// touching within kContactTolerance and closing, not a graze, or pressed.
+/// (predict_contact reports a closing pair at t = 0 only once it touches: its
+/// root lies a gap of up to 1e-9 m ahead.) A circle (jaw) is a path with no
+/// motion.
+bool contact_now(const QuadraticPath& a, const QuadraticPath& b, double contact_distance);
+/// The same for a straight cushion nose (foot of the perpendicular within it).
+bool line_contact_now(const QuadraticPath& s, const ContactLine& line);
 
 /// Earliest time in [0, horizon] at which balls a and b (same radius) touch
 /// while approaching.

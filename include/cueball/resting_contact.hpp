@@ -64,6 +64,9 @@
 // Newton's cradle passes its impulse down the line).
 #pragma once
 
+#include <cstddef>
+#include <span>
+
 #include "cueball/cloth_motion.hpp"
 #include "cueball/vec.hpp"
 
@@ -79,6 +82,21 @@ BallState rolling_with(const BallState& s, Vec2 velocity, double radius);
 /// The ball after the friction impulse that ends its slip, -(2/7) m u (paper
 /// 001 eq. 9): it rolls at v - (2/7) u.
 BallState end_slip(const BallState& s, double radius);
+
+/// The nearest velocity to v with no part into any wall of inward normals
+/// `normals` (v'.n >= 0 for each): v itself, its projection onto one wall, or
+/// zero (a corner). Exact: the allowed set is a cone in the plane.
+Vec2 nearest_clear_of_walls(Vec2 v, std::span<const Vec2> normals);
+
+/// The most walls one ball can touch at once that rest_against_walls takes
+/// into account (a cushion and a jaw at their tangent point, a corner).
+inline constexpr std::size_t kMaxWalls = 8;
+
+/// rest_against_wall against every wall the ball touches at once (1. above
+/// with the projections onto the cone of the walls: the walls' reactions are
+/// then pushes, and the friction's work is -(1/5) m |du|^2). Walls beyond
+/// kMaxWalls are ignored.
+BallState rest_against_walls(const BallState& s, std::span<const Vec2> normals, double radius);
 
 /// A ball touching a wall whose inward normal at the contact is `n` (unit),
 /// slow or pressed (1. above): the state with no velocity into the wall and,

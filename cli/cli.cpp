@@ -1,11 +1,19 @@
 #include "cli.hpp"
 
+#include <cerrno>
 #include <cmath>
+#include <cstring>
+#include <map>
 #include <cstdio>
+#include <cstdlib>
 #include <fstream>
 #include <sstream>
 #include <ostream>
 #include <vector>
+
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
 
 #include "common.hpp"
 #include "cueball/errors.hpp"
@@ -19,6 +27,9 @@ constexpr const char* kDescription =
     "Units are SI (m, s, kg, rad). Table frame: x, y on the bed, z up; a straight shot travels\n"
     "along +x. Topspin w0 > 0 turns the ball the way it rolls (R w0 = v0 is natural roll),\n"
     "w0 < 0 is draw. Side spin w_z > 0 is anticlockwise seen from above.";
+
+// Longest value a flag takes (PATH_MAX).
+constexpr std::size_t kMaxValueBytes = 4096;
 
 std::string format_value(double v) {
   char buf[32];
@@ -34,18 +45,53 @@ std::string flag_for_field(const std::string& field) {
   return flag;
 }
 
-std::string read_text_file(const std::string& path, const std::string& what) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw UsageError(path + ": cannot open " + what);
-  std::ostringstream text;
-  text << in.rdbuf();
-  return text.str();
+std::string read_text_file(const std::string& path, const std::string& what, std::size_t max_bytes) {
+  // POSIX reads with a cap: a never-ending file (/dev/zero, a FIFO fed
+  // forever) or a huge one is refused after max_bytes, not read until memory
+  // runs out.
+  const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
+  if (fd < 0) throw UsageError(quote_input(path, kMaxEchoedPathChars) + ": cannot open " + what + " (" + std::strerror(errno) + ")");
+  struct Closer {
+    int fd;
+    ~Closer() { ::close(fd); }
+  } closer{fd};
+  struct stat st {};
+  if (::fstat(fd, &st) == 0 && S_ISDIR(st.st_mode)) throw UsageError(quote_input(path, kMaxEchoedPathChars) + ": is a directory, not " + what);
+  std::string text;
+  char buf[65536];
+  for (;;) {
+    const ssize_t n = ::read(fd, buf, sizeof buf);
+    if (n < 0) {
+      if (errno == EINTR) continue;
+      throw UsageError(quote_input(path, kMaxEchoedPathChars) + ": cannot read " + what + " (" + std::strerror(errno) + ")");
+    }
+    if (n == 0) break;
+    if (text.size() + static_cast<std::size_t>(n) > max_bytes)
+      throw UsageError(quote_input(path, kMaxEchoedPathChars) + ": " + what + " is larger than the " + std::to_string(max_bytes) +
+                       " bytes allowed (" + std::to_string(max_bytes >> 20) + " MiB)");
+    text.append(buf, static_cast<std::size_t>(n));
+  }
+  return text;
+}
+
+std::string flag_of_library_field(const std::string& field) {
+  static const std::map<std::string, std::string> flags{
+      {"mass", "--mass"},         {"radius", "--radius"},       {"mu_s", "--mu-s"},       {"mu_r", "--mu-r"},
+      {"mu_sp", "--mu-sp"},       {"g", "--g"},                 {"e_e", "--e"},           {"mu_w", "--mu-w"},
+      {"h", "--height"},          {"sin_theta", "--height"},    {"V0", "--v0"},           {"alpha", "--alpha"},
+      {"w_T", "--topspin"},       {"w_S", "--sidespin"},        {"paper_steps", "--steps"}, {"grid_step", "--grid-step"},
+      {"sample_rate", "--sample"}, {"v0", "--v0"},              {"w0", "--w0"},           {"x0", "--x0"},
+      {"x1", "--x1"},             {"x2", "--x2"},               {"v2", "--v2"},           {"cue_mass", "--cue-mass"},
+      {"cue_tip_e", "--cue-tip-e"}, {"side_spin", "--side"},    {"t", "--at"},            {"preset", "--preset"},
+  };
+  const auto it = flags.find(field);
+  return it == flags.end() ? std::string() : it->second;
 }
 
 void write_text_file(const std::string& path, std::string_view text, const std::string& flag, const std::string& what) {
   std::ofstream file(path, std::ios::binary);
   if (!file || !file.write(text.data(), static_cast<std::streamsize>(text.size())) || !file.flush())
-    throw UsageError(flag + " " + path + ": cannot write " + what);
+    throw UsageError(flag + " " + quote_input(path, kMaxEchoedPathChars) + ": cannot write " + what);
 }
 
 void check_flag(const char* flag, double value, double lo, double hi, const char* meaning) {
@@ -115,6 +161,34 @@ int run(int argc, const char* const* argv, std::ostream& out, std::ostream& err)
   add("batch", add_batch_command(app));
   add("view", add_view_command(app));
 
+  // Every option that takes a value: an empty value (--v0 "") is an error,
+  // not 0, and so are control characters and values longer than a path.
+  for (CLI::App* sub : app.get_subcommands({})) {
+    for (CLI::Option* opt : sub->get_options()) {
+      if (opt->get_type_size_max() <= 0) continue;  // a flag
+      const std::string description = opt->get_description().substr(0, opt->get_description().find('\n'));
+      const std::string type = opt->get_type_name();
+      opt->check(CLI::Validator(
+          [description, type](std::string& value) -> std::string {
+            if (value.empty()) return "the value is empty (expected: " + description + ")";
+            bool control = false;
+            for (char c : value) control = control || static_cast<unsigned char>(c) < 0x20 || c == 0x7F;
+            if (control) return "the value " + quote_input(value) + " contains control characters";
+            if (value.size() > kMaxValueBytes)
+              return "the value " + quote_input(value) + " is longer than " + std::to_string(kMaxValueBytes) + " bytes";
+            // Numbers: the whole value must be one (CLI11 would say only "Could not convert").
+            char* end = nullptr;
+            if (type == "FLOAT") (void)std::strtod(value.c_str(), &end);
+            if (type == "INT") (void)std::strtoll(value.c_str(), &end, 10);
+            if (end != nullptr && (end == value.c_str() || *end != '\0'))
+              return quote_input(value) + " is not " + (type == "INT" ? "an integer" : "a number") + " (expected: " +
+                     description + ")";
+            return {};
+          },
+          "", "value"));
+    }
+  }
+
   if (argc > 1 && argv[1][0] != '-') {
     std::string names;
     bool known = false;
@@ -123,7 +197,7 @@ int run(int argc, const char* const* argv, std::ostream& out, std::ostream& err)
       known = known || entry.first->get_name() == argv[1];
     }
     if (!known) {
-      err << "cueball: error: unknown subcommand '" << argv[1] << "'; choose one of: " << names << '\n';
+      err << "cueball: error: unknown subcommand " << quote_input(argv[1]) << "; choose one of: " << names << '\n';
       return 2;
     }
   }
@@ -134,7 +208,7 @@ int run(int argc, const char* const* argv, std::ostream& out, std::ostream& err)
   } catch (const CLI::CallForAllHelp& e) {
     return app.exit(e, out, err);
   } catch (const CLI::ParseError& e) {
-    err << "cueball: error: " << e.what() << '\n';
+    err << "cueball: error: " << one_line(e.what()) << '\n';
     return 2;
   }
   try {
@@ -143,20 +217,20 @@ int run(int argc, const char* const* argv, std::ostream& out, std::ostream& err)
     (*command)(out, err);
     return 0;
   } catch (const UsageError& e) {
-    err << "cueball: error: " << e.what() << '\n';
+    err << "cueball: error: " << one_line(e.what()) << '\n';
     return 2;
   } catch (const InvalidArgument& e) {
-    // A JSON path (scenario.balls[1].position) is named in the message itself;
-    // a library field (mu_s) is shown as the flag that sets it (--mu-s).
-    const std::string& field = e.field();
-    const bool json_path = field.find_first_of(".[") != std::string::npos || field == "scenario" || field == "table";
-    err << "cueball: error: " << (json_path ? "" : flag_for_field(e.field()) + ": ") << e.what() << '\n';
+    // A JSON path (scenario.balls[1].position) is named in the message
+    // itself; a library field (mu_s) is shown as the flag that sets it
+    // (--mu-s); a field no flag sets is left to the message.
+    const std::string flag = flag_of_library_field(e.field());
+    err << "cueball: error: " << one_line((flag.empty() ? "" : flag + ": ") + e.what()) << '\n';
     return 2;
   } catch (const InfeasibleShot& e) {
-    err << "cueball: error: " << e.what() << '\n';
+    err << "cueball: error: " << one_line(e.what()) << '\n';
     return 2;
   } catch (const std::exception& e) {
-    err << "cueball: internal error: " << e.what() << '\n';
+    err << "cueball: internal error: " << one_line(e.what()) << '\n';
     return 1;
   }
 }

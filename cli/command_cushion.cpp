@@ -1,6 +1,8 @@
 // cueball cushion, cueball cushion-sweep: the ball-cushion impact of
 // Mathavan, Jackson & Parkin (2010), one impact or the paper's figure families.
+#include <cerrno>
 #include <cmath>
+#include <cstring>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
@@ -12,15 +14,22 @@
 #include <ostream>
 #include <vector>
 
+#include <fcntl.h>
+#include <spawn.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
 #include "common.hpp"
 #include "cueball/cushion_fit.hpp"
 #include "cueball/cushion_impact.hpp"
+#include "cueball/errors.hpp"
 
 namespace cueball::cli {
 
 namespace {
 
 constexpr double kDegree = std::numbers::pi / 180.0;
+constexpr std::size_t kMinFitResiduals = 3;
 
 // Solver and constants flags shared by both commands.
 struct CushionFlags {
@@ -58,15 +67,16 @@ CushionParameters cushion_of(const CushionFlags& f, const Parameters& p) {
     check_flag("--e", *f.restitution, 1e-9, 1.0, "cushion restitution e_e, (0, 1]");
     c.restitution = *f.restitution;
   }
-  if (f.friction) {
-    check_flag("--mu-w", *f.friction, 0.0, std::tan(std::asin(cushion_sin_theta(c, p.ball))),
-               "ball-cushion friction mu_w, at most tan(theta) or the ball would lift off the bed");
-    c.friction = *f.friction;
-  }
   if (f.height) {
     check_flag("--height", *f.height, p.ball.radius * (1 + 1e-9), 2 * p.ball.radius * (1 - 1e-9),
                "cushion contact height h, m, between R and 2R");
     c.contact_height = *f.height;
+  }
+  // After --height: the bound on mu_w is the contact angle's.
+  if (f.friction) {
+    check_flag("--mu-w", *f.friction, 0.0, std::tan(std::asin(cushion_sin_theta(c, p.ball))),
+               "ball-cushion friction mu_w, at most tan(theta) or the ball would lift off the bed");
+    c.friction = *f.friction;
   }
   check_flag("--steps", f.steps, 1, 1e8, "paper solver steps N");
   return c;
@@ -268,8 +278,10 @@ struct Series {
 
 // Writes the series as gnuplot data blocks (one "index" each): alpha, speed, angle.
 void write_family(const std::filesystem::path& file, const std::vector<Series>& family, const Parameters& p,
-                  const CushionParameters& c, const CushionImpactOptions& o) {
+                  const CushionParameters& c, const CushionImpactOptions& o, const std::string& out_flag_value) {
   std::ofstream data(file);
+  if (!data) throw UsageError("--out = " + quote_input(out_flag_value, kMaxEchoedPathChars) + ": cannot write " + quote_input(file.filename().string(), kMaxEchoedPathChars) +
+                              " in the directory");
   for (const Series& s : family) {
     data << "# " << s.label << "\nalpha_deg speed angle_deg\n";
     for (int a = 1; a <= 90; ++a) {
@@ -279,7 +291,49 @@ void write_family(const std::filesystem::path& file, const std::vector<Series>& 
     }
     data << "\n\n";
   }
-  if (!data) throw std::runtime_error("cannot write " + file.string());
+  if (!data.flush())
+    throw UsageError("--out = " + quote_input(out_flag_value, kMaxEchoedPathChars) + ": cannot write " + quote_input(file.filename().string(), kMaxEchoedPathChars) +
+                     " in the directory");
+}
+
+// Opens FILE in the --out directory for writing, or throws UsageError naming --out.
+std::ofstream open_in_out_dir(const std::filesystem::path& file, const std::string& out_flag_value) {
+  std::ofstream f(file);
+  if (!f) throw UsageError("--out = " + quote_input(out_flag_value, kMaxEchoedPathChars) + ": cannot write " + quote_input(file.filename().string(), kMaxEchoedPathChars) +
+                           " in the directory");
+  return f;
+}
+
+// Runs `gnuplot SCRIPT` in DIR without a shell: posix_spawnp with an argument
+// vector, the working directory set by the spawn itself, stdout and stderr
+// into LOG (both relative to DIR), stdin from /dev/null. The scripts name
+// their files relative to DIR, so the directory's name never reaches gnuplot
+// or a shell. Returns gnuplot's exit status (127: not installed).
+int run_gnuplot(const std::filesystem::path& dir, const std::string& script, const std::string& log) {
+  posix_spawn_file_actions_t actions;
+  if (posix_spawn_file_actions_init(&actions) != 0) throw std::runtime_error("posix_spawn_file_actions_init failed");
+  struct Cleanup {
+    posix_spawn_file_actions_t* a;
+    ~Cleanup() { posix_spawn_file_actions_destroy(a); }
+  } cleanup{&actions};
+  const std::string dir_name = dir.string();
+  if (posix_spawn_file_actions_addchdir_np(&actions, dir_name.c_str()) != 0 ||
+      posix_spawn_file_actions_addopen(&actions, 0, "/dev/null", O_RDONLY, 0) != 0 ||
+      posix_spawn_file_actions_addopen(&actions, 1, log.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644) != 0 ||
+      posix_spawn_file_actions_adddup2(&actions, 1, 2) != 0)
+    throw std::runtime_error("posix_spawn_file_actions failed");
+  std::string program = "gnuplot";
+  std::string argument = script;
+  char* argv[] = {program.data(), argument.data(), nullptr};
+  pid_t pid = 0;
+  const int rc = posix_spawnp(&pid, "gnuplot", &actions, nullptr, argv, environ);
+  if (rc == ENOENT) return 127;
+  if (rc != 0) throw std::runtime_error(std::string("cannot run gnuplot: ") + std::strerror(rc));
+  int status = 0;
+  while (waitpid(pid, &status, 0) < 0) {
+    if (errno != EINTR) throw std::runtime_error(std::string("waitpid failed: ") + std::strerror(errno));
+  }
+  return WIFEXITED(status) ? WEXITSTATUS(status) : 128 + (WIFSIGNALED(status) ? WTERMSIG(status) : 0);
 }
 
 std::string titles_of(const std::vector<Series>& family) {
@@ -304,12 +358,12 @@ void run_figures(const FigureFlags& f, std::ostream& out, std::ostream& err) {
   const CushionImpactOptions paper = options_of(paper_flags, false);
   CushionImpactOptions exact = paper;
   exact.solver = CushionSolver::exact;
-  if (std::system("command -v gnuplot > /dev/null 2>&1") != 0)
-    throw std::runtime_error("gnuplot is not installed (apt-get install gnuplot-nox)");
   const std::filesystem::path dir = f.out;
   std::error_code ec;
   std::filesystem::create_directories(dir, ec);
-  if (ec) throw UsageError("--out = " + f.out + ": cannot create the directory (" + ec.message() + ")");
+  if (ec) throw UsageError("--out = " + quote_input(f.out, kMaxEchoedPathChars) + ": cannot create the directory (" + ec.message() + ")");
+  if (!std::filesystem::is_directory(dir, ec))
+    throw UsageError("--out = " + quote_input(f.out, kMaxEchoedPathChars) + ": is not a directory");
 
   std::vector<Series> fig8, fig9, fig10;
   for (double v0 : {0.5, 1.0, 1.5, 2.0, 2.5}) fig8.push_back({"V0=" + std::to_string(v0).substr(0, 3), v0, 1.0, 0.0});
@@ -337,12 +391,13 @@ void run_figures(const FigureFlags& f, std::ostream& out, std::ostream& err) {
                 c.restitution, c.friction, f.cushion.steps);
   std::vector<std::filesystem::path> written;
   for (const auto& fig : figures) {
-    write_family(dir / (std::string(fig.name) + "_paper.dat"), *fig.family, p, c, paper);
-    write_family(dir / (std::string(fig.name) + "_exact.dat"), *fig.family, p, c, exact);
+    write_family(dir / (std::string(fig.name) + "_paper.dat"), *fig.family, p, c, paper, f.out);
+    write_family(dir / (std::string(fig.name) + "_exact.dat"), *fig.family, p, c, exact, f.out);
     const std::filesystem::path image = dir / (std::string(fig.name) + "." + f.format);
-    std::ofstream gp(dir / (std::string(fig.name) + ".gp"));
+    std::ofstream gp = open_in_out_dir(dir / (std::string(fig.name) + ".gp"), f.out);
+    // Every file name relative to the directory gnuplot runs in: no user text in the script.
     gp << terminal_for(f.format) << "\n"
-       << "set output '" << image.string() << "'\n"
+       << "set output '" << fig.name << "." << f.format << "'\n"
        << "titles = '" << titles_of(*fig.family) << "'\n"
        << "n = words(titles)\n"
        << "set multiplot layout 1,2 title \"" << fig.caption << "\\n{/*0.8 " << constants << "}\" enhanced\n"
@@ -362,13 +417,14 @@ void run_figures(const FigureFlags& f, std::ostream& out, std::ostream& err) {
     for (const auto& [name, options] : {std::pair{"paper", paper}, std::pair{"exact", exact}}) {
       CushionImpactOptions o = options;
       o.record_history = true;
-      std::ofstream data(dir / (std::string("fig12_") + name + ".csv"));
+      std::ofstream data = open_in_out_dir(dir / (std::string("fig12_") + name + ".csv"), f.out);
       print_history_csv(data, cushion_impact(incoming_ball(in), p, c, o).history);
+      if (!data.flush()) throw UsageError("--out = " + quote_input(f.out, kMaxEchoedPathChars) + ": cannot write fig12_" + name + ".csv");
     }
     const std::filesystem::path image = dir / ("fig12." + f.format);
-    std::ofstream gp(dir / "fig12.gp");
+    std::ofstream gp = open_in_out_dir(dir / "fig12.gp", f.out);
     gp << terminal_for(f.format) << "\n"
-       << "set output '" << image.string() << "'\nset datafile separator ','\n"
+       << "set output 'fig12." << f.format << "'\nset datafile separator ','\n"
        << "set multiplot layout 1,2 title \"Fig 12: slip over the impact, V0 = 2 m/s, alpha = 45 deg, "
        << "w_S = 2 V0/R, w_T = 1.5 V0/R\\n{/*0.8 " << constants << "}\" enhanced\n"
        << "set grid\nset xlabel 'normal impulse P_I (N s)'\nset ylabel 'slip speed (m/s)'\n"
@@ -385,9 +441,11 @@ void run_figures(const FigureFlags& f, std::ostream& out, std::ostream& err) {
     written.push_back(image);
   }
   for (const char* name : {"fig8", "fig9", "fig10", "fig12"}) {
-    const std::string command = "cd '" + dir.string() + "' && gnuplot " + name + ".gp > " + name + ".log 2>&1";
-    if (std::system(command.c_str()) != 0)
-      throw std::runtime_error(std::string("gnuplot failed on ") + name + ".gp; see " + (dir / name).string() + ".log");
+    const int status = run_gnuplot(dir, std::string(name) + ".gp", std::string(name) + ".log");
+    if (status == 127) throw std::runtime_error("gnuplot is not installed (apt-get install gnuplot-nox)");
+    if (status != 0)
+      throw std::runtime_error(std::string("gnuplot failed on ") + name + ".gp (status " + std::to_string(status) +
+                               "); see " + quote_input((dir / name).string() + ".log", kMaxEchoedPathChars));
   }
   for (const auto& image : written) out << image.string() << '\n';
   (void)err;
@@ -405,36 +463,60 @@ struct FitFlags {
 
 // Reads measured impacts: per line either "v0,v_out" (head-on, rolling, no
 // side spin: the paper's experiment) or "v0,alpha_deg,topspin_k,sidespin_k,
-// v_out,beta_deg" (oblique). '#' starts a comment; a first line that is not
-// numeric is a header.
+// v_out,beta_deg" (oblique). '#' starts a comment; a UTF-8 byte-order mark at
+// the start is skipped; the first line is a header when none of its cells is
+// a number. Every other line is data: an empty or non-numeric cell is an error
+// naming the file, the line and the cell.
 CushionFitData read_fit_data(const std::string& path, double radius) {
-  std::ifstream in(path);
-  if (!in) throw UsageError(path + ": cannot open the data file");
+  std::string text = read_text_file(path, "the data file", kMaxDataFileBytes);
+  if (text.rfind("\xEF\xBB\xBF", 0) == 0) text.erase(0, 3);
+  const std::string file = quote_input(path, kMaxEchoedPathChars);
   CushionFitData data;
+  std::istringstream in(text);
   std::string line;
+  const auto blank = [](const std::string& t, std::size_t from = 0) {
+    return t.find_first_not_of(" \t\r", from) == std::string::npos;
+  };
   for (int number = 1; std::getline(in, line); ++number) {
     if (const auto hash = line.find('#'); hash != std::string::npos) line.erase(hash);
-    if (line.find_first_not_of(" \t\r") == std::string::npos) continue;
+    if (blank(line)) continue;
+    const std::string where = file + ":" + std::to_string(number);
     std::vector<double> values;
-    std::stringstream cells(line);
-    std::string cell;
-    bool numeric = true;
-    while (std::getline(cells, cell, ',')) {
-      char* end = nullptr;
-      const double v = std::strtod(cell.c_str(), &end);
-      if (end == cell.c_str() || cell.find_first_not_of(" \t\r", static_cast<std::size_t>(end - cell.c_str())) != std::string::npos) {
-        numeric = false;
-        break;
+    std::vector<std::string> cells;
+    {
+      std::size_t start = 0;
+      for (;;) {
+        const std::size_t comma = line.find(',', start);
+        cells.push_back(line.substr(start, comma == std::string::npos ? std::string::npos : comma - start));
+        if (comma == std::string::npos) break;
+        start = comma + 1;
       }
-      values.push_back(v);
     }
-    const std::string where = path + ":" + std::to_string(number);
-    if (!numeric) {
-      if (data.head_on.empty() && data.oblique.empty() && number == 1) continue;  // a header
-      throw UsageError(where + ": not a number in '" + line + "'");
+    std::size_t numeric = 0;
+    std::size_t bad = cells.size();  // the first cell that is not a number
+    for (std::size_t i = 0; i < cells.size(); ++i) {
+      const std::string& cell = cells[i];
+      char* end = nullptr;
+      errno = 0;
+      const double v = std::strtod(cell.c_str(), &end);
+      const bool ok = !blank(cell) && end != cell.c_str() && blank(cell, static_cast<std::size_t>(end - cell.c_str()));
+      if (ok) {
+        ++numeric;
+        values.push_back(v);
+      } else if (bad == cells.size()) {
+        bad = i;
+      }
     }
-    for (double v : values)
-      if (!std::isfinite(v)) throw UsageError(where + ": every value must be finite");
+    if (bad < cells.size()) {
+      if (number == 1 && numeric == 0 && data.head_on.empty() && data.oblique.empty()) continue;  // a header
+      throw UsageError(where + ": cell " + std::to_string(bad + 1) + " = " + quote_input(cells[bad]) +
+                       (blank(cells[bad]) ? " is empty" : " is not a number") +
+                       "; expected v0,v_out or v0,alpha_deg,topspin_k,sidespin_k,v_out,beta_deg");
+    }
+    for (std::size_t i = 0; i < values.size(); ++i)
+      if (!std::isfinite(values[i]))
+        throw UsageError(where + ": cell " + std::to_string(i + 1) + " = " + quote_input(cells[i]) +
+                         " is not a finite number");
     if (values.size() == 2) {
       check_flag((where + ": v0").c_str(), values[0], 1e-6, kMaxSpeed, "incoming speed, m/s");
       check_flag((where + ": v_out").c_str(), values[1], 0.0, kMaxSpeed, "measured rebound speed, m/s");
@@ -456,7 +538,14 @@ CushionFitData read_fit_data(const std::string& path, double radius) {
                        std::to_string(values.size()));
     }
   }
-  if (data.head_on.empty() && data.oblique.empty()) throw UsageError(path + ": no measurements found");
+  // Two constants and an error estimate: at least 3 residuals (an oblique
+  // impact gives two, its rebound's two velocity components).
+  const std::size_t residuals = data.head_on.size() + 2 * data.oblique.size();
+  if (residuals < kMinFitResiduals)
+    throw UsageError(file + ": " + std::to_string(data.head_on.size()) + " head-on and " +
+                     std::to_string(data.oblique.size()) + " oblique measurements are too few; allowed: at least " +
+                     std::to_string(kMinFitResiduals) + " head-on, or 2 oblique, or 1 oblique and 1 head-on " +
+                     "(e_e, mu_w and the error need 3 residuals)");
   return data;
 }
 

@@ -19,7 +19,8 @@ namespace cueball::cli {
 namespace {
 
 Scenario load_scenario(const std::string& path) {
-  return path.empty() ? default_scenario() : scenario_from_json(read_text_file(path, "the scenario file"));
+  return path.empty() ? default_scenario()
+                      : scenario_from_json(read_text_file(path, "the scenario file", kMaxScenarioBytes));
 }
 
 std::string fixed(double v, int decimals = 3) {

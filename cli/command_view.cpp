@@ -14,7 +14,7 @@ struct ViewFlags {
 };
 
 void run_view(const ViewFlags& f, std::ostream& out) {
-  const std::string json = checked_result_for_viewer(f.result, read_text_file(f.result, "the result file"));
+  const std::string json = checked_result_for_viewer(f.result, read_text_file(f.result, "the result file", kMaxResultFileBytes));
   write_text_file(f.output, viewer_page(viewer_template(), json), "-o", "the viewer page");
   out << "viewer written to " << f.output << " (open it in a browser; it needs no network)\n";
 }

@@ -38,13 +38,23 @@ Parameters resolve_parameters(const ParameterFlags& flags);
 /// unless value is finite and within [lo, hi].
 void check_flag(const char* flag, double value, double lo, double hi, const char* meaning);
 
-/// The whole file; throws UsageError "PATH: cannot open WHAT".
-std::string read_text_file(const std::string& path, const std::string& what);
+/// Longest result file `view` reads, bytes (256 MiB).
+inline constexpr std::size_t kMaxResultFileBytes = std::size_t{256} << 20;
+/// Longest measurement file `fit-cushion` reads, bytes (16 MiB).
+inline constexpr std::size_t kMaxDataFileBytes = std::size_t{16} << 20;
+
+/// The whole file; throws UsageError naming the (quoted) path when it cannot
+/// be opened or read, is a directory or holds more than max_bytes.
+std::string read_text_file(const std::string& path, const std::string& what, std::size_t max_bytes);
 /// Writes (replaces) the file; throws UsageError "FLAG PATH: cannot write WHAT".
 void write_text_file(const std::string& path, std::string_view text, const std::string& flag, const std::string& what);
 
 /// The CLI flag that sets a library field ("mu_s" -> "--mu-s").
 std::string flag_for_field(const std::string& field);
+
+/// The flag an InvalidArgument of the library stands for ("e_e" -> "--e",
+/// "sample_rate" -> "--sample"), or "" when no flag sets that field.
+std::string flag_of_library_field(const std::string& field);
 
 /// A subcommand: registers its flags and returns what to run when chosen.
 using Command = std::function<void(std::ostream& out, std::ostream& err)>;

@@ -11,10 +11,12 @@
 #include <pybind11/stl.h>
 
 #include <array>
+#include <cctype>
 #include <cmath>
 #include <cstdint>
 #include <exception>
 #include <limits>
+#include <numbers>
 #include <optional>
 #include <string>
 #include <utility>
@@ -567,6 +569,17 @@ void bind_cushion_impact(py::module_& m) {
          double restitution, double friction, std::optional<double> contact_height, const std::string& solver,
          int paper_steps, bool history) {
         cueball::validate(p);
+        // The CLI's ranges (cueball cushion): speed, angle, spins, steps.
+        cueball::require_in_range("V0", speed, 1e-6, cueball::kMaxSpeed, "incoming speed, m/s");
+        if (!(std::isfinite(angle) && angle > 0.0 && angle <= std::numbers::pi / 2))
+          throw cueball::InvalidArgument("alpha", angle, "(0, pi/2] rad", "angle between the velocity and the cushion");
+        if (topspin)
+          cueball::require_in_range("w_T", *topspin, -cueball::kMaxAngularSpeed, cueball::kMaxAngularSpeed,
+                                    "topspin w_T, rad/s");
+        cueball::require_in_range("w_S", sidespin, -cueball::kMaxAngularSpeed, cueball::kMaxAngularSpeed,
+                                  "sidespin w_S, rad/s");
+        if (paper_steps < 1 || paper_steps > 100000000)
+          throw cueball::InvalidArgument("paper_steps", paper_steps, "[1, 1e8]", "Euler steps of the paper solver");
         const double h = contact_height ? *contact_height : cueball::default_cushion_height(p.ball);
         const cueball::CushionParameters cushion{restitution, friction, h};
         cueball::CushionImpactOptions options;
@@ -591,20 +604,78 @@ void bind_cushion_impact(py::module_& m) {
 
 // ------------------------------------------------------------------ whole shots
 
+// A dict key as a scenario path shows it: plain names as they are, others quoted.
+std::string path_key(const std::string& key) {
+  bool plain = !key.empty() && key.size() <= cueball::kMaxEchoedChars;
+  for (char c : key) plain = plain && (std::isalnum(static_cast<unsigned char>(c)) || c == '_');
+  return plain ? key : cueball::quote_input(key);
+}
+
 // Raises InvalidArgument for a NaN or infinite float anywhere in a scenario
-// given as Python objects: JSON has no spelling for it, and the message
-// should name the field as the library's own checks do.
-void reject_non_finite(const py::handle& value, const std::string& path) {
-  if (py::isinstance<py::float_>(value)) {
-    const double v = value.cast<double>();
-    if (!std::isfinite(v)) throw cueball::InvalidArgument(path, v, "any finite number");
-  } else if (py::isinstance<py::dict>(value)) {
-    for (const auto& item : value.cast<py::dict>())
-      reject_non_finite(item.second, path + "." + py::str(item.first).cast<std::string>());
-  } else if (py::isinstance<py::list>(value) || py::isinstance<py::tuple>(value)) {
-    std::size_t i = 0;
-    for (const py::handle& item : value) reject_non_finite(item, path + "[" + std::to_string(i++) + "]");
+// given as Python objects (JSON has no spelling for it; the message names the
+// field as the library's own checks do), for nesting deeper than the JSON
+// reader allows (the same limit, 64), for a container that contains itself,
+// and for more values than a scenario's largest JSON text could hold. Never
+// recursion without a bound: a recursive or 100,000-deep dict raises.
+class ScenarioObjectCheck {
+ public:
+  void check(const py::handle& value, const std::string& path, std::size_t depth) {
+    if (++values_ > kMaxValues)
+      throw cueball::InvalidArgument("scenario", "scenario holds more than " + std::to_string(kMaxValues) +
+                                                     " values; a scenario's JSON text is at most " +
+                                                     std::to_string(cueball::kMaxScenarioBytes) + " bytes");
+    if (py::isinstance<py::float_>(value)) {
+      const double v = value.cast<double>();
+      if (!std::isfinite(v)) throw cueball::InvalidArgument(path, v, "any finite number");
+      return;
+    }
+    const bool dict = py::isinstance<py::dict>(value);
+    const bool list = py::isinstance<py::list>(value) || py::isinstance<py::tuple>(value);
+    if (!dict && !list) return;
+    if (depth >= kMaxDepth)
+      throw cueball::InvalidArgument(path, path + " nests deeper than " + std::to_string(kMaxDepth) + " levels");
+    PyObject* id = value.ptr();
+    for (PyObject* open : open_)
+      if (open == id) throw cueball::InvalidArgument(path, path + " contains itself (a circular reference)");
+    open_.push_back(id);
+    if (dict) {
+      for (const auto& item : py::reinterpret_borrow<py::dict>(value)) {
+        check(item.second, path + "." + path_key(py::str(item.first).cast<std::string>()), depth + 1);
+      }
+    } else {
+      std::size_t i = 0;
+      for (const py::handle& item : value) check(item, path + "[" + std::to_string(i++) + "]", depth + 1);
+    }
+    open_.pop_back();
   }
+
+ private:
+  static constexpr std::size_t kMaxDepth = 64;  // detail::kMaxJsonDepth, the JSON reader's
+  // Every JSON value takes at least two bytes of text (itself and a separator).
+  static constexpr std::size_t kMaxValues = cueball::kMaxScenarioBytes / 2;
+  std::vector<PyObject*> open_;  // the containers on the path from the root
+  std::size_t values_ = 0;
+};
+
+// A scenario file, read with the library's size limit (never a never-ending
+// file read until memory runs out).
+std::string read_scenario_file(const py::object& path) {
+  const py::object file = py::module_::import("builtins").attr("open")(path, "rb");
+  py::object data;
+  try {
+    data = file.attr("read")(cueball::kMaxScenarioBytes + 1);
+  } catch (...) {
+    file.attr("close")();
+    throw;
+  }
+  file.attr("close")();
+  std::string text = data.cast<std::string>();
+  if (text.size() > cueball::kMaxScenarioBytes) {
+    const std::string name = py::str(path).cast<std::string>();
+    throw cueball::InvalidArgument("scenario", cueball::quote_input(name, cueball::kMaxEchoedPathChars) + ": the scenario file is larger than the " +
+                                                   std::to_string(cueball::kMaxScenarioBytes) + " bytes allowed (16 MiB)");
+  }
+  return text;
 }
 
 // The scenario's JSON text, or nothing for the built-in 9-ball break.
@@ -613,17 +684,14 @@ void reject_non_finite(const py::handle& value, const std::string& path) {
 // or else a file's path, or a path (os.PathLike).
 std::optional<std::string> scenario_text(const py::object& scenario) {
   if (scenario.is_none()) return std::nullopt;
-  const auto read = [](const py::object& path) {
-    return py::module_::import("pathlib").attr("Path")(path).attr("read_text")().cast<std::string>();
-  };
   if (py::isinstance<py::str>(scenario)) {
     std::string text = scenario.cast<std::string>();
     const std::size_t first = text.find_first_not_of(" \t\r\n");
-    return first != std::string::npos && text[first] == '{' ? text : read(scenario);
+    return first != std::string::npos && text[first] == '{' ? text : read_scenario_file(scenario);
   }
-  if (py::isinstance(scenario, py::module_::import("os").attr("PathLike"))) return read(scenario);
+  if (py::isinstance(scenario, py::module_::import("os").attr("PathLike"))) return read_scenario_file(scenario);
   if (py::isinstance<py::dict>(scenario)) {
-    reject_non_finite(scenario, "scenario");
+    ScenarioObjectCheck().check(scenario, "scenario", 0);
     return py::module_::import("json").attr("dumps")(scenario).cast<std::string>();
   }
   throw py::type_error("scenario must be None (the built-in 9-ball break), a dict, JSON text, or a path (str or os.PathLike)");

@@ -103,6 +103,9 @@ BallState strike_ball_unchecked(const CueStrike& s, Vec2 position, const BallPar
 
 BallState strike_ball(const CueStrike& strike, Vec2 position, const BallParameters& ball, const CueParameters& cue) {
   validate(strike, ball, cue);
+  // As a scenario's ball positions: the centre on the bed, within 100 m of the origin.
+  require_in_range("position[0]", position.x, -100.0, 100.0, "x of the ball's centre on the bed, m");
+  require_in_range("position[1]", position.y, -100.0, 100.0, "y of the ball's centre on the bed, m");
   return strike_ball_unchecked(strike, position, ball, cue);
 }
 

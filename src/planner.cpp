@@ -14,6 +14,9 @@ namespace cueball {
 
 namespace {
 
+// Positions x0, x1, x2 lie within [-1000, 1000] m, as the CLI's flags.
+constexpr double kMaxPlanDistance = 1000.0;
+
 std::string num(double v) {
   char buf[32];
   std::snprintf(buf, sizeof buf, "%.6g", v);
@@ -22,8 +25,8 @@ std::string num(double v) {
 
 void validate_target(const ShotTarget& t, const Parameters& p) {
   validate(p);
-  require_finite("x0", t.x0);
-  require_finite("x2", t.x2);
+  require_in_range("x0", t.x0, -kMaxPlanDistance, kMaxPlanDistance, "start, m");
+  require_in_range("x2", t.x2, -kMaxPlanDistance, kMaxPlanDistance, "planned point, m");
   require_finite("v2", t.v2);
   if (t.v2 < 0.0) throw InfeasibleShot("v2 >= 0", "v2 = " + num(t.v2) + " m/s is negative");
   require_in_range("v2", t.v2, 0.0, kMaxSpeed, "planned speed at x2, m/s");
@@ -32,6 +35,29 @@ void validate_target(const ShotTarget& t, const Parameters& p) {
                                          " m; positions increase in the direction of travel");
   if (!(t.x2 > t.x0 || t.v2 > 0.0))
     throw InfeasibleShot("x2 > x0 or v2 > 0", "the ball would not move (x2 = x0 = " + num(t.x0) + " m, v2 = 0)");
+}
+
+// A plan beyond the speed or spin caps of the rest of the library (no ball
+// can be given it, and no simulation would accept it) is an error naming the
+// input that asks for it: the distance to x2 (or to x1, when the slide alone
+// needs too much). `n_alone`: v0 = N/7 when Z = 0, the speed the rolling leg
+// alone needs.
+void check_caps(const ShotPlan& plan, PlanVariant variant, const ShotTarget& t, double n, const Parameters& p) {
+  const bool fast = !(plan.v0 <= kMaxSpeed);
+  const bool spun = !(std::abs(plan.w0) <= kMaxAngularSpeed);
+  if (!fast && !spun) return;
+  const bool slide = variant == PlanVariant::given_slide_end && n / 7.0 <= kMaxSpeed;
+  const char* field = slide ? "x1" : "x2";
+  std::string message = std::string(field) + " = " + num(slide ? plan.x1 : t.x2) + " m (x0 = " + num(t.x0) +
+                        " m, v2 = " + num(t.v2) + " m/s) needs " +
+                        (fast ? "v0 = " + num(plan.v0) + " m/s; allowed: v0 <= " + num(kMaxSpeed) + " m/s"
+                              : "w0 = " + num(plan.w0) + " rad/s; allowed: |w0| <= " + num(kMaxAngularSpeed) + " rad/s");
+  if (fast && variant == PlanVariant::natural_roll && t.v2 < kMaxSpeed) {
+    // v0 = N / 7 with N^2 = 70 mu_r g (x2 - x0) + 49 v2^2 (eq. 25).
+    const double reach = 49.0 * (kMaxSpeed * kMaxSpeed - t.v2 * t.v2) / (70.0 * p.cloth.rolling_resistance * p.cloth.gravity);
+    message += " (x2 at most " + num(t.x0 + reach) + " m)";
+  }
+  throw InvalidArgument(field, message);
 }
 
 // From the paper's Z and N to the full plan: eqs 27, 28, 19, 20, 21, 22.
@@ -46,6 +72,7 @@ ShotPlan finish(PlanVariant variant, const ShotTarget& t, double z, double n, co
   plan.v1 = n / 7.0;                                     // (20)
   plan.x1 = t.x0 + 2.0 / 49.0 * z * (n + z) / mu_s_g;    // (21)
   plan.t2 = plan.t1 + 7.0 * (plan.v1 - t.v2) / (5.0 * mu_r_g);  // (22), brackets restored (spec §3)
+  check_caps(plan, variant, t, n, p);
   return plan;
 }
 
@@ -58,7 +85,7 @@ double rolling_leg_n(double rolling_distance, double v2, const Parameters& p) {
 
 ShotPlan plan_shot_with_slide_end(const ShotTarget& t, double x1, const Parameters& p) {
   validate_target(t, p);
-  require_finite("x1", x1);
+  require_in_range("x1", x1, -kMaxPlanDistance, kMaxPlanDistance, "end of sliding, m");
   if (x1 < t.x0)
     throw InfeasibleShot("x1 >= x0", "x1 = " + num(x1) + " m lies behind the start x0 = " + num(t.x0) +
                                          " m (it would need v0 < R w0, an overspun ball)");

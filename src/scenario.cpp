@@ -2,6 +2,7 @@
 // schema. nlohmann-json stays inside this file.
 #include "cueball/scenario.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <initializer_list>
@@ -10,6 +11,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "cueball/cushion_impact.hpp"
 #include "cueball/errors.hpp"
 #include "cueball/rack.hpp"
 #include "json_input.hpp"
@@ -35,12 +37,14 @@ class Reader {
       if (!known) {
         std::string list;
         for (const char* k : keys) list += (list.empty() ? "" : ", ") + std::string(k);
-        throw InvalidArgument(field(item.key()), field(item.key()) + " is not a known key; allowed: " + list);
+        const std::string f = field(detail::path_key(item.key()));
+        throw InvalidArgument(f, f + " is not a known key; allowed: " + list);
       }
     }
   }
 
   bool has(const char* key) const { return j_.contains(key); }
+  const std::string& path() const { return path_; }
   std::string field(const std::string& key) const { return path_ + "." + key; }
   const Json& at(const char* key) const { return j_.at(key); }
 
@@ -50,7 +54,8 @@ class Reader {
   }
 
   static double number_at(const Json& v, const std::string& f, double lo, double hi, const char* meaning) {
-    if (!v.is_number()) throw InvalidArgument(f, f + " must be a number (" + meaning + ")");
+    if (!v.is_number())
+      throw InvalidArgument(f, f + " must be a number, got " + std::string(v.type_name()) + " (" + meaning + ")");
     const double x = v.get<double>();
     require_in_range(f.c_str(), x, lo, hi, meaning);
     return x;
@@ -59,7 +64,11 @@ class Reader {
   int integer(const char* key, int fallback, int lo, int hi, const char* meaning) const {
     if (!has(key)) return fallback;
     const Json& v = j_.at(key);
-    if (!v.is_number_integer()) throw InvalidArgument(field(key), field(key) + " must be an integer (" + meaning + ")");
+    if (!v.is_number_integer())
+      throw InvalidArgument(field(key), field(key) + " must be an integer, got " +
+                                            (v.is_number() ? std::string("a fraction") : std::string(v.type_name())) +
+                                            " (" + meaning + "; allowed [" + std::to_string(lo) + ", " +
+                                            std::to_string(hi) + "])");
     // Unsigned values beyond long long (e.g. 2^64 - 1) are out of range, not negative.
     const long long x = v.is_number_unsigned() && v.get<unsigned long long>() > 9000000000000000000ULL
                             ? 9000000000000000000LL
@@ -72,7 +81,8 @@ class Reader {
 
   std::string text(const char* key, const std::string& fallback) const {
     if (!has(key)) return fallback;
-    if (!j_.at(key).is_string()) throw InvalidArgument(field(key), field(key) + " must be a string");
+    if (!j_.at(key).is_string())
+      throw InvalidArgument(field(key), field(key) + " must be a string, got " + std::string(j_.at(key).type_name()));
     return j_.at(key).get<std::string>();
   }
 
@@ -82,8 +92,10 @@ class Reader {
     if (!has(key)) return fallback;
     const Json& v = j_.at(key);
     if (!v.is_array() || v.size() != N)
-      throw InvalidArgument(field(key), field(key) + " must be an array of " + std::to_string(N) + " numbers (" +
-                                            meaning + ")");
+      throw InvalidArgument(field(key), field(key) + " must be an array of " + std::to_string(N) + " numbers, got " +
+                                            (v.is_array() ? std::to_string(v.size()) + " elements"
+                                                          : std::string(v.type_name())) +
+                                            " (" + meaning + ")");
     std::array<double, N> out{};
     for (std::size_t i = 0; i < N; ++i)
       out[i] = number_at(v[i], field(key) + "[" + std::to_string(i) + "]", -bound, bound, meaning);
@@ -97,7 +109,10 @@ class Reader {
 
 Parameters read_parameters(const Reader& r, const Table& table) {
   const std::string default_preset = table.name.find("snooker") != std::string::npos ? "snooker" : "pool";
-  Parameters p = preset_parameters(r.text("preset", default_preset));
+  const std::string preset = r.text("preset", default_preset);
+  if (preset != "pool" && preset != "snooker")
+    throw InvalidArgument(r.field("preset"), r.field("preset") + " = " + quote_input(preset) + " is not known; allowed: pool, snooker");
+  Parameters p = preset_parameters(preset);
   p.ball = table.ball;
   p.ball.mass = r.number("mass", p.ball.mass, kMassRange.min, kMassRange.max, "ball mass, kg");
   p.ball.radius = r.number("radius", p.ball.radius, kRadiusRange.min, kRadiusRange.max, "ball radius, m");
@@ -125,8 +140,8 @@ std::vector<SimulationBall> read_rack(const Reader& r, const Table& table) {
   } else if (type == "snooker") {
     placed = rack_snooker(table, options);
   } else {
-    throw InvalidArgument(r.field("type"), r.field("type") + " = '" + type +
-                                               "' is not known; allowed: nine_ball, eight_ball, snooker");
+    throw InvalidArgument(r.field("type"), r.field("type") + " = " + quote_input(type) +
+                                               " is not known; allowed: nine_ball, eight_ball, snooker");
   }
   std::vector<SimulationBall> balls;
   for (const PlacedBall& b : placed) balls.push_back({b.id, b.name, {b.position, {}, {}}});
@@ -138,6 +153,11 @@ SimulationBall read_ball(const Reader& r) {
   SimulationBall b;
   b.id = r.integer("id", 0, 0, 1000000, "ball id");
   b.name = r.text("name", std::to_string(b.id));
+  bool printable = b.name.size() <= 32;
+  for (char c : b.name) printable = printable && static_cast<unsigned char>(c) >= 0x20 && c != 0x7F;
+  if (!printable)
+    throw InvalidArgument(r.field("name"), r.field("name") + " = " + quote_input(b.name) +
+                                               " must be at most 32 bytes without control characters");
   if (!r.has("position")) throw InvalidArgument(r.field("position"), r.field("position") + " is required ([x, y], m)");
   const auto pos = r.vector<2>("position", {}, 100.0, "centre on the bed, m");
   const auto vel = r.vector<2>("velocity", {}, kMaxSpeed, "m/s");
@@ -187,9 +207,67 @@ Json state_json(const BallState& s) {
   return {{"position", vec(s.position)}, {"velocity", vec(s.velocity)}, {"angular_velocity", vec(s.angular_velocity)}};
 }
 
+// An error of validate_simulation_input() (or of a cushion or jaw's impact
+// model), which names library fields (radius, mu_w, h, balls[3].speed), as
+// the JSON path the user wrote: what to change to fix it.
+InvalidArgument relabelled(const InvalidArgument& e, const Json& j, const std::vector<std::string>& origins) {
+  const std::string& f = e.field();
+  const std::string what = e.what();
+  if (f.rfind("scenario", 0) == 0) return e;
+  const auto given = [&](const char* object, const char* key) {
+    return j.contains(object) && j.at(object).is_object() && j.at(object).contains(key);
+  };
+  const auto at = [&](const std::string& path) { return InvalidArgument(path, path + ": " + what); };
+  const bool table_object = j.contains("table") && j.at("table").is_object();
+  // The ball's radius and mass come from "parameters", else from the table.
+  const auto ball_field = [&](const char* key) {
+    if (given("parameters", key) || !table_object) return "scenario.parameters." + std::string(key);
+    return std::string("scenario.table.ball");
+  };
+  for (const char* key : {"mass", "radius", "mu_s", "mu_r", "mu_sp", "g"}) {
+    if (f == key) return at(std::string(key) == "mass" || std::string(key) == "radius" ? ball_field(key) : "scenario.parameters." + f);
+  }
+  if (f == "cushion_restitution" || f == "e_e") return at("scenario.cushion.restitution");
+  if (f == "cushion_friction" || f == "mu_w") {
+    // mu_w's bounds depend on the contact angle (radius, cushion height) and on mu_s.
+    if (given("cushion", "friction")) return at("scenario.cushion.friction");
+    if (given("parameters", "mu_s")) return at("scenario.parameters.mu_s");
+    if (given("parameters", "radius")) return at("scenario.parameters.radius");
+    return at(table_object ? "scenario.table" : "scenario.cushion.friction");
+  }
+  if (f == "h" || f == "sin_theta") {
+    // A cushion or jaw contact height outside (R, 2R): the ball's radius or the table's heights.
+    return at(given("parameters", "radius") ? "scenario.parameters.radius" : table_object ? "scenario.table" : ball_field("radius"));
+  }
+  for (const char* key : {"restitution", "friction", "friction_excess", "friction_decay"})
+    if (f == key) return at("scenario.ball_collision." + f);
+  if (f == "max_events") return at("scenario.max_events");
+  if (f.rfind("balls[", 0) == 0) {
+    const std::size_t close = f.find(']');
+    const std::size_t i = close == std::string::npos ? origins.size() : std::stoul(f.substr(6, close - 6));
+    const std::string origin = i < origins.size() ? origins[i] : "scenario.balls";
+    std::string key = close == std::string::npos || close + 2 > f.size() ? "" : f.substr(close + 2);
+    if (key == "speed") key = "velocity";
+    if (key == "angular speed") key = "angular_velocity";
+    const std::string path = origin == "scenario.rack" || key.empty() ? origin : origin + "." + key;
+    // "balls[3].position = (...) is off the table" -> "scenario.balls[1].position = (...) ..."
+    const std::string lib = f.substr(0, close + 1) + ".";
+    std::string rest = what.rfind(lib, 0) == 0 ? what.substr(lib.size()) : what;
+    if (rest.rfind(key, 0) == 0 && !key.empty() && path.size() > key.size() &&
+        path.compare(path.size() - key.size(), key.size(), key) == 0)
+      return InvalidArgument(path, path + rest.substr(key.size()));
+    if (origin == "scenario.rack") rest = "a ball the rack placed: " + rest;
+    return InvalidArgument(path, path + ": " + rest);
+  }
+  return at(table_object ? "scenario.table" : "scenario");
+}
+
 }  // namespace
 
 Scenario scenario_from_json(std::string_view json_text) {
+  if (json_text.size() > kMaxScenarioBytes)
+    throw InvalidArgument("scenario", "scenario: " + std::to_string(json_text.size()) + " bytes of JSON is more than the " +
+                                          std::to_string(kMaxScenarioBytes) + " allowed (16 MiB)");
   const Json j = detail::parse_json(json_text, "scenario");
   const Reader r(j, "scenario");
   r.allow_only({"table", "parameters", "cushion", "ball_collision", "rack", "balls", "cue", "noise", "max_events"});
@@ -197,22 +275,26 @@ Scenario scenario_from_json(std::string_view json_text) {
   if (r.has("table")) {
     const Json& t = r.at("table");
     if (t.is_string()) {
-      try {
-        s.table = preset_table(t.get<std::string>());
-      } catch (const InvalidArgument& e) {
-        throw InvalidArgument("scenario.table", std::string("scenario.table: ") + e.what());
-      }
-    } else {
+      const std::string name = t.get<std::string>();
+      if (name != "pool_9ft" && name != "snooker_12ft" && name != "carom_10ft")
+        throw InvalidArgument("scenario.table", "scenario.table = " + quote_input(name) +
+                                                    " is not a known table; allowed: pool_9ft, snooker_12ft, carom_10ft, "
+                                                    "or a table object");
+      s.table = preset_table(name);
+    } else if (t.is_object()) {
       s.table = table_from_json(t.dump(), "scenario.table");
+    } else {
+      throw InvalidArgument("scenario.table", "scenario.table must be a table name or a table object, got " +
+                                                  std::string(t.type_name()));
     }
   } else {
     s.table = pool_table_9ft();
   }
   const Json empty = Json::object();
-  s.settings.parameters = read_parameters(Reader(r.has("parameters") ? r.at("parameters") : empty, "scenario.parameters"), s.table);
   if (r.has("parameters")) {
     Reader(r.at("parameters"), "scenario.parameters").allow_only({"preset", "mass", "radius", "mu_s", "mu_r", "mu_sp", "g"});
   }
+  s.settings.parameters = read_parameters(Reader(r.has("parameters") ? r.at("parameters") : empty, "scenario.parameters"), s.table);
   if (r.has("cushion")) {
     const Reader c(r.at("cushion"), "scenario.cushion");
     c.allow_only({"restitution", "friction"});
@@ -228,35 +310,59 @@ Scenario scenario_from_json(std::string_view json_text) {
     b.friction_excess = c.number("friction_excess", b.friction_excess, 0.0, 1.0, "extra friction at zero slip speed");
     b.friction_decay = c.number("friction_decay", b.friction_decay, 0.0, 100.0, "decay of the extra friction, s/m");
   }
-  s.settings.max_events = r.integer("max_events", s.settings.max_events, 1, 100000000, "event limit");
-  if (r.has("rack")) s.balls = read_rack(Reader(r.at("rack"), "scenario.rack"), s.table);
+  s.settings.max_events = r.integer("max_events", s.settings.max_events, 1, kMaxEvents, "event limit");
+  // Where each ball of s.balls came from, as the user wrote it: "scenario.rack"
+  // or "scenario.balls[k]" (with a rack, s.balls is not the "balls" list).
+  std::vector<std::string> origins;
+  if (r.has("rack")) {
+    s.balls = read_rack(Reader(r.at("rack"), "scenario.rack"), s.table);
+    origins.assign(s.balls.size(), "scenario.rack");
+  }
   if (r.has("balls")) {
     const Json& list = r.at("balls");
-    if (!list.is_array()) throw InvalidArgument("scenario.balls", "scenario.balls must be an array of balls");
+    if (!list.is_array())
+      throw InvalidArgument("scenario.balls", "scenario.balls must be an array of balls, got " + std::string(list.type_name()));
+    if (list.size() > kMaxBalls)
+      throw InvalidArgument("scenario.balls", "scenario.balls has " + std::to_string(list.size()) +
+                                                  " balls; allowed: at most " + std::to_string(kMaxBalls));
     for (std::size_t i = 0; i < list.size(); ++i) {
-      const SimulationBall b = read_ball(Reader(list[i], "scenario.balls[" + std::to_string(i) + "]"));
+      const std::string path = "scenario.balls[" + std::to_string(i) + "]";
+      const SimulationBall b = read_ball(Reader(list[i], path));
       bool replaced = false;
-      for (SimulationBall& existing : s.balls) {
-        if (existing.id == b.id && r.has("rack")) {
-          existing = b;
+      for (std::size_t k = 0; k < s.balls.size(); ++k) {
+        if (s.balls[k].id == b.id && origins[k] == "scenario.rack") {
+          s.balls[k] = b;
+          origins[k] = path;
           replaced = true;
         }
       }
-      if (!replaced) s.balls.push_back(b);
+      if (!replaced) {
+        s.balls.push_back(b);
+        origins.push_back(path);
+      }
     }
   }
-  if (s.balls.empty()) s.balls = read_rack(Reader(empty, "scenario.rack"), s.table);
+  if (s.balls.size() > kMaxBalls)
+    throw InvalidArgument("scenario.balls", "scenario.rack and scenario.balls place " + std::to_string(s.balls.size()) +
+                                                " balls; allowed: at most " + std::to_string(kMaxBalls));
+  if (s.balls.empty()) {
+    s.balls = read_rack(Reader(empty, "scenario.rack"), s.table);
+    origins.assign(s.balls.size(), "scenario.rack");
+  }
   const double radius = s.settings.parameters.ball.radius;
   if (r.has("cue")) s.cue = read_cue(Reader(r.at("cue"), "scenario.cue"), s.cue_parameters, radius);
   if (r.has("noise")) s.noise = read_noise(Reader(r.at("noise"), "scenario.noise"), radius);
 
-  // Everything that can be checked before running: balls, table, constants.
+  // Everything that can be checked before running: balls, table, constants,
+  // and the impact model of every cushion and jaw (the simulator builds
+  // them when it starts). Library fields become the JSON paths the user wrote.
   try {
     validate_simulation_input(s.table, s.balls, s.settings);
+    for (const JawArc& jaw : s.table.jaws)
+      (void)cushion_impact_model(s.settings.parameters,
+                                 {s.settings.cushion_restitution, s.settings.cushion_friction, jaw.contact_height});
   } catch (const InvalidArgument& e) {
-    const std::string f = e.field();
-    const bool pathed = f.rfind("scenario", 0) == 0 || f.rfind("table", 0) == 0;
-    throw InvalidArgument(pathed ? f : "scenario." + f, pathed ? e.what() : std::string("scenario.") + e.what());
+    throw relabelled(e, j, origins);
   }
   if (s.cue) {
     if (!find_ball(s.balls, s.cue->ball))
@@ -313,6 +419,21 @@ SimulationResult run_scenario(const Scenario& s) {
 
 std::string result_to_json(const Scenario& s, const SimulationResult& r, double sample_rate, int indent) {
   const Parameters& p = s.settings.parameters;
+  if (!(std::isfinite(sample_rate) && sample_rate >= 0.0))
+    throw InvalidArgument("sample_rate", sample_rate, "[0, infinity)", "sampling rate, Hz (0: none)");
+  if (sample_rate > 0.0) {
+    // Counted in floating point before anything is allocated.
+    const double times = std::floor(r.end_time * sample_rate) + 1.0;
+    const double states = times * static_cast<double>(r.balls.size());
+    if (!(states <= kMaxSamples)) {
+      const double most = std::floor(kMaxSamples / static_cast<double>(std::max<std::size_t>(r.balls.size(), 1)));
+      throw InvalidArgument("sample_rate", "sample_rate = " + format_number(sample_rate) + " Hz over the shot's " +
+                                               format_number(r.end_time) + " s and " + std::to_string(r.balls.size()) +
+                                               " balls gives " + format_number(states) + " sampled states; allowed: at most " +
+                                               format_number(kMaxSamples) + " (here a rate up to " +
+                                               format_number(std::floor(most / std::max(r.end_time, 1e-9))) + " Hz)");
+    }
+  }
   Json out;
   out["table"] = Json::parse(table_to_json(s.table));
   out["parameters"] = {{"mass", p.ball.mass},

@@ -555,5 +555,20 @@ TEST(CueStrikeNoise, BadSigmaOrDrawIsNamed) {
   expect_rejected(wild, "tip offset", "0.5 R");
 }
 
+TEST(CueStrike, PositionMustBeFiniteAndOnATable) {
+  // Once strike_ball(position = (nan, 0)) returned a NaN state.
+  const CueStrike s{2.0, 0.0, 0.0, 0.0, 0.0};
+  const BallParameters ball = snooker_parameters().ball;
+  for (const Vec2 bad : {Vec2{std::nan(""), 0.0}, Vec2{0.0, std::numeric_limits<double>::infinity()}, Vec2{1e9, 0.0}}) {
+    try {
+      strike_ball(s, bad, ball, CueParameters{});
+      ADD_FAILURE() << "no error";
+    } catch (const InvalidArgument& e) {
+      EXPECT_EQ(e.field().rfind("position[", 0), 0u) << e.field();
+    }
+  }
+  EXPECT_NO_THROW(strike_ball(s, {1.0, 0.5}, ball, CueParameters{}));
+}
+
 }  // namespace
 }  // namespace cueball

@@ -218,5 +218,31 @@ TEST(Planner, NonFiniteInputsAreRejectedNamingTheField) {
   EXPECT_EQ(invalid_field([&] { plan_natural_roll_shot({0.0, 1.0, 0.0}, bad); }), "mass");
 }
 
+TEST(Planner, PositionsBeyondAKilometreAreRejectedAsTheCliDoes) {
+  const Parameters p = snooker_parameters();
+  EXPECT_EQ(invalid_field([&] { plan_natural_roll_shot({0.0, 1e9, 0.0}, p); }), "x2");
+  EXPECT_EQ(invalid_field([&] { plan_natural_roll_shot({-1e4, 1.0, 0.0}, p); }), "x0");
+  EXPECT_EQ(invalid_field([&] { plan_shot_with_slide_end({0.0, 1.0, 0.0}, 2e3, p); }), "x1");
+  EXPECT_NO_THROW(plan_natural_roll_shot({-1000.0, 1000.0, 0.0}, pool_parameters()));
+}
+
+TEST(Planner, PlansBeyondTheSpeedCapNameTheInputThatAsksForThem) {
+  // Once plan_natural_roll_shot(x2 = 1e9) returned v0 = 15,811 m/s without a word.
+  const Parameters p = snooker_parameters();
+  try {
+    plan_natural_roll_shot({0.0, 999.0, 29.0}, p);
+    ADD_FAILURE() << "no error";
+  } catch (const InvalidArgument& e) {
+    EXPECT_EQ(e.field(), "x2");
+    const std::string m = e.what();
+    EXPECT_NE(m.find("v0 <= 30 m/s"), std::string::npos) << m;
+    EXPECT_NE(m.find("x2 at most"), std::string::npos) << m;
+  }
+  EXPECT_EQ(invalid_field([&] { plan_shot_with_spin({0.0, 999.0, 29.0}, 0.0, p); }), "x2");
+  // A plan at the cap is fine; every plan returned is within the caps.
+  const ShotPlan fast = plan_natural_roll_shot({0.0, 100.0, 25.0}, p);
+  EXPECT_LE(fast.v0, kMaxSpeed);
+}
+
 }  // namespace
 }  // namespace cueball

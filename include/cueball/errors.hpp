@@ -6,7 +6,9 @@
 #pragma once
 
 #include <stdexcept>
+#include <cstddef>
 #include <string>
+#include <string_view>
 
 namespace cueball {
 
@@ -38,6 +40,26 @@ class InfeasibleShot : public std::domain_error {
 
 /// A number as error messages show it (10 significant digits).
 std::string format_number(double value);
+
+/// Longest user string an error message echoes, in characters (UTF-8 code
+/// points); longer ones are cut and end in "...".
+inline constexpr std::size_t kMaxEchoedChars = 60;
+
+/// A user-supplied string (a JSON key or value, a file name, a flag's value)
+/// as error messages echo it: in double quotes, with control characters,
+/// quotes, backslashes and invalid UTF-8 escaped (\n, \u0000, \xff), cut
+/// after kMaxEchoedChars characters with "\u2026" (an ellipsis). The result
+/// is always one line.
+std::string quote_input(std::string_view text, std::size_t max_chars = kMaxEchoedChars);
+
+/// Longest file name an error message echoes (quote_input(path, kMaxEchoedPathChars)):
+/// a path is what tells the user which file, so it is cut much later.
+inline constexpr std::size_t kMaxEchoedPathChars = 400;
+
+/// An error message made safe to print as one line: control characters
+/// escaped as in quote_input() (without the quotes), and a message longer than
+/// 1000 bytes cut in the middle (its start names the field, its end the range).
+std::string one_line(std::string_view message);
 
 /// Throws InvalidArgument unless lo <= value <= hi (and value is finite).
 void require_in_range(const char* field, double value, double lo, double hi, const char* meaning = "");

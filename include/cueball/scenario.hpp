@@ -21,11 +21,17 @@
 //     "noise": { "speed": m/s, "aim_deg": deg, "elevation_deg": deg, "side": a/R, "height": b/R },
 //     "max_events": n
 //   }
+// Limits, checked before any work, each error naming what to change:
+//   kMaxScenarioBytes  the scenario's JSON text (a file, a Python str or dict)
+//   kMaxBalls          balls on the table (rack and "balls" together)
+//   kMaxEvents         "max_events"
+//   kMaxSamples        result_to_json's samples: sample times x balls
 // Tip offsets "side" (to the right, seen from behind the cue) and "height"
 // (above the centre) are in ball radii; the miscue limit is 0.5. Without
 // "cue" the balls start with the velocities given.
 #pragma once
 
+#include <cstddef>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -36,6 +42,15 @@
 #include "cueball/table.hpp"
 
 namespace cueball {
+
+/// Longest scenario JSON text, bytes (16 MiB).
+inline constexpr std::size_t kMaxScenarioBytes = 16u << 20;
+/// Most balls a scenario may place (a snooker frame has 22).
+inline constexpr std::size_t kMaxBalls = 64;
+/// Largest "max_events" (the default is 100000).
+inline constexpr int kMaxEvents = 1'000'000;
+/// Most sampled ball states in a result: (floor(end_time x rate) + 1) x balls.
+inline constexpr double kMaxSamples = 200000;
 
 struct ShotStrike {
   int ball = 0;              ///< id of the struck ball
@@ -72,7 +87,8 @@ SimulationResult run_scenario(const Scenario& s);
 /// The documented result JSON: table, parameters, events, balls (final
 /// states, pocketing, trajectory segments) and, when sample_rate > 0, the
 /// states sampled at that rate (Hz). `indent`: spaces per nesting level, or
-/// -1 for everything on one line.
+/// -1 for everything on one line. More than kMaxSamples sampled states throw
+/// InvalidArgument naming "sample_rate" (before anything is allocated).
 std::string result_to_json(const Scenario& s, const SimulationResult& r, double sample_rate = 0.0, int indent = 1);
 
 }  // namespace cueball

@@ -251,6 +251,20 @@ class PlannerTest(unittest.TestCase):
         with self.assertRaises(TypeError):  # keyword-only
             cueball.plan_natural_roll_shot(1.0)
 
+    def test_plans_stay_within_the_clis_ranges_and_the_speed_cap(self):
+        # Once plan_natural_roll_shot(x2=1e9) returned v0 = 15,811 m/s without a word.
+        with self.assertRaises(cueball.InvalidArgument) as caught:
+            cueball.plan_natural_roll_shot(x2=1e9)
+        self.assertEqual(caught.exception.field, "x2")
+        self.assertIn("[-1000, 1000]", str(caught.exception))
+        with self.assertRaises(cueball.InvalidArgument) as caught:
+            cueball.plan_natural_roll_shot(x2=999.0, v2=29.0)
+        self.assertEqual(caught.exception.field, "x2")
+        self.assertIn("v0 <= 30 m/s", str(caught.exception))
+        with self.assertRaises(cueball.InvalidArgument) as caught:
+            cueball.plan_shot_with_spin(w0=0.0, x2=999.0, v2=29.0)
+        self.assertEqual(caught.exception.field, "x2")
+
 
 class CueStrikeTest(unittest.TestCase):
     p = cueball.pool_parameters()
@@ -288,6 +302,12 @@ class CueStrikeTest(unittest.TestCase):
         with self.assertRaises(cueball.InvalidArgument) as caught:
             cueball.strike_ball(cueball.CueStrike(speed=1.0), params=self.p, cue=cueball.CueParameters(mass=5.0))
         self.assertEqual(caught.exception.field, "cue_mass")
+        # Once a NaN state: the position was not checked.
+        for position, field in [((math.nan, 0.0), "position[0]"), ((0.0, math.inf), "position[1]"), ((1e9, 0.0), "position[0]")]:
+            with self.subTest(position=position):
+                with self.assertRaises(cueball.InvalidArgument) as caught:
+                    cueball.strike_ball(cueball.CueStrike(speed=1.0), position=position, params=self.p)
+                self.assertEqual(caught.exception.field, field)
 
 
 class CushionImpactTest(unittest.TestCase):
@@ -353,6 +373,21 @@ class CushionImpactTest(unittest.TestCase):
         self.assertEqual(caught.exception.field, "solver")
         with self.assertRaises(cueball.InvalidArgument):
             cueball.cushion_impact(1.0, 1.0, restitution=1.5)
+
+    def test_ranges_are_the_clis(self):
+        # The CLI's bounds: speed up to 30 m/s, spins up to 3000 rad/s, at most 1e8 Euler steps
+        # (1e9 steps once ran for minutes).
+        for kwargs, field in [
+            (dict(speed=31.0, angle=1.0), "V0"),
+            (dict(speed=1.0, angle=1.0, topspin=1e9), "w_T"),
+            (dict(speed=1.0, angle=1.0, sidespin=-1e9), "w_S"),
+            (dict(speed=1.0, angle=1.0, solver="paper", paper_steps=10**9), "paper_steps"),
+            (dict(speed=1.0, angle=1.0, paper_steps=0), "paper_steps"),
+        ]:
+            with self.subTest(field=field):
+                with self.assertRaises(cueball.InvalidArgument) as caught:
+                    cueball.cushion_impact(**kwargs)
+                self.assertEqual(caught.exception.field, field)
 
 
 class SimulateTest(unittest.TestCase):
@@ -425,6 +460,53 @@ class SimulateTest(unittest.TestCase):
             cueball.simulate(42)
         with self.assertRaises(FileNotFoundError):
             cueball.simulate(pathlib.Path(tempfile.gettempdir()) / "no-such-cueball-scenario.json")
+
+    def test_recursive_and_deep_dicts_raise_instead_of_crashing(self):
+        # Once a segfault: the NaN check recursed without a limit.
+        looped = {"table": "pool_9ft"}
+        looped["rack"] = looped
+        deep = {}
+        node = deep
+        for _ in range(100000):
+            node["x"] = {}
+            node = node["x"]
+        listed = []
+        listed.append(listed)
+        for scenario, field, words in [
+            (looped, "scenario.rack", "contains itself"),
+            (deep, "scenario.x.x.x", "nests deeper than 64"),
+            ({"balls": listed}, "scenario.balls", "contains itself"),
+        ]:
+            with self.subTest(words=words):
+                with self.assertRaises(cueball.InvalidArgument) as caught:
+                    cueball.simulate(scenario)
+                self.assertIn(field, caught.exception.field)
+                self.assertIn(words, str(caught.exception))
+        # A dict shared (not circular) is fine.
+        ball = {"id": 0, "position": [0.5, 0.5]}
+        shared = {"balls": [ball], "cue": {"ball": 0, "aim_deg": 0, "speed": 1.0}, "noise": {}}
+        self.assertEqual(len(cueball.simulate(shared)["balls"]), 1)
+
+    def test_strict_json_and_bounded_resources(self):
+        with self.assertRaises(cueball.InvalidArgument) as caught:
+            cueball.simulate('{"max_events": 5, "max_events": 6}')
+        self.assertEqual(caught.exception.field, "scenario.max_events")
+        self.assertIn("given twice", str(caught.exception))
+        with self.assertRaisesRegex(cueball.InvalidArgument, "NUL byte"):
+            cueball.simulate('{"max_events": 5}\x00{"x": 1}')
+        with self.assertRaises(cueball.InvalidArgument) as caught:
+            cueball.simulate("/dev/zero")
+        self.assertIn("larger than the 16777216 bytes", str(caught.exception))
+        with self.assertRaises(cueball.InvalidArgument) as caught:
+            cueball.simulate(break_with(max_events=10**8))
+        self.assertEqual(caught.exception.field, "scenario.max_events")
+        with self.assertRaises(cueball.InvalidArgument) as caught:
+            cueball.simulate(None, sample_rate=1e4)
+        self.assertEqual(caught.exception.field, "sample_rate")
+        self.assertIn("at most 200000", str(caught.exception))
+        with self.assertRaises(cueball.InvalidArgument) as caught:
+            cueball.simulate({"parameters": {"radius": 0.05}})
+        self.assertEqual(caught.exception.field, "scenario.parameters.radius")
 
     def test_event_limit_is_a_simulation_error(self):
         with self.assertRaises(cueball.SimulationError):

@@ -262,11 +262,10 @@ void validate_boundary(const Table& t, const std::string& prefix) {
       }
     }
     fail(cushion(i) + ".end",
-         "the boundary is open after " + cushion(i) + ": " + cushion(i) + ".end = " + format_point(p) + " is " +
-             format_number(norm(q - p)) + " m from " + cushion(k) + ".start = " + format_point(q) + hint +
-             ". The cushions must form a closed loop: each end meets the next segment's start directly, on a jaw "
-             "arc tangent to both, or within a pocket's circle (tolerance " +
-             format_number(kBoundaryTolerance) + " m)");
+         cushion(i) + ".end = " + format_point(p) + " is " + format_number(norm(q - p)) + " m from " + cushion(k) +
+             ".start = " + format_point(q) + hint + ", allowed " + format_number(kBoundaryTolerance) +
+             " m: the boundary is open there. The cushions must form a closed loop: each end meets the next "
+             "segment's start directly, on a jaw arc tangent to both, or within a pocket's circle");
   }
   // 2. Counter-clockwise.
   const double area = signed_area(t);

@@ -184,14 +184,18 @@ bool inside_polygon(const Table& t, Vec2 p) {
   bool inside = false;
   const auto edge = [&](Vec2 a, Vec2 b) {
     if ((a.y > p.y) != (b.y > p.y)) {
-      const double x = a.x + (p.y - a.y) * (b.x - a.x) / (b.y - a.y);
-      if (p.x < x) inside = !inside;
+      // Where the edge crosses the horizontal through p, compared without a
+      // division: p.x < a.x + (p.y - a.y) (b.x - a.x) / (b.y - a.y).
+      const double lhs = (p.x - a.x) * (b.y - a.y), rhs = (p.y - a.y) * (b.x - a.x);
+      if (b.y > a.y ? lhs < rhs : lhs > rhs) inside = !inside;
     }
   };
-  const std::size_t n = t.cushions.size();
-  for (std::size_t i = 0; i < n; ++i) {
-    edge(t.cushions[i].start, t.cushions[i].end);
-    edge(t.cushions[i].end, t.cushions[(i + 1) % n].start);
+  if (t.cushions.empty()) return false;
+  Vec2 previous_end = t.cushions.back().end;
+  for (const CushionSegment& c : t.cushions) {
+    edge(previous_end, c.start);  // the join into this segment
+    edge(c.start, c.end);
+    previous_end = c.end;
   }
   return inside;
 }
@@ -535,12 +539,12 @@ double distance_to_segment(const CushionSegment& s, Vec2 p) {
 bool ball_on_table(const Table& table, Vec2 p) { return ball_on_table(table, p, table.ball.radius); }
 
 bool inside_playing_area(const Table& table, Vec2 p, double margin) {
+  if (inside_polygon(table, p)) return true;  // the common case first
   for (const Pocket& pocket : table.pockets) {
     const Vec2 d = p - pocket.centre;
     const double reach = pocket.radius + margin;
     if (dot(d, d) <= reach * reach) return true;
   }
-  if (inside_polygon(table, p)) return true;
   if (!(margin > 0.0)) return false;
   const std::size_t n = table.cushions.size();
   for (std::size_t i = 0; i < n; ++i) {

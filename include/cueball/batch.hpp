@@ -75,8 +75,8 @@ struct BatchResult {
   int simulated = 0;            ///< shots - miscues - failures
   int miscues = 0;              ///< noisy tip offsets beyond the miscue limit (not simulated)
   int failures = 0;             ///< shots that stopped with SimulationError (event limit)
-  int speed_reflected = 0;      ///< shots whose noisy cue speed was reflected into (0, kMaxCueSpeed]
-  int elevation_reflected = 0;  ///< shots whose noisy elevation was reflected into [0, pi/2)
+  int speed_reflected = 0;      ///< shots whose noisy cue speed was reflected into (0, kMaxCueSpeed] (any outcome)
+  int elevation_reflected = 0;  ///< shots whose noisy elevation was reflected into [0, pi/2) (any outcome)
   long long events = 0;         ///< events resolved over all simulated shots
   double seconds = 0.0;         ///< wall-clock time of the whole batch
   double shots_per_second = 0.0;

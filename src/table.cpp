@@ -20,6 +20,7 @@
 #include <algorithm>
 #include <cmath>
 #include <initializer_list>
+#include <limits>
 #include <numbers>
 #include <sstream>
 #include <string>
@@ -162,7 +163,10 @@ void validate_fields(const Table& t, const std::string& prefix);
 Vec2 direction(const CushionSegment& s) { return (s.end - s.start) / norm(s.end - s.start); }
 
 bool on_circle(Vec2 p, Vec2 centre, double radius) {
-  return std::abs(norm(p - centre) - radius) <= kBoundaryTolerance;
+  const Vec2 d = p - centre;
+  const double reach = radius + kBoundaryTolerance;
+  if (!(dot(d, d) <= reach * reach)) return false;  // cheap rejection of the jaws far away
+  return std::abs(norm(d) - radius) <= kBoundaryTolerance;
 }
 
 // Signed area of the polygon through every segment's start and end, in order
@@ -203,6 +207,13 @@ bool inside_polygon(const Table& t, Vec2 p) {
 // Smallest distance between two segments that do not properly cross, or 0
 // when they do.
 double segment_gap(const CushionSegment& a, const CushionSegment& b) {
+  // Far apart (their boxes, widened by the tolerance, do not meet): the usual case.
+  const double slack = 2.0 * kBoundaryTolerance;
+  if (std::max(a.start.x, a.end.x) + slack < std::min(b.start.x, b.end.x) ||
+      std::max(b.start.x, b.end.x) + slack < std::min(a.start.x, a.end.x) ||
+      std::max(a.start.y, a.end.y) + slack < std::min(b.start.y, b.end.y) ||
+      std::max(b.start.y, b.end.y) + slack < std::min(a.start.y, a.end.y))
+    return std::numeric_limits<double>::infinity();
   const double o1 = cross(a.end - a.start, b.start - a.start), o2 = cross(a.end - a.start, b.end - a.start);
   const double o3 = cross(b.end - b.start, a.start - b.start), o4 = cross(b.end - b.start, a.end - b.start);
   if (((o1 > 0.0 && o2 < 0.0) || (o1 < 0.0 && o2 > 0.0)) && ((o3 > 0.0 && o4 < 0.0) || (o3 < 0.0 && o4 > 0.0)))
@@ -225,7 +236,8 @@ Join find_join(const Table& t, std::size_t i) {
   for (std::size_t k = 0; k < t.pockets.size(); ++k) {
     const Pocket& pocket = t.pockets[k];
     const double reach = pocket.radius + kBoundaryTolerance;
-    if (norm(p - pocket.centre) <= reach && norm(q - pocket.centre) <= reach) return {JoinKind::pocket, k};
+    const Vec2 dp = p - pocket.centre, dq = q - pocket.centre;
+    if (dot(dp, dp) <= reach * reach && dot(dq, dq) <= reach * reach) return {JoinKind::pocket, k};
   }
   if (norm(p - q) <= kBoundaryTolerance) return {JoinKind::direct, 0};
   for (std::size_t j = 0; j < t.jaws.size(); ++j) {

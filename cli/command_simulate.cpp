@@ -81,7 +81,7 @@ void run_simulate(const SimulateFlags& f, std::ostream& out, std::ostream& err) 
 
 struct BatchFlags {
   std::string scenario;
-  int shots = 1000;
+  double shots = 1000;  // read as a number so that 1e9 or 1e20 get the range error, not a parse error
   int threads = 1;
   long long seed = 0;
   bool json = false;
@@ -89,8 +89,10 @@ struct BatchFlags {
 };
 
 void run_batch(const BatchFlags& f, std::ostream& out, std::ostream& err) {
-  check_flag("--shots", f.shots, 1, 1e8, "number of shots");
-  check_flag("--threads", f.threads, 1, 256, "worker threads");
+  check_flag("--shots", f.shots, 1, kMaxBatchShots, "number of shots; memory does not grow with it");
+  if (f.shots != std::floor(f.shots))
+    throw UsageError("--shots = " + format_number(f.shots) + " is not a whole number of shots");
+  check_flag("--threads", f.threads, 1, kMaxBatchThreads, "worker threads");
   check_flag("--seed", static_cast<double>(f.seed), 0, 9.0e15, "random seed");
   Scenario s = load_scenario(f.scenario);
   if (!s.cue) throw UsageError("the scenario has no \"cue\" strike to repeat");
@@ -106,13 +108,15 @@ void run_batch(const BatchFlags& f, std::ostream& out, std::ostream& err) {
     check_flag("--sigma-height", *f.sigma_height, 0, 0.5, "sigma of the height offset, ball radii"),
         s.noise.height_offset = *f.sigma_height * radius;
 
-  const BatchResult r = simulate_batch(s, {f.shots, f.threads, static_cast<std::uint64_t>(f.seed)});
+  const BatchResult r = simulate_batch(s, {static_cast<int>(f.shots), f.threads, static_cast<std::uint64_t>(f.seed)});
   Report report("batch of " + std::to_string(r.shots) + " noisy shots (" + std::to_string(f.threads) + " threads, seed " +
                 std::to_string(f.seed) + ")");
   report.add_count("shots", r.shots, "requested");
   report.add_count("simulated", r.simulated, "shots simulated");
-  report.add_count("miscues", r.miscues, "noisy strikes beyond the miscue limit (not simulated)");
+  report.add_count("miscues", r.miscues, "noisy tip offsets beyond the miscue limit (not simulated)");
   report.add_count("failures", r.failures, "shots stopped at the event limit");
+  report.add_count("speed_reflected", r.speed_reflected, "noisy cue speeds reflected into (0, 12] m/s (simulated)");
+  report.add_count("elevation_reflected", r.elevation_reflected, "noisy elevations reflected into [0, 90) deg (simulated)");
   report.add("seconds", r.seconds, "s", "wall-clock time");
   report.add("shots_per_second", r.shots_per_second, "1/s");
   report.add("events_per_shot", r.simulated ? static_cast<double>(r.events) / r.simulated : 0.0, "");
@@ -171,9 +175,12 @@ Command add_batch_command(CLI::App& app) {
       "Simulates N copies of the scenario's shot with Gaussian execution noise on the cue strike (speed,\n"
       "aim, elevation, tip offsets; sigmas from the scenario's \"noise\" or the --sigma-* flags) across\n"
       "threads. Deterministic for a seed whatever --threads is. Reports each ball's pocketing\n"
-      "probability and final-position spread, and the throughput.");
+      "probability and final-position spread, and the throughput. A noisy speed above the 12 m/s cap\n"
+      "or an elevation below 0 is reflected at the limit (2 cap - v, -e) and counted; a noisy tip\n"
+      "offset beyond the miscue limit (0.5 R) is a miscue, counted and not simulated. Memory does\n"
+      "not grow with --shots (at most 1e8).");
   sub->add_option("scenario", flags->scenario, "Scenario JSON file (default: the built-in 9-ball break)");
-  sub->add_option("--shots", flags->shots, "Number of shots")->capture_default_str();
+  sub->add_option("--shots", flags->shots, "Number of shots, [1, 1e8]")->capture_default_str();
   sub->add_option("--threads", flags->threads, "Worker threads")->capture_default_str();
   sub->add_option("--seed", flags->seed, "Random seed")->capture_default_str();
   sub->add_option("--sigma-speed", flags->sigma_speed, "Sigma of the cue speed, m/s");

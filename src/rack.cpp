@@ -9,6 +9,7 @@
 // parallel to and nearest the top cushion).
 #include "cueball/rack.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <random>
@@ -92,21 +93,47 @@ std::vector<PlacedBall> place(const std::vector<RackBall>& balls, Vec2 apex, dou
 }
 
 // Every ball must be placeable and no two may overlap (a custom table may be
-// too small for the rack).
-void check_fits(const Table& table, const std::vector<PlacedBall>& balls) {
+// too small for the rack). Errors name the field "rack" (the scenario's
+// "rack" object; the rack functions have no other input that can be wrong
+// for a valid table), give the offending ball's position or the pair's
+// distance, and what the rack needs. `object_balls` are the ones placed on
+// the lattice, whose apex is at x = 3L/4 on the long string for every rack.
+void check_fits(const Table& table, const std::vector<PlacedBall>& balls, const std::vector<PlacedBall>& lattice,
+                const char* type, bool cue_behind_head_string) {
+  const double R = table.ball.radius;
+  double d = 0.0;  // the closest a ball's centre comes to a cushion nose
+  for (const CushionSegment& c : table.cushions) d = std::max(d, cushion_contact_distance(c.contact_height, R));
+  const std::string head = std::string("rack: the ") + type + " rack does not fit on table '" + table.name +
+                           "' (length " + format_number(table.length) + " m, width " + format_number(table.width) +
+                           " m): ";
   for (const PlacedBall& b : balls) {
-    if (!ball_on_table(table, b.position)) {
-      throw InvalidArgument("table", "the rack does not fit on table '" + table.name + "': ball '" + b.name +
-                                         "' at (" + format_number(b.position.x) + ", " + format_number(b.position.y) +
-                                         ") m is off the playing surface, over a pocket or overlaps a cushion");
+    if (ball_on_table(table, b.position)) continue;
+    // What a rectangular table needs: the lattice's reach beyond x = 3L/4
+    // and either side of y = W/2, plus the contact distance to the noses.
+    double along = 0.0, across = 0.0;
+    for (const PlacedBall& l : lattice) {
+      along = std::max(along, l.position.x - 0.75 * table.length);
+      across = std::max(across, std::abs(l.position.y - 0.5 * table.width));
     }
+    double need_length = 4.0 * (along + d);
+    if (cue_behind_head_string) need_length = std::max(need_length, 4.0 * (2.0 * R + d));
+    const double need_width = 2.0 * (across + d);
+    throw InvalidArgument(
+        "rack", head + "ball '" + b.name + "' at (" + format_number(b.position.x) + ", " + format_number(b.position.y) +
+                    ") m is off the playing surface, over a pocket or overlaps a cushion: every centre must lie in [" +
+                    format_number(d) + ", " + format_number(table.length - d) + "] x [" + format_number(d) + ", " +
+                    format_number(table.width - d) + "] m, clear of jaws and pockets. On a rectangular table this rack "
+                    "needs length >= " + format_number(need_length) + " m and width >= " + format_number(need_width) +
+                    " m");
   }
-  const double min_distance = 2.0 * table.ball.radius - kPlacementTolerance;
+  const double min_distance = 2.0 * R - kPlacementTolerance;
   for (std::size_t i = 0; i < balls.size(); ++i) {
     for (std::size_t k = i + 1; k < balls.size(); ++k) {
-      if (norm(balls[i].position - balls[k].position) < min_distance) {
-        throw InvalidArgument("table", "the rack does not fit on table '" + table.name + "': balls '" +
-                                           balls[i].name + "' and '" + balls[k].name + "' overlap");
+      const double apart = norm(balls[i].position - balls[k].position);
+      if (apart < min_distance) {
+        throw InvalidArgument("rack", head + "balls '" + balls[i].name + "' and '" + balls[k].name +
+                                          "' overlap: their centres are " + format_number(apart) +
+                                          " m apart, at least 2R = " + format_number(2.0 * R) + " m needed");
       }
     }
   }
@@ -118,12 +145,13 @@ Vec2 pool_cue_ball(const Table& table) {
 }
 
 std::vector<PlacedBall> rack_pool(const Table& table, const RackOptions& options,
-                                  const std::vector<RackBall>& balls) {
+                                  const std::vector<RackBall>& balls, const char* type) {
   validate(table);
   validate(options);
   std::vector<PlacedBall> out{{0, "cue", pool_cue_ball(table)}};
-  for (PlacedBall& b : place(balls, foot_spot(table), table.ball.radius, options)) out.push_back(std::move(b));
-  check_fits(table, out);
+  const std::vector<PlacedBall> lattice = place(balls, foot_spot(table), table.ball.radius, options);
+  out.insert(out.end(), lattice.begin(), lattice.end());
+  check_fits(table, out, lattice, type, true);
   return out;
 }
 
@@ -158,7 +186,7 @@ std::vector<PlacedBall> rack_nine_ball(const Table& table, const RackOptions& op
       {1, "1", {0, 0}}, {2, "2", {1, 0}}, {3, "3", {1, 1}}, {4, "4", {2, 0}}, {9, "9", {2, 1}},
       {5, "5", {2, 2}}, {6, "6", {3, 1}}, {7, "7", {3, 2}}, {8, "8", {4, 2}},
   };
-  return rack_pool(table, options, balls);
+  return rack_pool(table, options, balls, "nine_ball");
 }
 
 std::vector<PlacedBall> rack_eight_ball(const Table& table, const RackOptions& options) {
@@ -169,7 +197,7 @@ std::vector<PlacedBall> rack_eight_ball(const Table& table, const RackOptions& o
       {3, "3", {2, 2}},   {11, "11", {3, 0}}, {7, "7", {3, 1}},   {14, "14", {3, 2}}, {4, "4", {3, 3}},
       {5, "5", {4, 0}},   {13, "13", {4, 1}}, {15, "15", {4, 2}}, {6, "6", {4, 3}},   {12, "12", {4, 4}},
   };
-  return rack_pool(table, options, balls);
+  return rack_pool(table, options, balls, "eight_ball");
 }
 
 std::vector<PlacedBall> rack_snooker(const Table& table, const RackOptions& options) {
@@ -185,14 +213,15 @@ std::vector<PlacedBall> rack_snooker(const Table& table, const RackOptions& opti
   // In the D, between the brown and yellow spots.
   std::vector<PlacedBall> out{{0, "cue", {s.baulk_line_x - s.d_radius / 3.0, 0.5 * table.width - 0.5 * s.d_radius}}};
   const Vec2 apex{s.pink.x + 2.0 * R + kPinkApexGap, s.pink.y};
-  for (PlacedBall& b : place(reds, apex, R, options)) out.push_back(std::move(b));
+  const std::vector<PlacedBall> lattice = place(reds, apex, R, options);
+  out.insert(out.end(), lattice.begin(), lattice.end());
   out.push_back({16, "yellow", s.yellow});
   out.push_back({17, "green", s.green});
   out.push_back({18, "brown", s.brown});
   out.push_back({19, "blue", s.blue});
   out.push_back({20, "pink", s.pink});
   out.push_back({21, "black", s.black});
-  check_fits(table, out);
+  check_fits(table, out, lattice, "snooker", false);
   return out;
 }
 

@@ -20,6 +20,7 @@
 #include <algorithm>
 #include <cmath>
 #include <initializer_list>
+#include <limits>
 #include <numbers>
 #include <sstream>
 #include <string>
@@ -155,8 +156,202 @@ bool table_plainly_valid(const Table& t) {
   return true;
 }
 
+// ------------------------------------------------------------------ closed boundary
+
+void validate_fields(const Table& t, const std::string& prefix);
+
+Vec2 direction(const CushionSegment& s) { return (s.end - s.start) / norm(s.end - s.start); }
+
+bool on_circle(Vec2 p, Vec2 centre, double radius) {
+  const Vec2 d = p - centre;
+  const double reach = radius + kBoundaryTolerance;
+  if (!(dot(d, d) <= reach * reach)) return false;  // cheap rejection of the jaws far away
+  return std::abs(norm(d) - radius) <= kBoundaryTolerance;
+}
+
+// Signed area of the polygon through every segment's start and end, in order
+// (shoelace formula).
+double signed_area(const Table& t) {
+  double twice = 0.0;
+  const std::size_t n = t.cushions.size();
+  for (std::size_t i = 0; i < n; ++i) {
+    const CushionSegment& s = t.cushions[i];
+    const Vec2 next = t.cushions[(i + 1) % n].start;
+    twice += cross(s.start, s.end) + cross(s.end, next);
+  }
+  return 0.5 * twice;
+}
+
+// Crossing-number test over the same polygon (edges: each segment, then the
+// join from its end to the next start).
+bool inside_polygon(const Table& t, Vec2 p) {
+  bool inside = false;
+  const auto edge = [&](Vec2 a, Vec2 b) {
+    if ((a.y > p.y) != (b.y > p.y)) {
+      // Where the edge crosses the horizontal through p, compared without a
+      // division: p.x < a.x + (p.y - a.y) (b.x - a.x) / (b.y - a.y).
+      const double lhs = (p.x - a.x) * (b.y - a.y), rhs = (p.y - a.y) * (b.x - a.x);
+      if (b.y > a.y ? lhs < rhs : lhs > rhs) inside = !inside;
+    }
+  };
+  if (t.cushions.empty()) return false;
+  Vec2 previous_end = t.cushions.back().end;
+  for (const CushionSegment& c : t.cushions) {
+    edge(previous_end, c.start);  // the join into this segment
+    edge(c.start, c.end);
+    previous_end = c.end;
+  }
+  return inside;
+}
+
+// Smallest distance between two segments that do not properly cross, or 0
+// when they do.
+double segment_gap(const CushionSegment& a, const CushionSegment& b) {
+  // Far apart (their boxes, widened by the tolerance, do not meet): the usual case.
+  const double slack = 2.0 * kBoundaryTolerance;
+  if (std::max(a.start.x, a.end.x) + slack < std::min(b.start.x, b.end.x) ||
+      std::max(b.start.x, b.end.x) + slack < std::min(a.start.x, a.end.x) ||
+      std::max(a.start.y, a.end.y) + slack < std::min(b.start.y, b.end.y) ||
+      std::max(b.start.y, b.end.y) + slack < std::min(a.start.y, a.end.y))
+    return std::numeric_limits<double>::infinity();
+  const double o1 = cross(a.end - a.start, b.start - a.start), o2 = cross(a.end - a.start, b.end - a.start);
+  const double o3 = cross(b.end - b.start, a.start - b.start), o4 = cross(b.end - b.start, a.end - b.start);
+  if (((o1 > 0.0 && o2 < 0.0) || (o1 < 0.0 && o2 > 0.0)) && ((o3 > 0.0 && o4 < 0.0) || (o3 < 0.0 && o4 > 0.0)))
+    return 0.0;
+  return std::min({distance_to_segment(a, b.start), distance_to_segment(a, b.end), distance_to_segment(b, a.start),
+                   distance_to_segment(b, a.end)});
+}
+
+enum class JoinKind { direct, jaw, pocket, open };
+
+struct Join {
+  JoinKind kind = JoinKind::open;
+  std::size_t index = 0;  // the jaw or the pocket
+};
+
+Join find_join(const Table& t, std::size_t i) {
+  const std::size_t n = t.cushions.size();
+  const Vec2 p = t.cushions[i].end, q = t.cushions[(i + 1) % n].start;
+  // A pocket first: two facings may also meet each other inside the hole.
+  for (std::size_t k = 0; k < t.pockets.size(); ++k) {
+    const Pocket& pocket = t.pockets[k];
+    const double reach = pocket.radius + kBoundaryTolerance;
+    const Vec2 dp = p - pocket.centre, dq = q - pocket.centre;
+    if (dot(dp, dp) <= reach * reach && dot(dq, dq) <= reach * reach) return {JoinKind::pocket, k};
+  }
+  if (norm(p - q) <= kBoundaryTolerance) return {JoinKind::direct, 0};
+  for (std::size_t j = 0; j < t.jaws.size(); ++j) {
+    if (on_circle(p, t.jaws[j].centre, t.jaws[j].radius) && on_circle(q, t.jaws[j].centre, t.jaws[j].radius))
+      return {JoinKind::jaw, j};
+  }
+  return {};
+}
+
+// The checks of validate(Table) beyond single fields (table.hpp). Numbers
+// only until something fails: the simulator validates its table on every
+// call.
+void validate_boundary(const Table& t, const std::string& prefix) {
+  const std::size_t n = t.cushions.size();
+  const auto cushion = [&](std::size_t i) { return join(prefix, indexed("cushions", i)); };
+  std::vector<Join> joins(n);
+  // 1. Every end meets the next start.
+  for (std::size_t i = 0; i < n; ++i) {
+    joins[i] = find_join(t, i);
+    if (joins[i].kind != JoinKind::open) continue;
+    const std::size_t k = (i + 1) % n;
+    const Vec2 p = t.cushions[i].end, q = t.cushions[k].start;
+    if (norm(t.cushions[k].end - p) <= kBoundaryTolerance) {
+      fail(cushion(k), cushion(k) + " runs end to start: its end " + format_point(t.cushions[k].end) + " meets " +
+                           cushion(i) + ".end; every segment runs counter-clockwise, from where the previous one "
+                           "ends, with the playing surface on its left");
+    }
+    // The jaw that comes nearest to joining them, if one is meant to.
+    std::string hint;
+    double best = 0.05;  // m: farther than this, no jaw is meant to join them
+    for (std::size_t j = 0; j < t.jaws.size(); ++j) {
+      const double off_p = std::abs(norm(p - t.jaws[j].centre) - t.jaws[j].radius);
+      const double off_q = std::abs(norm(q - t.jaws[j].centre) - t.jaws[j].radius);
+      if (std::max(off_p, off_q) < best) {
+        best = std::max(off_p, off_q);
+        hint = "; the nearest jaw, " + join(prefix, indexed("jaws", j)) + ", passes " + format_number(off_p) +
+               " m from the end and " + format_number(off_q) + " m from the start";
+      }
+    }
+    fail(cushion(i) + ".end",
+         cushion(i) + ".end = " + format_point(p) + " is " + format_number(norm(q - p)) + " m from " + cushion(k) +
+             ".start = " + format_point(q) + hint + ", allowed " + format_number(kBoundaryTolerance) +
+             " m: the boundary is open there. The cushions must form a closed loop: each end meets the next "
+             "segment's start directly, on a jaw arc tangent to both, or within a pocket's circle");
+  }
+  // 2. Counter-clockwise.
+  const double area = signed_area(t);
+  if (!(area > 0.0)) {
+    fail(join(prefix, "cushions"),
+         join(prefix, "cushions") + " run clockwise (the polygon through their ends has signed area " +
+             format_number(area) + " m^2, allowed > 0): list them counter-clockwise seen from above, each with "
+             "the playing surface on the left of start -> end");
+  }
+  // 3. Corners the ball cannot reach, jaws rounding convex ones.
+  for (std::size_t i = 0; i < n; ++i) {
+    const std::size_t k = (i + 1) % n;
+    const CushionSegment& a = t.cushions[i];
+    const CushionSegment& b = t.cushions[k];
+    if (joins[i].kind == JoinKind::direct) {
+      const double turn = cross(direction(a), direction(b));
+      const bool left_or_straight = turn > 1e-9 || (turn >= -1e-9 && dot(direction(a), direction(b)) > 0.0);
+      if (!left_or_straight) {
+        fail(cushion(k) + ".start",
+             cushion(k) + ".start = " + format_point(b.start) + " meets " + cushion(i) +
+                 ".end at a corner that juts into the playing surface (the boundary turns right or back there); "
+                 "such a corner needs a jaw arc tangent to both segments");
+      }
+    } else if (joins[i].kind == JoinKind::jaw) {
+      const std::size_t j = joins[i].index;
+      const JawArc& jaw = t.jaws[j];
+      const Vec2 from_a = a.end - jaw.radius * inward_normal(a);
+      const Vec2 from_b = b.start - jaw.radius * inward_normal(b);
+      const double off = std::max(norm(jaw.centre - from_a), norm(jaw.centre - from_b));
+      if (!(off <= kBoundaryTolerance)) {
+        const std::string base = join(prefix, indexed("jaws", j));
+        fail(base, base + " (centre " + format_point(jaw.centre) + ", radius " + format_number(jaw.radius) +
+                       " m) joins " + cushion(i) + ".end and " + cushion(k) +
+                       ".start but is not tangent to both with its centre behind them (in the cushion): the "
+                       "centre should be at " + format_point(from_a) + " for " + cushion(i) + " and at " +
+                       format_point(from_b) + " for " + cushion(k) + ", it is " + format_number(off) +
+                       " m off (allowed " + format_number(kBoundaryTolerance) + " m)");
+      }
+    }
+  }
+  // 4. No crossings.
+  for (std::size_t k = 0; k < n; ++k) {
+    for (std::size_t i = 0; i < k; ++i) {
+      if (k == i + 1 || (i == 0 && k == n - 1)) continue;  // neighbours in the loop
+      const double gap = segment_gap(t.cushions[i], t.cushions[k]);
+      if (gap <= kBoundaryTolerance) {
+        fail(cushion(k), cushion(k) + " (" + format_point(t.cushions[k].start) + " -> " +
+                             format_point(t.cushions[k].end) + ") " + (gap == 0.0 ? "crosses " : "touches ") +
+                             cushion(i) + ": the boundary must not intersect itself");
+      }
+    }
+  }
+  // 5. Every pocket reachable.
+  for (std::size_t k = 0; k < t.pockets.size(); ++k) {
+    bool joins_facings = false;
+    for (const Join& j : joins) joins_facings = joins_facings || (j.kind == JoinKind::pocket && j.index == k);
+    if (joins_facings || inside_polygon(t, t.pockets[k].centre)) continue;
+    const std::string base = join(prefix, indexed("pockets", k));
+    fail(base, base + " ('" + t.pockets[k].name + "', centre " + format_point(t.pockets[k].centre) +
+                   ") cannot be reached: no two consecutive cushions end within its circle (the facings of a "
+                   "pocket end there) and its centre is outside the playing area");
+  }
+}
+
 void validate_table(const Table& t, const std::string& prefix) {
-  if (table_plainly_valid(t)) return;
+  if (!table_plainly_valid(t)) validate_fields(t, prefix);
+  validate_boundary(t, prefix);
+}
+
+void validate_fields(const Table& t, const std::string& prefix) {
   if (t.name.empty()) fail(join(prefix, "name"), join(prefix, "name") + " must not be empty");
   validate_size(t.length, t.width, prefix);
   validate_ball(t.ball, prefix);
@@ -265,6 +460,18 @@ void validate_pocket_spec(const PocketSpec& p, double beta, double cushion_heigh
                               format_number(j.capture_radius) + " m, outside (0, " + format_number(kMaxRoundRadius) +
                               "] m (the facings close before the shelf)");
   }
+  // The facings end at the depth of the capture circle's centre, where they
+  // are capture_radius (1 + lateral_rate) from the axis: they must not have
+  // met (or crossed) before, i.e. each closes the throat by less than 45 deg.
+  if (!(1.0 + j.lateral_rate > 1e-9)) {  // (not at exactly 45 deg either, whatever the rounding)
+    const double parallel = 90.0 + beta * 180.0 / std::numbers::pi;  // cut angle of parallel facings
+    fail(base + ".cut_angle_deg",
+         base + ".cut_angle_deg = " + format_number(p.cut_angle_deg) +
+             " deg closes the throat before the capture circle's centre (the facings meet " +
+             format_number(0.5 * p.mouth / -j.lateral_rate) + " m behind the mouth, the centre is " +
+             format_number(j.capture_depth) + " m); allowed < " + format_number(parallel + 45.0) +
+             " deg for this pocket (facings parallel at " + format_number(parallel) + " deg)");
+  }
   const double d = cushion_contact_distance(cushion_height, ball_radius);
   // A ball on the pocket's axis must pass between the facings down to the
   // shelf, and between the jaw arcs.
@@ -343,9 +550,27 @@ double distance_to_segment(const CushionSegment& s, Vec2 p) {
 
 bool ball_on_table(const Table& table, Vec2 p) { return ball_on_table(table, p, table.ball.radius); }
 
+bool inside_playing_area(const Table& table, Vec2 p, double margin) {
+  if (inside_polygon(table, p)) return true;  // the common case first
+  for (const Pocket& pocket : table.pockets) {
+    const Vec2 d = p - pocket.centre;
+    const double reach = pocket.radius + margin;
+    if (dot(d, d) <= reach * reach) return true;
+  }
+  if (!(margin > 0.0)) return false;
+  const std::size_t n = table.cushions.size();
+  for (std::size_t i = 0; i < n; ++i) {
+    const CushionSegment& s = table.cushions[i];
+    if (distance_to_segment(s, p) <= margin) return true;
+    if (distance_to_segment(CushionSegment{s.end, table.cushions[(i + 1) % n].start, 0.0}, p) <= margin) return true;
+  }
+  return false;
+}
+
 bool ball_on_table(const Table& table, Vec2 p, double radius) {
   if (!is_finite(p)) return false;
   if (p.x < 0.0 || p.x > table.length || p.y < 0.0 || p.y > table.width) return false;
+  if (!inside_playing_area(table, p)) return false;
   for (const CushionSegment& s : table.cushions) {
     if (distance_to_segment(s, p) < cushion_contact_distance(s.contact_height, radius) - kPlacementTolerance) {
       return false;

@@ -267,22 +267,72 @@ TEST(Rack, BadOptionsAndTablesAreRejected) {
   EXPECT_EQ(field({0.01, 0}), "gap_sigma");
   EXPECT_EQ(field({std::numeric_limits<double>::quiet_NaN(), 0}), "gap_sigma");
   EXPECT_EQ(field({kMaxGapSigma, 0}), "accepted");
-  // A table too short for the triangle.
+  // A table too short for the triangle: see RackTooBigForTheTableNamesTheRack.
   TableSpec s = carom_table_10ft_spec();
   s.length = 0.4;
   s.width = 0.2;
-  const Table small = build_table(s);
-  try {
-    rack_eight_ball(small, {});
-    FAIL() << "expected InvalidArgument";
-  } catch (const InvalidArgument& e) {
-    EXPECT_EQ(e.field(), "table");
-    EXPECT_NE(std::string(e.what()).find("does not fit"), std::string::npos) << e.what();
-  }
+  EXPECT_THROW(rack_eight_ball(build_table(s), {}), InvalidArgument);
   // An invalid table is rejected before racking.
   Table broken = t;
   broken.ball.radius = -1.0;
   EXPECT_THROW(rack_snooker(broken, {}), InvalidArgument);
+}
+
+std::string rack_error(RackFn rack, const Table& t, std::string* field = nullptr) {
+  try {
+    rack(t, {});
+  } catch (const InvalidArgument& e) {
+    if (field != nullptr) *field = e.field();
+    return e.what();
+  }
+  if (field != nullptr) *field = "accepted";
+  return {};
+}
+
+bool has(const std::string& s, const std::string& part) { return s.find(part) != std::string::npos; }
+
+TEST(Rack, RackTooBigForTheTableNamesTheRack) {
+  // Too short and narrow: the field is the rack, the message says which ball,
+  // where, the range its centre must be in and the size the rack needs.
+  TableSpec s = carom_table_10ft_spec();
+  s.length = 0.4;
+  s.width = 0.2;
+  const Table small = build_table(s);
+  std::string field;
+  const std::string m = rack_error(&rack_eight_ball, small, &field);
+  EXPECT_EQ(field, "rack");
+  EXPECT_TRUE(has(m, "rack: the eight_ball rack does not fit on table 'carom 10 ft (UMB)' (length 0.4 m, width 0.2 m)")) << m;
+  EXPECT_TRUE(has(m, "every centre must lie in [")) << m;
+  EXPECT_TRUE(has(m, "needs length >= ")) << m;
+  // The size it asks for is enough (on a carom table: nothing but the rails
+  // in the way), and a little less is not.
+  const auto needed = [](const std::string& msg, const std::string& key) {
+    const std::size_t at = msg.find(key);
+    EXPECT_NE(at, std::string::npos) << msg;
+    return std::stod(msg.substr(at + key.size()));
+  };
+  for (RackFn rack : {&rack_eight_ball, &rack_nine_ball}) {
+    const std::string msg = rack_error(rack, small);
+    TableSpec fits = s;
+    fits.length = needed(msg, "needs length >= ") * (1 + 1e-9);
+    fits.width = needed(msg, "and width >= ") * (1 + 1e-9);
+    EXPECT_EQ(rack_error(rack, build_table(fits), &field), "") << msg;
+    EXPECT_EQ(field, "accepted");
+    TableSpec narrow = fits;
+    narrow.width *= 0.99;
+    EXPECT_EQ((rack_error(rack, build_table(narrow), &field), field), "rack");
+    TableSpec short_table = fits;
+    short_table.length *= 0.99;
+    EXPECT_EQ((rack_error(rack, build_table(short_table), &field), field), "rack");
+  }
+  // Snooker on a pool-sized table: the reds reach past the black spot, and
+  // the overlapping pair is named with their distance.
+  TableSpec cramped = snooker_table_12ft_spec();
+  cramped.length = 1.2;
+  cramped.width = 1.0;
+  const std::string overlap = rack_error(&rack_snooker, build_table(cramped), &field);
+  EXPECT_EQ(field, "rack") << overlap;
+  EXPECT_TRUE(has(overlap, "rack: the snooker rack does not fit")) << overlap;
 }
 
 }  // namespace

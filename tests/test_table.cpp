@@ -459,6 +459,23 @@ TEST(TableLayout, TooNarrowMouthIsRejected) {
   EXPECT_EQ(catch_invalid([&] { validate(s); }).field, "side_pockets.mouth");
 }
 
+TEST(TableLayout, FacingsThatCloseBeforeTheHoleAreRejected) {
+  // A side pocket's facings turned in by 45 deg or more meet (or cross)
+  // before the capture circle's centre: the geometry would be open or
+  // self-crossing, so the spec is rejected by the field that does it.
+  TableSpec s = pool_table_9ft_spec();
+  s.side_pockets.cut_angle_deg = 160.0;
+  Caught c = catch_invalid([&] { build_table(s); });
+  EXPECT_EQ(c.field, "side_pockets.cut_angle_deg") << c.message;
+  EXPECT_TRUE(contains(c.message, "allowed < 135 deg")) << c.message;
+  s.side_pockets.cut_angle_deg = 135.0;
+  EXPECT_EQ(catch_invalid([&] { build_table(s); }).field, "side_pockets.cut_angle_deg");
+  s.side_pockets.cut_angle_deg = 134.0;
+  EXPECT_EQ(catch_invalid([&] { build_table(s); }).field, "accepted");
+  s.corner_pockets.cut_angle_deg = 150.0;  // corners: parallel at 135, so allowed up to 180 (the range stops at 170)
+  EXPECT_EQ(catch_invalid([&] { build_table(s); }).field, "accepted");
+}
+
 TEST(TableSpecs, ResizedTableKeepsItsPocketsAtTheCornersAndSides) {
   TableSpec s = pool_table_9ft_spec();
   s.length = 92 * kIn;  // WPA 8-ft: 92 x 46 in
@@ -576,6 +593,255 @@ TEST(TableValidate, EachBadFieldIsNamed) {
   EXPECT_TRUE(contains(c.message, "pockets[2].radius = -1 is outside (0, 0.2] m")) << c.message;
 }
 
+// ------------------------------------------------------------------ closed boundary
+
+// Parametric tables across the spec ranges (whatever validate(TableSpec) accepts).
+std::vector<Table> parametric_tables() {
+  std::vector<Table> out;
+  for (TableSpec base : {pool_table_9ft_spec(), snooker_table_12ft_spec()}) {
+    for (double mouth_scale : {0.9, 1.0, 1.3}) {
+      for (double cut : {95.0, 135.0, 160.0}) {
+        for (double jaw : {0.001, 0.02}) {
+          for (double shelf : {0.0, 0.03}) {
+            TableSpec s = base;
+            s.length *= 0.8;
+            s.width *= 0.8;
+            s.corner_pockets = {base.corner_pockets.mouth * mouth_scale, std::max(cut, 135.0), jaw, shelf};
+            s.side_pockets = {base.side_pockets.mouth * mouth_scale, cut, jaw, shelf};
+            try {
+              validate(s);
+            } catch (const InvalidArgument&) {
+              continue;  // outside the spec's ranges: not a table
+            }
+            out.push_back(build_table(s));
+          }
+        }
+      }
+    }
+  }
+  return out;
+}
+
+Table reversed(Table t) {
+  std::reverse(t.cushions.begin(), t.cushions.end());
+  for (CushionSegment& c : t.cushions) std::swap(c.start, c.end);
+  return t;
+}
+
+Caught invalid_table(const Table& t) {
+  return catch_invalid([&] { validate(t); });
+}
+
+TEST(TableBoundary, PresetsAndParametricTablesAreClosed) {
+  for (const Table& t : all_presets()) EXPECT_EQ(invalid_table(t).field, "accepted") << invalid_table(t).message;
+  const std::vector<Table> tables = parametric_tables();
+  EXPECT_GT(tables.size(), 20u);
+  for (const Table& t : tables) {
+    const Caught c = invalid_table(t);
+    EXPECT_EQ(c.field, "accepted") << c.message;
+  }
+  // Resized presets too (8-ft and 7-ft pool, a half-size snooker table).
+  for (auto [spec, scale] : {std::pair{pool_table_9ft_spec(), 92.0 / 100.0}, std::pair{pool_table_9ft_spec(), 0.78},
+                             std::pair{snooker_table_12ft_spec(), 0.5}, std::pair{carom_table_10ft_spec(), 0.7}}) {
+    spec.length *= scale;
+    spec.width *= scale;
+    EXPECT_NO_THROW(build_table(spec)) << spec.name << " x " << scale;
+  }
+}
+
+TEST(TableBoundary, ClockwiseTablesAreRejected) {
+  for (const Table& t : all_presets()) {
+    const Caught c = invalid_table(reversed(t));
+    EXPECT_EQ(c.field, "cushions") << t.name << ": " << c.message;
+    EXPECT_TRUE(contains(c.message, "clockwise")) << c.message;
+    EXPECT_TRUE(contains(c.message, "allowed > 0")) << c.message;
+  }
+}
+
+TEST(TableBoundary, OpenTablesNameTheSegmentAfterWhichTheGapIs) {
+  Table pool = pool_table_9ft();
+  pool.cushions.erase(pool.cushions.begin() + 2);  // the bottom nose between the first two pockets
+  Caught c = invalid_table(pool);
+  EXPECT_EQ(c.field, "cushions[1].end") << c.message;
+  EXPECT_TRUE(contains(c.message, "cushions[1].end = (")) << c.message;
+  EXPECT_TRUE(contains(c.message, "the boundary is open")) << c.message;
+  Table carom = carom_table_10ft();
+  carom.cushions.erase(carom.cushions.begin() + 1);
+  EXPECT_EQ(invalid_table(carom).field, "cushions[0].end");
+  // A segment given end to start is named as such.
+  carom = carom_table_10ft();
+  std::swap(carom.cushions[2].start, carom.cushions[2].end);
+  c = invalid_table(carom);
+  EXPECT_EQ(c.field, "cushions[2]") << c.message;
+  EXPECT_TRUE(contains(c.message, "end to start")) << c.message;
+  // A nose end moved off its jaw by 1 mm.
+  pool = pool_table_9ft();
+  pool.cushions[2].end.x -= 1e-3;
+  c = invalid_table(pool);
+  EXPECT_EQ(c.field, "cushions[2].end") << c.message;
+  EXPECT_TRUE(contains(c.message, "the nearest jaw, jaws[2]")) << c.message;
+  // Within the tolerance it is still closed.
+  pool = pool_table_9ft();
+  pool.cushions[2].end.x -= 0.5 * kBoundaryTolerance;
+  EXPECT_EQ(invalid_table(pool).field, "accepted");
+}
+
+TEST(TableBoundary, TheReproducerOfAnOpenTableIsRejectedByJsonPath) {
+  // shared/repro/open_table_internal_error.json: the pool table's facings
+  // and jaws without the nose segments between the pockets.
+  Table facings_only = pool_table_9ft();
+  std::vector<CushionSegment> kept;
+  for (std::size_t i = 0; i < facings_only.cushions.size(); ++i)
+    if (i % 3 != 2) kept.push_back(facings_only.cushions[i]);
+  facings_only.cushions = kept;
+  const std::string text = table_to_json(facings_only);
+  const Caught c = catch_invalid([&] { table_from_json(text); });
+  EXPECT_EQ(c.field, "table.cushions[1].end") << c.message;
+  EXPECT_TRUE(contains(c.message, "table.cushions[1].end = (")) << c.message;
+  EXPECT_EQ(catch_invalid([&] { table_from_json(text, "scenario.table"); }).field, "scenario.table.cushions[1].end");
+}
+
+TEST(TableBoundary, SelfIntersectingTableIsRejected) {
+  // A pentagram: every corner turns left, the area is positive, but the
+  // segments cross.
+  Table t = carom_table_10ft();
+  t.length = 2.0;
+  t.width = 1.0;
+  t.diamonds.clear();
+  t.cushions.clear();
+  std::vector<Vec2> star;
+  for (int k = 0; k < 5; ++k) {
+    const double a = std::numbers::pi / 2 + k * 4.0 * std::numbers::pi / 5.0;
+    star.push_back({1.0 + 0.45 * std::cos(a), 0.5 + 0.45 * std::sin(a)});
+  }
+  for (std::size_t k = 0; k < 5; ++k) t.cushions.push_back({star[k], star[(k + 1) % 5], 0.037});
+  const Caught c = invalid_table(t);
+  EXPECT_EQ(c.field, "cushions[2]") << c.message;
+  EXPECT_TRUE(contains(c.message, "crosses cushions[0]")) << c.message;
+}
+
+TEST(TableBoundary, ConvexCornerNeedsAJaw) {
+  // An L-shaped table: the inner corner at (1, 0.5) juts into the playing area.
+  Table t = carom_table_10ft();
+  t.length = 2.0;
+  t.width = 1.0;
+  t.diamonds.clear();
+  const std::vector<Vec2> v{{0, 0}, {2, 0}, {2, 0.5}, {1, 0.5}, {1, 1}, {0, 1}};
+  t.cushions.clear();
+  for (std::size_t k = 0; k < v.size(); ++k) t.cushions.push_back({v[k], v[(k + 1) % v.size()], 0.037});
+  EXPECT_EQ(invalid_table(t).field, "cushions[3].start") << invalid_table(t).message;
+  // A triangle is fine (all corners turn left).
+  t.cushions = {{{0, 0}, {2, 0}, 0.037}, {{2, 0}, {1, 1}, 0.037}, {{1, 1}, {0, 0}, 0.037}};
+  EXPECT_EQ(invalid_table(t).field, "accepted") << invalid_table(t).message;
+}
+
+TEST(TableBoundary, AJawOnThePlayingSideIsNamed) {
+  // jaws[0] joins the last nose (left rail) to the first facing. Mirrored
+  // across the chord between them it still passes through both ends but
+  // bulges into the playing area instead of rounding the lip.
+  Table t = pool_table_9ft();
+  const Vec2 p = t.cushions.back().end, q = t.cushions[0].start;
+  const Vec2 u = (q - p) / norm(q - p);
+  const Vec2 c = t.jaws[0].centre - p;
+  t.jaws[0].centre = p + 2.0 * dot(c, u) * u - c;
+  ASSERT_NEAR(norm(t.jaws[0].centre - p), t.jaws[0].radius, 1e-12);
+  ASSERT_NEAR(norm(t.jaws[0].centre - q), t.jaws[0].radius, 1e-12);
+  const Caught caught = invalid_table(t);
+  EXPECT_EQ(caught.field, "jaws[0]") << caught.message;
+  EXPECT_TRUE(contains(caught.message, "not tangent")) << caught.message;
+}
+
+TEST(TableBoundary, EveryPocketMustBeReachable) {
+  Table t = carom_table_10ft();
+  t.pockets.push_back({"inside", {1.0, 0.7}, 0.05});  // a hole in the bed: reachable
+  EXPECT_EQ(invalid_table(t).field, "accepted");
+  t.pockets.push_back({"outside", {-0.3, 0.7}, 0.05});
+  const Caught c = invalid_table(t);
+  EXPECT_EQ(c.field, "pockets[1]") << c.message;
+  EXPECT_TRUE(contains(c.message, "cannot be reached")) << c.message;
+}
+
+// ------------------------------------------------------------------ inside_playing_area
+
+// The placement rule written out here, without inside_playing_area: on the
+// rectangle, clear of every segment and jaw, not over a hole.
+bool fits_by_clearance(const Table& t, Vec2 p) {
+  if (p.x < 0 || p.x > t.length || p.y < 0 || p.y > t.width) return false;
+  for (const Pocket& pocket : t.pockets)
+    if (norm(p - pocket.centre) <= pocket.radius) return false;
+  return clearance(t, p) >= 0.0;
+}
+
+TEST(InsidePlayingArea, EveryPlaceablePositionIsInside) {
+  std::vector<Table> tables = all_presets();
+  const std::vector<Table> more = parametric_tables();
+  tables.insert(tables.end(), more.begin(), more.begin() + 4);
+  for (const Table& t : tables) {
+    std::size_t placeable = 0;
+    for (double x = 0.0; x <= t.length; x += 0.005) {
+      for (double y = 0.0; y <= t.width; y += 0.005) {
+        if (!fits_by_clearance(t, {x, y})) continue;
+        ++placeable;
+        ASSERT_TRUE(inside_playing_area(t, {x, y})) << t.name << " (" << x << ", " << y << ")";
+        ASSERT_TRUE(ball_on_table(t, {x, y})) << t.name << " (" << x << ", " << y << ")";
+      }
+    }
+    EXPECT_GT(placeable, 50000u) << t.name;
+  }
+}
+
+TEST(InsidePlayingArea, PositionsBeyondTheCushionsAreOutside) {
+  for (const Table& t : all_presets()) {
+    for (Vec2 p : {Vec2{t.length / 4, -1e-3}, Vec2{t.length / 4, t.width + 1e-3}, Vec2{-1e-3, t.width / 2},
+                   Vec2{t.length + 0.01, 0.3 * t.width}, Vec2{t.length / 3, -0.2}, Vec2{-0.5, -0.5}}) {
+      EXPECT_FALSE(inside_playing_area(t, p)) << t.name << " (" << p.x << ", " << p.y << ")";
+      EXPECT_FALSE(ball_on_table(t, p)) << t.name;
+    }
+    // The margin widens the area by that much.
+    EXPECT_TRUE(inside_playing_area(t, {t.length / 4, -1e-3}, 2e-3)) << t.name;
+    EXPECT_FALSE(inside_playing_area(t, {t.length / 4, -1e-3}, 0.5e-3)) << t.name;
+  }
+  // Behind the lips: the jaws' centres are in the cushion.
+  for (const Table& t : pocketed_presets()) {
+    for (const JawArc& j : t.jaws) EXPECT_FALSE(inside_playing_area(t, j.centre)) << t.name;
+  }
+  // A triangular table inside its rectangle: the rectangle's corner beyond
+  // the hypotenuse, far from every segment, is outside and not placeable.
+  Table tri = carom_table_10ft();
+  tri.length = 2.0;
+  tri.width = 1.0;
+  tri.diamonds.clear();
+  tri.cushions = {{{0, 0}, {2, 0}, 0.037}, {{2, 0}, {1, 1}, 0.037}, {{1, 1}, {0, 0}, 0.037}};
+  ASSERT_NO_THROW(validate(tri));
+  EXPECT_FALSE(inside_playing_area(tri, {0.1, 0.9}));
+  EXPECT_FALSE(ball_on_table(tri, {0.1, 0.9}));
+  EXPECT_TRUE(inside_playing_area(tri, {1.0, 0.5}));
+  EXPECT_TRUE(ball_on_table(tri, {1.0, 0.5}));
+}
+
+TEST(InsidePlayingArea, PocketThroatsAreInside) {
+  for (const Table& t : pocketed_presets()) {
+    for (const Pocket& p : t.pockets) {
+      // From the pocket's site (the corner, or the rail's midpoint) down the
+      // axis to the capture circle's centre: between the facings all along.
+      // (Starting 0.1 m in front of it, on the playing surface.)
+      const Vec2 site = pocket_site(t, p);
+      const Vec2 start = site - 0.1 * (p.centre - site) / norm(p.centre - site);
+      std::size_t outside_circle = 0;
+      for (int i = 0; i <= 200; ++i) {
+        const Vec2 q = start + (i / 200.0) * (p.centre - start);
+        EXPECT_TRUE(inside_playing_area(t, q)) << t.name << " " << p.name << " (" << q.x << ", " << q.y << ")";
+        outside_circle += !in_pocket(p, q);
+      }
+      EXPECT_GT(outside_circle, 60u) << t.name << " " << p.name << ": the throat, not only the circle, is tested";
+      // Beside the axis, half-way to a facing, at the depth of the site.
+      const Vec2 axis = (p.centre - site) / norm(p.centre - site);
+      const Vec2 q = site + 0.5 * p.radius * perp(axis) + 0.2 * norm(p.centre - site) * axis;
+      EXPECT_TRUE(inside_playing_area(t, q)) << t.name << " " << p.name;
+    }
+  }
+}
+
 // ------------------------------------------------------------------ JSON
 
 TEST(TableJson, RoundTripIsExact) {
@@ -588,6 +854,7 @@ TEST(TableJson, RoundTripIsExact) {
   // Awkward numbers survive too.
   Table t = carom_table_10ft();
   t.cushions[0].start.x = 0.1 + 0.2;  // 0.30000000000000004
+  t.cushions[3].end.x = 0.1 + 0.2;    // the corner moves with it: still a closed boundary
   t.ball.mass = 1.0 / 3.0;
   EXPECT_EQ(table_from_json(table_to_json(t)), t);
 }

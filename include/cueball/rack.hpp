@@ -72,6 +72,14 @@ SnookerSpots snooker_spots(const Table& table);
 /// without touching it" (WPBSA Rules, section 2), m.
 inline constexpr double kPinkApexGap = 1e-3;
 
+/// Every rack function validates the table and the options first
+/// (InvalidArgument naming the table's field or "gap_sigma"), then checks that
+/// every ball can be placed (ball_on_table()) and no two overlap; otherwise it
+/// throws InvalidArgument with field "rack" (the scenario's "rack" object)
+/// whose message names the ball, gives its position and the range its centre
+/// must lie in, and the length and width a rectangular table needs for this
+/// rack (or, for two overlapping balls, their distance and the 2R needed).
+
 /// 10 balls: cue (id 0) on the long string one ball diameter behind the head
 /// string; 1-9 in a diamond (rows 1-2-3-2-1) pointing at the head, the 1 on
 /// the foot spot, the 9 in the centre (WPA Rules of 9-Ball, "Racking").

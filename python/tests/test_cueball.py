@@ -514,8 +514,8 @@ class SimulateTest(unittest.TestCase):
 
 
 class BatchTest(unittest.TestCase):
-    KEYS = ["shots", "simulated", "miscues", "failures", "seconds", "shots_per_second", "events_per_shot",
-            "pocketed_probability", "balls"]
+    KEYS = ["shots", "simulated", "miscues", "failures", "speed_reflected", "elevation_reflected", "seconds",
+            "shots_per_second", "events_per_shot", "pocketed_probability", "balls"]
 
     @staticmethod
     def without_timing(result):
@@ -552,6 +552,35 @@ class BatchTest(unittest.TestCase):
         with self.assertRaises(cueball.InvalidArgument) as caught:
             cueball.simulate_batch({"rack": {"type": "nine_ball"}})
         self.assertEqual(caught.exception.field, "cue")
+        with self.assertRaises(cueball.InvalidArgument) as caught:
+            cueball.simulate_batch(shots=10**10)  # beyond a C int: still the range error
+        self.assertEqual(caught.exception.field, "shots")
+        self.assertIn("[1, 100000000]", str(caught.exception))
+
+    def test_a_workers_error_is_raised_in_the_caller(self):
+        # jaws[0] fits the table's ball but is too high for the parameters' smaller
+        # ball: found only when a shot runs, in a worker thread.
+        table = cueball.simulate(break_with(max_events=1000))["table"]
+        table["jaws"][0]["contact_height"] = 0.056
+        scenario = break_with(table=table, parameters={"radius": 0.0275}, noise={"speed": 0.1})
+        with self.assertRaises(cueball.InvalidArgument) as single:
+            cueball.simulate(scenario)
+        for threads in (1, 2, 4):
+            with self.assertRaises(cueball.InvalidArgument) as caught:
+                cueball.simulate_batch(scenario, shots=200, threads=threads)
+            self.assertEqual(caught.exception.field, single.exception.field, threads)
+            self.assertEqual(str(caught.exception), str(single.exception), threads)
+
+    def test_noisy_strikes_are_reflected_into_their_limits(self):
+        at_the_cap = break_with(cue={"ball": 0, "target": 1, "speed": 12.0}, noise={"speed": 0.3, "elevation_deg": 1})
+        r = cueball.simulate_batch(at_the_cap, shots=64, threads=2, seed=4)
+        self.assertEqual(r["miscues"], 0)
+        self.assertEqual(r["simulated"] + r["failures"], 64)
+        self.assertTrue(16 < r["speed_reflected"] < 48, r["speed_reflected"])
+        self.assertTrue(16 < r["elevation_reflected"] < 48, r["elevation_reflected"])
+        beyond = cueball.simulate_batch(break_with(noise={"height": 0.5}), shots=64, seed=4)
+        self.assertGreater(beyond["miscues"], 5)
+        self.assertEqual(beyond["speed_reflected"], 0)
 
     def test_python_threads_run_concurrently(self):
         # simulate() and simulate_batch() release the GIL: the same work from four Python

@@ -55,11 +55,17 @@ bool entering_now(const GapKinematics& k, double closing_gap = 0.0) {
   return (k.g <= closing_gap && closing(k)) || pressed(k);
 }
 
+// A closing speed at which no graze can be shallower than kGrazeDepth
+// (|g1|^2 / 2 g2 with any g2 below ~1e4 m/s^2), so that the normal
+// acceleration need not be formed, m/s.
+constexpr double kSurelyClosing = 1e-4;
+
 // The earliest t in [0, horizon] at which the contact is entered: now, or a
 // root of the contact function f (ascending coefficients) at which it is
-// closing. `at(t)` gives the gap kinematics at time t.
-template <std::size_t N, typename At>
-std::optional<double> earliest_entering_root(const std::array<double, N>& c, double horizon, At at,
+// closing. `at(t)` gives the gap kinematics at time t, `slope(t)` its
+// normal speed alone (cheaper: at a root the gap is the contact distance).
+template <std::size_t N, typename At, typename Slope>
+std::optional<double> earliest_entering_root(const std::array<double, N>& c, double horizon, At at, Slope slope,
                                              bool may_touch_now) {
   if (may_touch_now && entering_now(at(0.0))) return 0.0;
   RealRoots<N - 1> roots;
@@ -71,7 +77,9 @@ std::optional<double> earliest_entering_root(const std::array<double, N>& c, dou
   for (double t : roots) {
     if (t < 0.0) continue;
     if (t > horizon) break;
-    if (closing(at(t))) return t;
+    const double g1 = slope(t);
+    if (!(g1 < -kMinApproachSpeed)) continue;
+    if (g1 < -kSurelyClosing || closing(at(t))) return t;
   }
   return std::nullopt;
 }
@@ -155,6 +163,10 @@ std::optional<double> predict_contact(const QuadraticPath& a, const QuadraticPat
   // c[0] ~ 2 contact gap: only a pair within the tolerance can touch now.
   return earliest_entering_root(
       c, horizon, [&](double t) { return pair_kinematics(dr, dv, da, contact, t); },
+      [&](double t) {
+        const Vec2 d = dr + t * dv + (0.5 * t * t) * da;
+        return dot(d, dv + t * da) / contact;  // normal relative velocity at contact, m/s
+      },
       c[0] <= 3.0 * contact * kContactTolerance);
 }
 
@@ -183,7 +195,8 @@ std::optional<double> predict_line_contact(const QuadraticPath& s, const Contact
     if (dot(n, h.p0) > d && dot(n, h.p1) > d && dot(n, h.p2) > d) return std::nullopt;
   }
   const auto t = earliest_entering_root(
-      c, horizon, [&](double tt) { return line_kinematics(s, line, tt); }, c[0] <= kContactTolerance);
+      c, horizon, [&](double tt) { return line_kinematics(s, line, tt); },
+      [&](double tt) { return dot(line.normal, s.velocity + tt * s.acceleration); }, c[0] <= kContactTolerance);
   if (!t || !within_segment(s, line, *t)) return std::nullopt;
   return t;
 }

@@ -88,6 +88,53 @@ bool boxes_within(const Box& a, const Box& b, double gap) {
 // reject a contact the polynomial would find (a contact is found to ~1e-15 m).
 constexpr double kBoxSlack = 1e-9;
 
+// Whether the segment from a to b meets the closed box (Liang-Barsky clipping).
+bool segment_meets_box(Vec2 a, Vec2 b, const Box& box) {
+  double t0 = 0.0, t1 = 1.0;
+  const Vec2 d = b - a;
+  const double p[4] = {-d.x, d.x, -d.y, d.y};
+  const double q[4] = {a.x - box.lo.x, box.hi.x - a.x, a.y - box.lo.y, box.hi.y - a.y};
+  for (int k = 0; k < 4; ++k) {
+    if (p[k] == 0.0) {
+      if (q[k] < 0.0) return false;
+    } else {
+      const double t = q[k] / p[k];
+      if (p[k] < 0.0) t0 = std::max(t0, t);
+      else t1 = std::min(t1, t);
+    }
+  }
+  return t0 <= t1;
+}
+
+// A box wholly inside the playing area (inside_playing_area, table.hpp),
+// so that most positions are checked with four comparisons: the table's
+// extent less 0.1 m on each side (clear of the pockets), kept only when
+// its corners are inside and no edge of the boundary polygon (noses and the
+// chords between them) meets it. Empty when that fails (an odd custom table).
+Box box_inside_playing_area(const Table& table) {
+  constexpr double kInf = std::numeric_limits<double>::infinity();
+  const Box empty{{kInf, kInf}, {-kInf, -kInf}};
+  if (table.cushions.empty()) return empty;
+  Box box{{kInf, kInf}, {-kInf, -kInf}};
+  for (const CushionSegment& c : table.cushions)
+    for (Vec2 q : {c.start, c.end}) {
+      box.lo = {std::min(box.lo.x, q.x), std::min(box.lo.y, q.y)};
+      box.hi = {std::max(box.hi.x, q.x), std::max(box.hi.y, q.y)};
+    }
+  box.lo = box.lo + Vec2{0.1, 0.1};
+  box.hi = box.hi - Vec2{0.1, 0.1};
+  if (!(box.lo.x < box.hi.x && box.lo.y < box.hi.y)) return empty;
+  for (Vec2 corner : {box.lo, box.hi, Vec2{box.lo.x, box.hi.y}, Vec2{box.hi.x, box.lo.y}})
+    if (!inside_playing_area(table, corner)) return empty;
+  const std::size_t n = table.cushions.size();
+  for (std::size_t i = 0; i < n; ++i) {
+    const CushionSegment& c = table.cushions[i];
+    if (segment_meets_box(c.start, c.end, box) || segment_meets_box(c.end, table.cushions[(i + 1) % n].start, box))
+      return empty;
+  }
+  return box;
+}
+
 class Simulation {
  public:
   Simulation(const Table& table, const std::vector<SimulationBall>& balls, const SimulationSettings& settings)
@@ -106,6 +153,7 @@ class Simulation {
       jaw_distance_.push_back(j.radius + cushion_contact_distance(j.contact_height, p_.ball.radius));
     }
     group_pockets_and_jaws();
+    inner_box_ = box_inside_playing_area(table);
     result_.balls.resize(balls.size());
     const auto n = balls.size();
     state_.resize(n);
@@ -536,10 +584,13 @@ class Simulation {
     return out;
   }
 
+  // Every ball not pocketed is inside the closed playing area (pocket
+  // throats included) at every event; the contact rules make this
+  // unreachable, and the stress tool checks it (stress/).
   void check_on_table(int i) const {
     const Vec2 r = state_[idx(i)].position;
-    const double margin = 0.25;
-    if (!(r.x > -margin && r.x < table_.length + margin && r.y > -margin && r.y < table_.width + margin)) {
+    const bool in_box = r.x >= inner_box_.lo.x && r.x <= inner_box_.hi.x && r.y >= inner_box_.lo.y && r.y <= inner_box_.hi.y;
+    if (!in_box && !inside_playing_area(table_, r, kContactTolerance)) {
       throw SimulationError("ball " + std::to_string(result_.balls[idx(i)].id) + " left the table at t = " + num(now_) +
                             " s, position (" + num(r.x) + ", " + num(r.y) + ") m: please report this shot");
     }
@@ -563,6 +614,7 @@ class Simulation {
   std::vector<double> path_end_;            // absolute time the path changes (sliding or rolling ends)
   std::vector<Box> path_box_;               // bounds path_ from time_ to path_end_
   std::vector<Box> cushion_boxes_;          // where a ball centre can touch each cushion
+  Box inner_box_;                           // wholly inside the playing area (check_on_table's fast path)
   std::vector<Candidate> transition_next_;
   double contact_ = 0.0;                    // 2R
   std::vector<char> active_;

@@ -569,7 +569,6 @@ bool inside_playing_area(const Table& table, Vec2 p, double margin) {
 
 bool ball_on_table(const Table& table, Vec2 p, double radius) {
   if (!is_finite(p)) return false;
-  if (p.x < 0.0 || p.x > table.length || p.y < 0.0 || p.y > table.width) return false;
   if (!inside_playing_area(table, p)) return false;
   for (const CushionSegment& s : table.cushions) {
     if (distance_to_segment(s, p) < cushion_contact_distance(s.contact_height, radius) - kPlacementTolerance) {

@@ -129,13 +129,15 @@ inline bool in_pocket(const Pocket& pocket, Vec2 p) {
   return dot(d, d) <= pocket.radius * pocket.radius;
 }
 
-/// Slack allowed when a ball is placed touching a cushion or a jaw, m.
-inline constexpr double kPlacementTolerance = 1e-12;
+/// Slack allowed when a ball is placed touching a cushion or a jaw, m: the
+/// simulator's contact tolerance (events.hpp kContactTolerance), so that
+/// wherever a shot leaves a ball at rest, the next shot can start.
+inline constexpr double kPlacementTolerance = 1e-9;
 
 /// True when a ball of radius `radius` can be placed with its centre at p:
-/// the centre is finite, on the playing surface rectangle
-/// [0, length] x [0, width] and inside the closed boundary
-/// (inside_playing_area(table, p)); the ball does not overlap any cushion segment
+/// the centre is finite and inside the closed boundary
+/// (inside_playing_area(table, p): the bed, the pockets' throats included,
+/// where a ball can come to rest hanging in the jaws); the ball does not overlap any cushion segment
 /// (distance to the segment >= contact distance - kPlacementTolerance) or jaw;
 /// and its centre is not over a pocket's hole. Touching is allowed.
 /// Precondition: a validated table, 0 < radius with every contact height in

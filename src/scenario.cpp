@@ -133,15 +133,23 @@ std::vector<SimulationBall> read_rack(const Reader& r, const Table& table) {
   options.seed = static_cast<std::uint64_t>(r.integer("seed", 0, 0, 2147483647, "random seed"));
   const std::string type = r.text("type", "nine_ball");
   std::vector<PlacedBall> placed;
-  if (type == "nine_ball") {
-    placed = rack_nine_ball(table, options);
-  } else if (type == "eight_ball") {
-    placed = rack_eight_ball(table, options);
-  } else if (type == "snooker") {
-    placed = rack_snooker(table, options);
-  } else {
-    throw InvalidArgument(r.field("type"), r.field("type") + " = " + quote_input(type) +
-                                               " is not known; allowed: nine_ball, eight_ball, snooker");
+  try {
+    if (type == "nine_ball") {
+      placed = rack_nine_ball(table, options);
+    } else if (type == "eight_ball") {
+      placed = rack_eight_ball(table, options);
+    } else if (type == "snooker") {
+      placed = rack_snooker(table, options);
+    } else {
+      throw InvalidArgument(r.field("type"), r.field("type") + " = " + quote_input(type) +
+                                                 " is not known; allowed: nine_ball, eight_ball, snooker");
+    }
+  } catch (const InvalidArgument& e) {
+    // The rack's own errors name "rack" (or "rack.gap_sigma"): the JSON path is scenario.rack.
+    if (e.field().rfind("rack", 0) != 0) throw;
+    const std::string what = e.what();
+    const std::string rest = what.rfind(e.field(), 0) == 0 ? what.substr(e.field().size()) : ": " + what;
+    throw InvalidArgument("scenario." + e.field(), "scenario." + e.field() + rest);
   }
   std::vector<SimulationBall> balls;
   for (const PlacedBall& b : placed) balls.push_back({b.id, b.name, {b.position, {}, {}}});
@@ -354,13 +362,10 @@ Scenario scenario_from_json(std::string_view json_text) {
   if (r.has("noise")) s.noise = read_noise(Reader(r.at("noise"), "scenario.noise"), radius);
 
   // Everything that can be checked before running: balls, table, constants,
-  // and the impact model of every cushion and jaw (the simulator builds
-  // them when it starts). Library fields become the JSON paths the user wrote.
+  // and the impact model of every cushion and jaw
+  // (validate_simulation_input). Library fields become the JSON paths the user wrote.
   try {
     validate_simulation_input(s.table, s.balls, s.settings);
-    for (const JawArc& jaw : s.table.jaws)
-      (void)cushion_impact_model(s.settings.parameters,
-                                 {s.settings.cushion_restitution, s.settings.cushion_friction, jaw.contact_height});
   } catch (const InvalidArgument& e) {
     throw relabelled(e, j, origins);
   }

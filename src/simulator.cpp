@@ -660,9 +660,13 @@ void validate_simulation_input(const Table& table, const std::vector<SimulationB
   require_in_range("cushion_friction", settings.cushion_friction, 0.0, 1.0, "Mathavan mu_w");
   if (settings.max_events < 1)
     throw InvalidArgument("max_events", static_cast<double>(settings.max_events), "[1, 2^31)");
+  // The impact model of every cushion and jaw (the simulator builds them when it starts).
   for (const CushionSegment& c : table.cushions)
     (void)cushion_impact_model(settings.parameters,
                                {settings.cushion_restitution, settings.cushion_friction, c.contact_height});
+  for (const JawArc& j : table.jaws)
+    (void)cushion_impact_model(settings.parameters,
+                               {settings.cushion_restitution, settings.cushion_friction, j.contact_height});
   const double radius = settings.parameters.ball.radius;
   for (std::size_t i = 0; i < balls.size(); ++i) {
     try {

@@ -265,6 +265,17 @@ TEST(Simulator, EventLimitStopsWithAClearError) {
   }
 }
 
+// A jaw whose nose is too high for the ball is rejected before the run, as a
+// cushion is (it used to surface mid-shot, from a worker thread in a batch).
+TEST(Simulator, JawTooHighForTheBallIsRejectedUpFront) {
+  Scenario s = default_scenario();
+  ASSERT_FALSE(s.table.jaws.empty());
+  s.table.jaws[3].contact_height = 2.0 * s.settings.parameters.ball.radius;
+  EXPECT_THROW(validate_simulation_input(s.table, s.balls, s.settings), InvalidArgument);
+  s.table.jaws[3].contact_height = 1.28 * s.settings.parameters.ball.radius;
+  EXPECT_NO_THROW(validate_simulation_input(s.table, s.balls, s.settings));
+}
+
 TEST(Simulator, TrajectorySegmentsReproduceTheStatesAtEvents) {
   const Scenario s = default_scenario();
   const SimulationResult r = run_scenario(s);

@@ -574,7 +574,7 @@ class Simulation {
       r = solve_cushion_impact_unchecked(in, model);  // models validated at construction
     } catch (const InfeasibleShot&) {
       // The model has no rebound: the ball wedges between cushion and bed
-      // (normal velocity never reverses). Treated as a plastic contact.
+      // (normal velocity never reverses). A resting contact.
       return rest_on_wall(i, s, n);
     }
     BallState out = s;

@@ -23,15 +23,10 @@
 //                holds its jaws' contact circles), or anywhere outside
 //                [-0.1, L + 0.1] x [-0.1, W + 0.1] (value: distance outside the rectangle, m)
 //   rest_placement  a ball at rest (zero velocity) where ball_on_table() refuses
-//                it: inside a cushion's or jaw's contact distance (by any amount:
-//                ball_on_table allows 1e-12 m), over a pocket's hole but not
+//                it: inside a cushion's or jaw's contact distance (by more than
+//                the 1e-9 m ball_on_table allows), over a pocket's hole but not
 //                pocketed, or off the table; a position the next shot could not
 //                start from (value: its depth, m)
-//   rest_in_mouth  (a note, not a violation: it does not fail the run) a ball
-//                at rest hanging in a pocket's mouth, beyond the nose rectangle
-//                but clear of every cushion, jaw and capture circle. Physically
-//                fine, but ball_on_table() requires the centre inside
-//                [0, L] x [0, W], so the next shot could not start from there.
 //   nan          a non-finite number in an event time or a state
 //   energy       total kinetic energy (translation + rotation, I = 2/5 m R^2)
 //                rising from one checked time to the next by more than
@@ -744,13 +739,11 @@ constexpr std::array<ShotClass, 9> kClasses{{
 
 enum Kind {
   kOverlap, kCushion, kJaw, kOffTable, kRestPlacement, kNan, kEnergy, kEvents, kError, kDeterminism, kCrash,
-  kRestInMouth,  // a note, not a violation (see the header)
   kKinds
 };
 constexpr std::array<const char*, kKinds> kKindNames{"overlap", "cushion", "jaw", "off_table", "rest_placement", "nan",
-                                                     "energy", "events", "error", "determinism", "crash", "rest_in_mouth"};
-constexpr std::array<const char*, kKinds> kKindUnits{"m", "m", "m", "m", "m", "", "J", "events", "", "", "", "m"};
-constexpr bool is_violation(std::size_t k) { return k != kRestInMouth; }
+                                                     "energy", "events", "error", "determinism", "crash"};
+constexpr std::array<const char*, kKinds> kKindUnits{"m", "m", "m", "m", "m", "", "J", "events", "", "", ""};
 
 struct Finding {
   double value = -1.0;  // < 0: not found
@@ -769,7 +762,7 @@ struct Findings {
   }
   bool any() const {  // any violation (notes do not count)
     for (std::size_t k = 0; k < kKinds; ++k)
-      if (is_violation(k) && kind[k].value >= 0.0) return true;
+      if (kind[k].value >= 0.0) return true;
     return false;
   }
 };
@@ -821,10 +814,8 @@ bool in_a_mouth(const Geometry& g, Vec2 p) {
 
 // A ball at rest at p that ball_on_table() refuses: a rest_placement
 // violation (inside a cushion's or jaw's contact distance, over a pocket's
-// hole, or off the table), or, when it only lies beyond the nose rectangle in
-// a pocket's mouth and is clear of everything, a rest_in_mouth note (a ball
-// hanging in the jaws: physically fine, but ball_on_table() wants the centre
-// inside [0, L] x [0, W], so the next shot could not start from there).
+// hole, or off the table). A ball hanging in a pocket's jaws, beyond the nose
+// rectangle, is a valid place to start the next shot from.
 void check_rest(const Geometry& g, int id, Vec2 p, const char* when, Findings& f) {
   const Table& t = g.table;
   double depth = 0.0;
@@ -844,12 +835,11 @@ void check_rest(const Geometry& g, int id, Vec2 p, const char* when, Findings& f
   const double outside = std::max({-p.x, p.x - t.length, -p.y, p.y - t.width, 0.0});
   // ball_on_table() allows kPlacementTolerance at cushions and jaws (not at pockets).
   if (depth <= kPlacementTolerance && what.rfind("over the hole", 0) != 0) depth = 0.0;
-  const Kind kind = depth <= 0.0 && outside > 0.0 && in_a_mouth(g, p) ? kRestInMouth : kRestPlacement;
-  if (kind == kRestInMouth || (depth <= 0.0 && outside > 0.0)) {
+  if (depth <= 0.0 && outside > 0.0 && !in_a_mouth(g, p)) {
     depth = outside;
-    what = kind == kRestInMouth ? "in a pocket's mouth, beyond the nose rectangle" : "off the table";
+    what = "off the table";
   }
-  f.add(kind, depth, [&] {
+  f.add(kRestPlacement, depth, [&] {
     return fmt("ball %d at rest at (%.17g, %.17g) %s: %.3g m, %s", id, p.x, p.y, what.c_str(), depth, when);
   });
 }
@@ -1169,7 +1159,6 @@ void print_kinds(const ClassStats& st, const ShotClass& c) {
   std::printf("    %-15s %7s  %-12s %-20s %s\n", "violation", "shots", "worst", "seed", "where");
   for (std::size_t k = 0; k < kKinds; ++k) {
     const KindStats& ks = st.kinds[k];
-    if (k == kRestInMouth) std::printf("    notes (not violations):\n");
     if (ks.shots == 0) {
       std::printf("    %-15s %7d  -\n", kKindNames[k], 0);
       continue;
@@ -1316,7 +1305,7 @@ int check_scenarios(const Options& o) {
     for (std::size_t k = 0; k < kKinds; ++k) {
       const Finding& f = out.findings.kind[k];
       if (f.value < 0.0) continue;
-      violated = violated || is_violation(k);
+      violated = true;
       const std::string value = kKindUnits[k][0] ? fmt("%.4g %s", f.value, kKindUnits[k]) : std::string("yes");
       std::printf("    %-15s %-12s %s\n", kKindNames[k], value.c_str(), f.detail.substr(0, 400).c_str());
     }
@@ -1373,7 +1362,7 @@ int run_classes(const Options& o) {
       violated = true;
       std::uint64_t first = 0;
       for (std::size_t k = 0; k < kKinds; ++k)
-        if (is_violation(k) && st.kinds[k].shots > 0) {
+        if (st.kinds[k].shots > 0) {
           first = st.kinds[k].worst.front().seed;
           break;
         }

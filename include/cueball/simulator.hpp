@@ -16,11 +16,18 @@
 // the balls' and cushions' indices, so equal input gives bit-identical
 // output. Predictions are cached per ball and per pair and recomputed exactly
 // for the balls whose state an event changed (equipment-and-pitfalls.md,
-// item 7). Touching balls: collisions at the same instant are resolved one
-// pair at a time, in that order, as sequential impulses; a pair that is
-// touching but separating never collides again, and every collision removes
-// energy, so a frozen rack's chain of contacts ends. A run stops with
-// SimulationError after `max_events` events, never hangs.
+// item 7). Touching balls (resting_contact.hpp): a pair touching and closing,
+// or pressed together by its acceleration, is a contact at that instant
+// (events.hpp); contacts closing at 1 cm/s or faster are impacts, resolved
+// one pair at a time in that order (a frozen rack or a Newton's cradle passes
+// its impulse along), slower or pressed ones are resting contacts, resolved
+// by impulses that leave nothing closing or pressing and only remove energy
+// (a slow group of touching balls moves on as one), so no cascade of
+// contacts at one instant goes on. A ball not pocketed stays inside the
+// closed playing area (inside_playing_area, table.hpp) at every event, and
+// no centre gets closer than the contact distance by more than 1e-9 m
+// (stress/ checks both). A run stops with SimulationError after
+// `max_events` events, never hangs.
 #pragma once
 
 #include <stdexcept>

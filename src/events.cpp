@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "cueball/polynomial_roots.hpp"
 
@@ -11,63 +12,75 @@ namespace cueball {
 
 namespace {
 
-// Which contact counts (events.hpp). A contact at one instant is described
-// by its gap g (m, < 0 overlapping), normal speed g1 (m/s, < 0 closing) and
-// normal acceleration g2 (m/s^2, < 0 driving it together).
+constexpr double kInfinity = std::numeric_limits<double>::infinity();
+
+// Which contact counts (events.hpp). The contact function f (ascending
+// coefficients: f = |d|^2 - D^2 for a pair, the gap itself for a line) and,
+// at one instant, the gap g (m, < 0 overlapping) and normal speed g1 (m/s,
+// < 0 closing).
 struct GapKinematics {
-  double g, g1, g2;
+  double g, g1;
 };
 
-// Closing into contact, and not a graze: a pair closing so slowly that its
-// own relative motion (g2 > 0: the curvature of a path past a ball or jaw)
-// turns it back before it is kGrazeDepth deep never really meets (a ball
+// A graze shallower than this is no contact: a pair closing so slowly that
+// its own relative motion turns it back first never really meets (a ball
 // running along a cushion past the point where a jaw is tangent to it closes
 // on the jaw at ~1e-8 m/s, 1e-17 m deep); taking it as a contact would only
 // set two nearly parallel walls against each other at one instant. A thin
-// cut a nanometre deep is still a contact. Approach speeds below
-// kMinApproachSpeed are none.
+// cut a nanometre deep is still a contact.
 constexpr double kGrazeDepth = 1e-12;  // m
 
-bool closing(const GapKinematics& k) {
-  if (!(k.g1 < -kMinApproachSpeed)) return false;
-  return !(k.g2 > 0.0) || k.g - k.g1 * k.g1 / (2.0 * k.g2) < -kGrazeDepth;
-}
-
-// A pair touching (gap within kContactTolerance, overlap by round-off
-// included) that is not closing (g1 >= -1e-12) but whose relative normal
-// acceleration drives it together, parting (if at all) too slowly to get
-// farther than kContactTolerance apart before it turns back: it would enter
-// the contact at once, yet f has a (near) double root at 0 with no
-// decreasing crossing, so the root rule alone cannot see it. Accelerations
-// below kMinPressAcceleration are round-off (|a| ~ 2 m/s^2 carries ~1e-16 of
-// it); sustained over a 1 s slide, 1e-9 m/s^2 moves a ball 5e-10 m.
-constexpr double kMinPressAcceleration = 1e-9;  // m/s^2
-
-bool pressed(const GapKinematics& k) {
-  if (!(k.g <= kContactTolerance && k.g1 >= -kMinApproachSpeed && k.g2 < -kMinPressAcceleration)) return false;
-  const double parting = std::max(k.g1, 0.0);
-  return k.g + parting * parting / (2.0 * -k.g2) <= kContactTolerance;
-}
-
-// A contact now (t = 0): touching or overlapping and closing, or pressed.
-// Closing from a gap of up to `closing_gap` counts.
-bool entering_now(const GapKinematics& k, double closing_gap = 0.0) {
-  return (k.g <= closing_gap && closing(k)) || pressed(k);
-}
-
 // A closing speed at which no graze can be shallower than kGrazeDepth
-// (|g1|^2 / 2 g2 with any g2 below ~1e4 m/s^2), so that the normal
-// acceleration need not be formed, m/s.
+// (|g1|^2 / 2 |g''| with any |g''| below ~1e4 m/s^2): such a contact needs no
+// look ahead, m/s.
 constexpr double kSurelyClosing = 1e-4;
 
-// The earliest t in [0, horizon] at which the contact is entered: now, or a
-// root of the contact function f (ascending coefficients) at which it is
-// closing. `at(t)` gives the gap kinematics at time t, `slope(t)` its
-// normal speed alone (cheaper: at a root the gap is the contact distance).
-template <std::size_t N, typename At, typename Slope>
-std::optional<double> earliest_entering_root(const std::array<double, N>& c, double horizon, At at, Slope slope,
-                                             bool may_touch_now) {
-  if (may_touch_now && entering_now(at(0.0))) return 0.0;
+// Whether f, from time t0, goes below `deep` before it rises above `clear`,
+// within (t0, horizon]: the pair gets into the contact before it gets clear
+// of it. Exact to every order of the motion (f is the whole polynomial): a
+// pair touching with no normal speed may be driven together by its
+// acceleration (a sliding ball curving into a rail), or at third order when
+// that cancels against the curvature of its path, and f then has a (near)
+// multiple root at t0 that is never crossed decreasing.
+template <std::size_t N>
+bool deepens(std::array<double, N> c, double t0, double horizon, double clear, double deep) {
+  const auto roots = [](const std::array<double, N>& q) {
+    if constexpr (N == 3) {
+      return solve_quadratic(q);
+    } else {
+      return solve_quartic(q);
+    }
+  };
+  const double f0 = c[0];
+  double until = horizon;
+  c[0] = f0 - clear;
+  for (double t : roots(c))
+    if (t > t0 && t < until) {
+      until = t;
+      break;
+    }
+  c[0] = f0 - deep;
+  for (double t : roots(c))
+    if (t > t0 && t <= until) return true;
+  return false;
+}
+
+// The earliest t in [0, horizon] at which the contact is entered. Now (t = 0)
+// when the pair touches (within kContactTolerance, overlap by round-off
+// included) and gets into the contact before it gets clear; a pair closing
+// fast only once it touches (gap <= 0), else at its root. Then the earliest
+// root of f at which it is closing, unless it only grazes. `at0` is the
+// gap kinematics at t = 0, `slope(t)` the normal speed at a root, `f_at(g)`
+// the value of f at gap g.
+template <std::size_t N, typename Slope, typename FAt>
+std::optional<double> earliest_entering_root(const std::array<double, N>& c, double horizon, GapKinematics at0,
+                                             Slope slope, FAt f_at) {
+  const double clear = f_at(kContactTolerance);
+  if (at0.g <= kContactTolerance) {
+    if (at0.g1 < -kSurelyClosing ? at0.g <= 0.0
+                                 : deepens(c, 0.0, horizon, clear, f_at(std::min(at0.g, 0.0) - kGrazeDepth)))
+      return 0.0;
+  }
   RealRoots<N - 1> roots;
   if constexpr (N == 3) {
     roots = solve_quadratic(c);
@@ -79,27 +92,32 @@ std::optional<double> earliest_entering_root(const std::array<double, N>& c, dou
     if (t > horizon) break;
     const double g1 = slope(t);
     if (!(g1 < -kMinApproachSpeed)) continue;
-    if (g1 < -kSurelyClosing || closing(at(t))) return t;
+    if (g1 < -kSurelyClosing || deepens(c, t, horizon, clear, f_at(-kGrazeDepth))) return t;
   }
   return std::nullopt;
 }
 
-// Gap kinematics of |d(t)| against the contact distance, d(t) = dr + dv t +
-// da t^2/2 the relative path: the normal acceleration carries the curvature
-// term |w_t|^2 / |d| of the relative velocity w's tangential part.
-GapKinematics pair_kinematics(Vec2 dr, Vec2 dv, Vec2 da, double contact, double t) {
-  const Vec2 d = dr + t * dv + (0.5 * t * t) * da;
-  const Vec2 w = dv + t * da;
-  const double r = norm(d);
-  if (!(r > 0.0)) return {-contact, 0.0, 0.0};
-  const double g1 = dot(d, w) / r;
-  return {r - contact, g1, (dot(w, w) - g1 * g1 + dot(d, da)) / r};
+// Gap and normal speed of a pair at t = 0, d = dr the relative position and
+// dv the relative velocity.
+GapKinematics pair_kinematics(Vec2 dr, Vec2 dv, double contact) {
+  const double r = norm(dr);
+  if (!(r > 0.0)) return {-contact, 0.0};
+  return {r - contact, dot(dr, dv) / r};
 }
 
-GapKinematics line_kinematics(const QuadraticPath& s, const ContactLine& line, double t) {
-  const Vec2 r = s.position - line.start + t * s.velocity + (0.5 * t * t) * s.acceleration;
-  return {dot(line.normal, r) - line.contact_distance, dot(line.normal, s.velocity + t * s.acceleration),
-          dot(line.normal, s.acceleration)};
+// |d|^2 - D^2 at gap g.
+double pair_f_at(double contact, double g) { return g * (2.0 * contact + g); }
+
+// The pair's contact function |dr + dv t + da t^2/2|^2 - D^2, ascending powers.
+std::array<double, 5> pair_function(Vec2 dr, Vec2 dv, Vec2 da, double contact) {
+  return {dot(dr, dr) - contact * contact, 2.0 * dot(dr, dv), dot(dv, dv) + dot(dr, da), dot(dv, da),
+          0.25 * dot(da, da)};
+}
+
+// The line's contact function (the gap) n . r(t) - d, ascending powers.
+std::array<double, 3> line_function(const QuadraticPath& s, const ContactLine& line) {
+  const Vec2 n = line.normal;
+  return {dot(n, s.position - line.start) - line.contact_distance, dot(n, s.velocity), 0.5 * dot(n, s.acceleration)};
 }
 
 bool within_segment(const QuadraticPath& s, const ContactLine& line, double t) {
@@ -157,23 +175,36 @@ std::optional<double> predict_contact(const QuadraticPath& a, const QuadraticPat
   if (dv == Vec2{} && da == Vec2{}) return std::nullopt;  // no relative motion
   // Cheap rejection: the relative path's hull never comes within contact.
   if (std::isfinite(horizon) && !hull_reaches_origin(bezier_hull(dr, dv, da, horizon), contact)) return std::nullopt;
-  // |dr + dv t + da t^2/2|^2 - contact^2, ascending powers.
-  const std::array<double, 5> c{dot(dr, dr) - contact * contact, 2.0 * dot(dr, dv), dot(dv, dv) + dot(dr, da),
-                                dot(dv, da), 0.25 * dot(da, da)};
+  const std::array<double, 5> c = pair_function(dr, dv, da, contact);
   // c[0] ~ 2 contact gap: only a pair within the tolerance can touch now.
+  const GapKinematics at0 = c[0] <= 3.0 * contact * kContactTolerance ? pair_kinematics(dr, dv, contact)
+                                                                      : GapKinematics{kInfinity, 0.0};
   return earliest_entering_root(
-      c, horizon, [&](double t) { return pair_kinematics(dr, dv, da, contact, t); },
+      c, horizon, at0,
       [&](double t) {
         const Vec2 d = dr + t * dv + (0.5 * t * t) * da;
         return dot(d, dv + t * da) / contact;  // normal relative velocity at contact, m/s
       },
-      c[0] <= 3.0 * contact * kContactTolerance);
+      [&](double g) { return pair_f_at(contact, g); });
 }
 
-bool contact_now(const QuadraticPath& a, const QuadraticPath& b, double contact) {
-  return entering_now(pair_kinematics(b.position - a.position, b.velocity - a.velocity,
-                                      b.acceleration - a.acceleration, contact, 0.0),
-                      kContactTolerance);
+// Touching now (within kContactTolerance) and getting into the contact: the
+// rule of earliest_entering_root at t = 0, a pair closing fast from a gap
+// within the tolerance included.
+template <std::size_t N, typename FAt>
+bool touching_and_entering(const std::array<double, N>& c, GapKinematics k, double horizon, FAt f_at) {
+  if (k.g > kContactTolerance) return false;
+  if (k.g1 < -kSurelyClosing) return true;
+  return deepens(c, 0.0, horizon, f_at(kContactTolerance), f_at(std::min(k.g, 0.0) - kGrazeDepth));
+}
+
+bool contact_now(const QuadraticPath& a, const QuadraticPath& b, double contact, double horizon) {
+  const Vec2 dr = b.position - a.position;
+  const Vec2 dv = b.velocity - a.velocity;
+  const Vec2 da = b.acceleration - a.acceleration;
+  if (dv == Vec2{} && da == Vec2{}) return false;
+  return touching_and_entering(pair_function(dr, dv, da, contact), pair_kinematics(dr, dv, contact), horizon,
+                               [&](double g) { return pair_f_at(contact, g); });
 }
 
 ContactLine contact_line(Vec2 start, Vec2 end, double contact_distance) {
@@ -183,26 +214,27 @@ ContactLine contact_line(Vec2 start, Vec2 end, double contact_distance) {
 }
 
 std::optional<double> predict_line_contact(const QuadraticPath& s, const ContactLine& line, double horizon) {
-  const Vec2 n = line.normal;
-  const Vec2 a = s.acceleration;
-  const Vec2 r0 = s.position - line.start;
-  const double d = line.contact_distance;
-  const std::array<double, 3> c{dot(n, r0) - d, dot(n, s.velocity), 0.5 * dot(n, a)};
+  const std::array<double, 3> c = line_function(s, line);
   if (c[1] == 0.0 && c[2] == 0.0) return std::nullopt;  // not moving across the line
   if (std::isfinite(horizon)) {
     // The hull's points all stay on the table side of the contact line.
-    const Hull h = bezier_hull(r0, s.velocity, a, horizon);
+    const Vec2 n = line.normal;
+    const double d = line.contact_distance;
+    const Hull h = bezier_hull(s.position - line.start, s.velocity, s.acceleration, horizon);
     if (dot(n, h.p0) > d && dot(n, h.p1) > d && dot(n, h.p2) > d) return std::nullopt;
   }
   const auto t = earliest_entering_root(
-      c, horizon, [&](double tt) { return line_kinematics(s, line, tt); },
-      [&](double tt) { return dot(line.normal, s.velocity + tt * s.acceleration); }, c[0] <= kContactTolerance);
+      c, horizon, GapKinematics{c[0], c[1]},
+      [&](double tt) { return dot(line.normal, s.velocity + tt * s.acceleration); }, [](double g) { return g; });
   if (!t || !within_segment(s, line, *t)) return std::nullopt;
   return t;
 }
 
-bool line_contact_now(const QuadraticPath& s, const ContactLine& line) {
-  return within_segment(s, line, 0.0) && entering_now(line_kinematics(s, line, 0.0), kContactTolerance);
+bool line_contact_now(const QuadraticPath& s, const ContactLine& line, double horizon) {
+  const std::array<double, 3> c = line_function(s, line);
+  if (c[1] == 0.0 && c[2] == 0.0) return false;
+  return within_segment(s, line, 0.0) &&
+         touching_and_entering(c, GapKinematics{c[0], c[1]}, horizon, [](double g) { return g; });
 }
 
 std::optional<double> predict_line_contact(const QuadraticPath& s, Vec2 start, Vec2 end, double contact_distance,

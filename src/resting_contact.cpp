@@ -2,6 +2,7 @@
 #include "cueball/resting_contact.hpp"
 
 #include <array>
+#include <cmath>
 
 #include "cueball/events.hpp"
 
@@ -80,11 +81,14 @@ BallState rest_against_wall(const BallState& s, Vec2 n, double radius) {
 bool press_apart(BallState& a, BallState& b, double radius) {
   const BallState a0 = a, b0 = b;
   const Vec2 n = (b.position - a.position) / norm(b.position - a.position);  // a -> b
-  // Any normal relative speed (of round-off size, or a parting too slow to
-  // clear the contact) is absorbed first (plastic, momentum kept).
+  // A normal relative speed (a closing below the impact models' range, or a
+  // parting too slow to clear the contact) is absorbed first (plastic,
+  // momentum kept); one of round-off size is none.
   const double closing = -dot(b.velocity - a.velocity, n);
-  a.velocity = a.velocity - (0.5 * closing) * n;
-  b.velocity = b.velocity + (0.5 * closing) * n;
+  if (std::abs(closing) >= kMinApproachSpeed) {
+    a.velocity = a.velocity - (0.5 * closing) * n;
+    b.velocity = b.velocity + (0.5 * closing) * n;
+  }
   // a's friction, -mu_s g u^, points at b when u_a . n < 0; b's at a when u_b . n > 0.
   const double a_presses = -dot(slip_velocity(a, radius), n);
   const double b_presses = dot(slip_velocity(b, radius), n);

@@ -474,15 +474,16 @@ class Simulation {
   };
   void walls_entered(int ball, const BallState& s, std::vector<WallContact>& out) const {
     const QuadraticPath path = quadratic_path(s, p_);
+    const double horizon = phase_end_time(s, p_);
     for (std::size_t c = 0; c < cushion_lines_.size(); ++c) {
       if (!boxes_within({s.position, s.position}, cushion_boxes_[c], 0.0)) continue;
-      if (line_contact_now(path, cushion_lines_[c]))
+      if (line_contact_now(path, cushion_lines_[c], horizon))
         out.push_back({cushion_lines_[c].normal, EventType::ball_cushion, static_cast<int>(c), ball});
     }
     for (std::size_t j = 0; j < table_.jaws.size(); ++j) {
       const Vec2 d = s.position - table_.jaws[j].centre;
       if (std::abs(norm(d) - jaw_distance_[j]) > kContactTolerance) continue;
-      if (contact_now({table_.jaws[j].centre, {}, {}}, path, jaw_distance_[j]))
+      if (contact_now({table_.jaws[j].centre, {}, {}}, path, jaw_distance_[j], horizon))
         out.push_back({unit(d), EventType::ball_jaw, static_cast<int>(j), ball});
     }
   }
@@ -515,13 +516,15 @@ class Simulation {
       const std::size_t before = group.size();
       for (std::size_t g = 0; g < before; ++g) {
         const int m = group[g];
-        const QuadraticPath moving = quadratic_path(rolling_with(now[idx(m)], v, p_.ball.radius), p_);
+        const BallState rolling = rolling_with(now[idx(m)], v, p_.ball.radius);
+        const QuadraticPath moving = quadratic_path(rolling, p_);
         for (int k = 0; k < n_; ++k) {
           if (member[idx(k)] || !active_[idx(k)]) continue;
           const Vec2 d = now[idx(k)].position - now[idx(m)].position;
           if (norm(d) - contact_ > kContactTolerance) continue;
           const double closing = -dot(now[idx(k)].velocity - v, unit(d));
-          if (closing < kPushSpeed && contact_now(moving, quadratic_path(now[idx(k)], p_), contact_)) {
+          const double horizon = std::min(phase_end_time(rolling, p_), phase_end_time(now[idx(k)], p_));
+          if (closing < kPushSpeed && contact_now(moving, quadratic_path(now[idx(k)], p_), contact_, horizon)) {
             member[idx(k)] = 1;
             group.push_back(k);
             record(EventType::ball_ball, m, result_.balls[idx(k)].id);

@@ -99,9 +99,11 @@ std::optional<double> predict_circle_contact(const QuadraticPath& s, Vec2 centre
 /// (predict_contact reports a closing pair at t = 0 only once it touches: its
 /// root lies a gap of up to 1e-9 m ahead.) A circle (jaw) is a path with no
 /// motion.
-bool contact_now(const QuadraticPath& a, const QuadraticPath& b, double contact_distance);
+/// `horizon` as for predict_contact (a pair parting now is pressed only if
+/// its acceleration turns it back within the horizon).
+bool contact_now(const QuadraticPath& a, const QuadraticPath& b, double contact_distance, double horizon);
 /// The same for a straight cushion nose (foot of the perpendicular within it).
-bool line_contact_now(const QuadraticPath& s, const ContactLine& line);
+bool line_contact_now(const QuadraticPath& s, const ContactLine& line, double horizon);
 
 /// Earliest time in [0, horizon] at which balls a and b (same radius) touch
 /// while approaching.

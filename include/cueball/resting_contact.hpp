@@ -55,6 +55,13 @@
 //    At these speeds the group moves less than v^2 / (2 (5/7) mu_r g), under
 //    a millimetre, before it stops.
 //
+// Sources: the impulses are derived here from paper 001's friction law
+// (eqs 2 and 9: -mu_s m g u^, the slip's end at v - (2/7) u) and the
+// cushion's normal reaction; resolving resting contact by impulses follows
+// B. Mirtich and J. Canny, "Impulse-based simulation of rigid bodies" (1995);
+// the inelastic collapse a pairwise impulse rule would run into is S.
+// McNamara and W. R. Young, Phys. Rev. E 50, R28 (1994).
+//
 // What this leaves out: the contact is resolved at once instead of over the
 // finite time that friction (at most mu_s m g) would take; the tangential
 // slip does not feel the cushion's own friction (mu_w) nor the vertical part

@@ -22,15 +22,19 @@ std::string path_key(const std::string& key) {
   return plain ? key : cueball::quote_input(key);
 }
 
-// Raises InvalidArgument for a NaN or infinite float anywhere in a scenario
-// given as Python objects (JSON has no spelling for it; the message names the
-// field as the library's own checks do), for nesting deeper than the JSON
-// reader allows (the same limit, 64), for a container that contains itself,
-// and for more values than a scenario's largest JSON text could hold. Never
-// recursion without a bound: a recursive or 100,000-deep dict raises.
-class ScenarioObjectCheck {
+// A scenario given as Python objects, made ready for Python's json module:
+// NumPy scalars and arrays (anything with a dtype and tolist(), e.g.
+// np.float32, np.int64, np.array([1.1, 0.7])) become the Python numbers and
+// lists tolist() gives, tuples become lists, and the rest is kept. Raises
+// InvalidArgument for a NaN or infinite float anywhere (JSON has no spelling
+// for it; the message names the field as the library's own checks do), for
+// nesting deeper than the JSON reader allows (the same limit, 64), for a
+// container that contains itself, and for more values than a scenario's
+// largest JSON text could hold. Never recursion without a bound: a recursive
+// or 100,000-deep dict raises.
+class ScenarioObjects {
  public:
-  void check(const py::handle& value, const std::string& path, std::size_t depth) {
+  py::object normalise(const py::handle& value, const std::string& path, std::size_t depth) {
     if (++values_ > kMaxValues)
       throw cueball::InvalidArgument("scenario", "scenario holds more than " + std::to_string(kMaxValues) +
                                                      " values; a scenario's JSON text is at most " +
@@ -38,26 +42,44 @@ class ScenarioObjectCheck {
     if (py::isinstance<py::float_>(value)) {
       const double v = value.cast<double>();
       if (!std::isfinite(v)) throw cueball::InvalidArgument(path, v, "any finite number");
-      return;
+      return py::reinterpret_borrow<py::object>(value);
     }
     const bool dict = py::isinstance<py::dict>(value);
     const bool list = py::isinstance<py::list>(value) || py::isinstance<py::tuple>(value);
-    if (!dict && !list) return;
+    if (!dict && !list) {
+      if (!py::isinstance<py::str>(value) && !py::isinstance<py::int_>(value) && py::hasattr(value, "dtype") &&
+          py::hasattr(value, "tolist")) {
+        // A NumPy scalar or array: its Python value (a number, or nested lists).
+        if (depth >= kMaxDepth)
+          throw cueball::InvalidArgument(path, path + " nests deeper than " + std::to_string(kMaxDepth) + " levels");
+        const py::object plain = value.attr("tolist")();
+        if (py::hasattr(plain, "dtype"))  // tolist() gave no Python value (an object array's element)
+          return plain;
+        return normalise(plain, path, depth + 1);
+      }
+      return py::reinterpret_borrow<py::object>(value);
+    }
     if (depth >= kMaxDepth)
       throw cueball::InvalidArgument(path, path + " nests deeper than " + std::to_string(kMaxDepth) + " levels");
     PyObject* id = value.ptr();
     for (PyObject* open : open_)
       if (open == id) throw cueball::InvalidArgument(path, path + " contains itself (a circular reference)");
     open_.push_back(id);
+    py::object out;
     if (dict) {
+      py::dict d;
       for (const auto& item : py::reinterpret_borrow<py::dict>(value)) {
-        check(item.second, path + "." + path_key(py::str(item.first).cast<std::string>()), depth + 1);
+        d[item.first] = normalise(item.second, path + "." + path_key(py::str(item.first).cast<std::string>()), depth + 1);
       }
+      out = std::move(d);
     } else {
+      py::list l;
       std::size_t i = 0;
-      for (const py::handle& item : value) check(item, path + "[" + std::to_string(i++) + "]", depth + 1);
+      for (const py::handle& item : value) l.append(normalise(item, path + "[" + std::to_string(i++) + "]", depth + 1));
+      out = std::move(l);
     }
     open_.pop_back();
+    return out;
   }
 
  private:
@@ -104,14 +126,16 @@ std::optional<std::string> scenario_text(const py::object& scenario) {
   }
   if (py::isinstance(scenario, py::module_::import("os").attr("PathLike"))) return read_scenario_file(scenario);
   if (py::isinstance<py::dict>(scenario)) {
-    ScenarioObjectCheck().check(scenario, "scenario", 0);
-    return py::module_::import("json").attr("dumps")(scenario).cast<std::string>();
+    const py::object plain = ScenarioObjects().normalise(scenario, "scenario", 0);
+    return py::module_::import("json").attr("dumps")(plain).cast<std::string>();
   }
   throw py::type_error("scenario must be None (the built-in 9-ball break), a dict, JSON text, or a path (str or os.PathLike)");
 }
 
 cueball::Scenario load_scenario(const std::optional<std::string>& text) {
-  return text ? cueball::scenario_from_json(*text) : cueball::default_scenario();
+  if (text) return cueball::scenario_from_json(*text);
+  static const cueball::Scenario built_in = cueball::default_scenario();  // read once
+  return built_in;
 }
 
 }  // namespace cueball_python

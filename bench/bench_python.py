@@ -4,7 +4,8 @@ run_scenario() in C++, in one process (issue 12: goal within 1.3x).
 
     PYTHONPATH=build/release/python /usr/bin/python3 bench/bench_python.py [--runs 7] [--reps 300]
 
-Each of --runs rounds times --reps calls of each; the medians are printed.
+Each of --runs rounds times --reps calls of each, one after the other; the
+medians of the times and of each round's ratio to run_scenario are printed.
 "simulate()" is the call alone (the Result's arrays are built on first
 access); "+ arrays" also reads events and balls; "+ to_dict()" is the JSON
 form the module returned before the Result object.
@@ -42,11 +43,12 @@ def main():
         rows["simulate()"].append(per_call(cueball.simulate, args.reps))
         rows["simulate() + arrays"].append(per_call(with_arrays, args.reps))
         rows["simulate() + to_dict()"].append(per_call(lambda: cueball.simulate().to_dict(), max(1, args.reps // 5)))
-    base = statistics.median(rows["run_scenario (C++)"])
-    print(f"built-in 9-ball break, median of {args.runs} runs of {args.reps} calls")
+    base = rows["run_scenario (C++)"]
+    print(f"built-in 9-ball break, medians of {args.runs} rounds of {args.reps} calls each")
+    print(f"  {'':24s} {'time':>11s}   ratio to run_scenario (median of the rounds' ratios)")
     for name, times in rows.items():
-        t = statistics.median(times)
-        print(f"  {name:24s} {t * 1e3:8.3f} ms   {t / base:5.2f}x run_scenario")
+        ratio = statistics.median(t / b for t, b in zip(times, base))
+        print(f"  {name:24s} {statistics.median(times) * 1e3:8.3f} ms   {ratio:5.2f}x")
 
 
 if __name__ == "__main__":

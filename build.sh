@@ -14,6 +14,7 @@ packages=(g++ cmake ninja-build libgtest-dev libgmock-dev libbenchmark-dev nlohm
 if [[ "$mode" == test ]]; then
   packages+=(clang-14 libclang-rt-14-dev llvm-14)  # libFuzzer (libclang_rt.fuzzer) and readable traces
   packages+=(chromium)                             # the viewer's end-to-end tests
+  packages+=(python3-numpy python3-mypy)           # the Python module's tests: Result's arrays, mypy on the stubs
   command -v npm >/dev/null || packages+=(nodejs npm)
 fi
 missing=()

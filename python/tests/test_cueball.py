@@ -393,22 +393,22 @@ class CushionImpactTest(unittest.TestCase):
 class SimulateTest(unittest.TestCase):
     @unittest.skipUnless(CLI, "CUEBALL_BIN is not set")
     def test_the_builtin_break_is_the_clis(self):
-        self.assertEqual(cueball.simulate(), run_cli("simulate"))
+        self.assertEqual(cueball.simulate().to_dict(), run_cli("simulate"))
 
     @unittest.skipUnless(CLI, "CUEBALL_BIN is not set")
     def test_a_scenario_file_with_samples_is_the_clis(self):
-        mine = cueball.simulate(CUT_SHOT, sample_rate=30.0)
+        mine = cueball.simulate(CUT_SHOT, sample_rate=30.0).to_dict()
         self.assertEqual(mine, run_cli("simulate", str(CUT_SHOT), "--sample", "30"))
         self.assertEqual(mine["samples"]["rate_hz"], 30.0)
 
     def test_dict_string_and_path_agree_and_reruns_are_identical(self):
         text = CUT_SHOT.read_text()
-        from_text = cueball.simulate(text)
-        self.assertEqual(cueball.simulate(json.loads(text)), from_text)
-        self.assertEqual(cueball.simulate(CUT_SHOT), from_text)
-        self.assertEqual(cueball.simulate(str(CUT_SHOT)), from_text)  # a str that is not JSON is a path
-        self.assertEqual(cueball.simulate("  \n" + text), from_text)  # JSON text after blanks
-        self.assertEqual(cueball.simulate(text), from_text)  # bit-identical rerun
+        from_text = cueball.simulate(text).to_dict()
+        self.assertEqual(cueball.simulate(json.loads(text)).to_dict(), from_text)
+        self.assertEqual(cueball.simulate(CUT_SHOT).to_dict(), from_text)
+        self.assertEqual(cueball.simulate(str(CUT_SHOT)).to_dict(), from_text)  # a str that is not JSON is a path
+        self.assertEqual(cueball.simulate("  \n" + text).to_dict(), from_text)  # JSON text after blanks
+        self.assertEqual(cueball.simulate(text).to_dict(), from_text)  # bit-identical rerun
         pockets = {b["name"]: b["pocket"] for b in from_text["balls"]}
         self.assertEqual(pockets["1"], "top-right")
         self.assertEqual(from_text["events"][0]["type"], "cue_strike")
@@ -417,7 +417,7 @@ class SimulateTest(unittest.TestCase):
         # Each ball's last trajectory segment, evolved with the cloth closed forms to the
         # end of the shot, lands on its final position: the result's segments and the
         # module's evolve() are the same physics.
-        result = cueball.simulate()
+        result = cueball.simulate().to_dict()
         q = result["parameters"]
         p = cueball.Parameters(
             cueball.BallParameters(q["mass"], q["radius"]),
@@ -485,7 +485,7 @@ class SimulateTest(unittest.TestCase):
         # A dict shared (not circular) is fine.
         ball = {"id": 0, "position": [0.5, 0.5]}
         shared = {"balls": [ball], "cue": {"ball": 0, "aim_deg": 0, "speed": 1.0}, "noise": {}}
-        self.assertEqual(len(cueball.simulate(shared)["balls"]), 1)
+        self.assertEqual(len(cueball.simulate(shared).to_dict()["balls"]), 1)
 
     def test_strict_json_and_bounded_resources(self):
         with self.assertRaises(cueball.InvalidArgument) as caught:
@@ -560,7 +560,7 @@ class BatchTest(unittest.TestCase):
     def test_a_workers_error_is_raised_in_the_caller(self):
         # jaws[0] fits the table's ball but is too high for the parameters' smaller
         # ball: found only when a shot runs, in a worker thread.
-        table = cueball.simulate(break_with(max_events=1000))["table"]
+        table = cueball.simulate(break_with(max_events=1000)).to_dict()["table"]
         table["jaws"][0]["contact_height"] = 0.056
         scenario = break_with(table=table, parameters={"radius": 0.0275}, noise={"speed": 0.1})
         with self.assertRaises(cueball.InvalidArgument) as single:
@@ -586,13 +586,13 @@ class BatchTest(unittest.TestCase):
         # simulate() and simulate_batch() release the GIL: the same work from four Python
         # threads at once gives the results of one thread.
         expected_batch = self.without_timing(cueball.simulate_batch(shots=100, seed=9))
-        expected_shot = cueball.simulate(CUT_SHOT)
+        expected_shot = cueball.simulate(CUT_SHOT).to_dict()
         results, errors = [], []
 
         def work():
             try:
                 batch = cueball.simulate_batch(shots=100, seed=9)
-                results.append((self.without_timing(batch), cueball.simulate(CUT_SHOT)))
+                results.append((self.without_timing(batch), cueball.simulate(CUT_SHOT).to_dict()))
             except Exception as e:  # reported below
                 errors.append(e)
 

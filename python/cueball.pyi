@@ -1,0 +1,428 @@
+"""Type stubs of the extension module cueball (python/src/), with units.
+
+SI throughout: m, s, kg, rad. Table frame: x, y on the bed, z up. Vectors
+are tuples (x, y) or (wx, wy, wz); any sequence or NumPy array of the right
+length is accepted, and NumPy scalars wherever a number is. Checked against
+the module by python/tests/test_stubs.py (every public name) and by
+`mypy --strict` on python/tests/typed_usage.py.
+"""
+
+import os
+from typing import Any, Mapping, Sequence, TypedDict
+
+import numpy as np
+from numpy.typing import NDArray
+
+__version__: str
+
+_Float = float | np.floating[Any] | np.integer[Any]
+_Int = int | np.integer[Any]
+_Vec = Sequence[_Float] | NDArray[Any]
+_Scenario = None | str | os.PathLike[str] | Mapping[str, Any]
+
+# ------------------------------------------------------------------ errors
+
+class InvalidArgument(ValueError):
+    """A value outside its allowed range; `field` names it (e.g. 'mu_s', 'scenario.balls[1].position')."""
+
+    field: str
+
+class InfeasibleShot(ValueError):
+    """A plan with no physical answer; `condition` is the failed inequality (e.g. 'x1 >= x0')."""
+
+    condition: str
+
+class SimulationError(RuntimeError):
+    """A simulation that could not finish (it reached the scenario's max_events)."""
+
+# ------------------------------------------------------------------ parameters
+
+class BallParameters:
+    """The ball."""
+
+    mass: float
+    """m, kg"""
+    radius: float
+    """R, m"""
+    def __init__(self, mass: _Float, radius: _Float) -> None: ...
+
+class ClothParameters:
+    """The cloth: friction coefficients (dimensionless) and gravity (m/s^2)."""
+
+    sliding_friction: float
+    """mu_s; a sliding ball decelerates at mu_s g"""
+    rolling_resistance: float
+    """mu_r (paper 001's energy convention): a rolling ball decelerates at (5/7) mu_r g"""
+    spin_friction: float
+    """mu_sp: dw_z/dt = -5 mu_sp g / (2R)"""
+    gravity: float
+    """g, m/s^2"""
+    def __init__(
+        self, sliding_friction: _Float, rolling_resistance: _Float, spin_friction: _Float, gravity: _Float = 9.81
+    ) -> None: ...
+
+class Parameters:
+    """Ball and cloth (read/write, picklable)."""
+
+    ball: BallParameters
+    cloth: ClothParameters
+    def __init__(self, ball: BallParameters, cloth: ClothParameters) -> None: ...
+
+def snooker_parameters() -> Parameters:
+    """Snooker ball on a snooker cloth (the default of every params=)."""
+
+def pool_parameters() -> Parameters:
+    """WPA pool ball on a typical pool cloth."""
+
+def preset_parameters(name: str) -> Parameters:
+    """'snooker' or 'pool'; InvalidArgument otherwise."""
+
+def validate(params: Parameters) -> None:
+    """Raises InvalidArgument naming the first parameter out of its range (PARAMETER_RANGES)."""
+
+def moment_of_inertia(ball: BallParameters) -> float:
+    """I = 2/5 m R^2, kg m^2."""
+
+def sliding_deceleration(params: Parameters) -> float:
+    """mu_s g, m/s^2."""
+
+def rolling_deceleration(params: Parameters) -> float:
+    """(5/7) mu_r g, m/s^2."""
+
+def spin_deceleration(params: Parameters) -> float:
+    """5 mu_sp g / (2R), rad/s^2."""
+
+PARAMETER_RANGES: dict[str, dict[str, Any]]
+"""{field: {'min', 'max', 'unit', 'meaning'}}"""
+
+# ------------------------------------------------------------------ cloth motion
+
+class BallState:
+    """A ball on the bed: position (x, y) m, velocity (vx, vy) m/s, angular_velocity (wx, wy, wz) rad/s."""
+
+    @property
+    def position(self) -> tuple[float, float]: ...
+    @position.setter
+    def position(self, value: _Vec) -> None: ...
+    @property
+    def velocity(self) -> tuple[float, float]: ...
+    @velocity.setter
+    def velocity(self, value: _Vec) -> None: ...
+    @property
+    def angular_velocity(self) -> tuple[float, float, float]: ...
+    @angular_velocity.setter
+    def angular_velocity(self, value: _Vec) -> None: ...
+    def __init__(
+        self, position: _Vec = (0.0, 0.0), velocity: _Vec = (0.0, 0.0), angular_velocity: _Vec = (0.0, 0.0, 0.0)
+    ) -> None: ...
+
+def slip_velocity(state: BallState, params: Parameters = ...) -> tuple[float, float]:
+    """Contact-point slip u = v + R z^ x w, m/s."""
+
+def motion_phase(state: BallState, params: Parameters = ...) -> str:
+    """'sliding', 'rolling', 'spinning' or 'stationary'."""
+
+def next_transition(state: BallState, params: Parameters = ...) -> tuple[float, str]:
+    """(time s, kind): 'sliding_ends', 'rolling_ends', 'vertical_spin_ends' or 'none' (time inf)."""
+
+def phase_end_time(state: BallState, params: Parameters = ...) -> float:
+    """Seconds until the path changes (ignoring vertical spin); inf at rest."""
+
+def evolve(state: BallState, dt: _Float, params: Parameters = ...) -> BallState:
+    """The state after dt >= 0 s, in closed form."""
+
+def kinetic_energy(state: BallState, params: Parameters = ...) -> float:
+    """Translational plus rotational kinetic energy, J."""
+
+class StraightShot:
+    """A straight shot along +x from x = 0 (paper 001 eqs 19-24)."""
+
+    t1: float
+    """end of sliding, s"""
+    x1: float
+    """position at the end of sliding, m"""
+    v1: float
+    """velocity at the end of sliding, m/s"""
+    t2: float
+    """the ball stops translating, s"""
+    x2: float
+    """rest position, m"""
+    t_spin: float
+    """vertical spin reaches zero, s"""
+
+def straight_shot(v0: _Float, w0: _Float = 0.0, side_spin: _Float = 0.0, params: Parameters = ...) -> StraightShot:
+    """Speed v0 m/s along +x, topspin w0 rad/s (R w0 = v0 natural roll), side spin w_z rad/s."""
+
+def straight_shot_state(
+    v0: _Float, w0: _Float = 0.0, side_spin: _Float = 0.0, t: _Float = 0.0, params: Parameters = ...
+) -> BallState:
+    """The state of straight_shot(v0, w0, side_spin) at time t >= 0 s."""
+
+MAX_SPEED: float
+"""m/s"""
+MAX_ANGULAR_SPEED: float
+"""rad/s"""
+
+# ------------------------------------------------------------------ planner
+
+class ShotPlan:
+    """Initial speed and topspin that bring a ball to x2 with speed v2 (paper 001 eqs 17-28)."""
+
+    variant: str
+    """'given_slide_end', 'natural_roll', 'given_spin' or 'given_speed'"""
+    v0: float
+    """m/s"""
+    w0: float
+    """rad/s"""
+    t1: float
+    """s"""
+    x1: float
+    """m"""
+    v1: float
+    """m/s"""
+    t2: float
+    """s"""
+
+def plan_shot_with_slide_end(
+    *, x1: _Float, x2: _Float, v2: _Float = 0.0, x0: _Float = 0.0, params: Parameters = ...
+) -> ShotPlan:
+    """Sliding ends at x1 (m); the ball passes x2 (m) at v2 (m/s)."""
+
+def plan_shot_with_spin(
+    *, w0: _Float, x2: _Float, v2: _Float = 0.0, x0: _Float = 0.0, params: Parameters = ...
+) -> ShotPlan:
+    """Given topspin w0 (rad/s)."""
+
+def plan_shot_with_speed(
+    *, v0: _Float, x2: _Float, v2: _Float = 0.0, x0: _Float = 0.0, params: Parameters = ...
+) -> ShotPlan:
+    """Given speed v0 (m/s)."""
+
+def plan_natural_roll_shot(*, x2: _Float, v2: _Float = 0.0, x0: _Float = 0.0, params: Parameters = ...) -> ShotPlan:
+    """Natural roll from the start (x1 = x0, R w0 = v0)."""
+
+# ------------------------------------------------------------------ cue strike
+
+class CueParameters:
+    """The cue."""
+
+    mass: float
+    """M_c, kg"""
+    tip_restitution: float
+    """e, [0, 1]"""
+    def __init__(self, mass: _Float = 0.54, tip_restitution: _Float = 0.75) -> None: ...
+
+class CueStrike:
+    """One stroke of the cue (Leckie & Greenspan 2006)."""
+
+    speed: float
+    """V, m/s, (0, 12]"""
+    aim: float
+    """phi, rad, anticlockwise from +x"""
+    elevation: float
+    """theta, rad, [0, pi/2)"""
+    side_offset: float
+    """a, m; > 0 right english (w_z > 0)"""
+    height_offset: float
+    """b, m; > 0 above the centre"""
+    def __init__(
+        self,
+        speed: _Float,
+        aim: _Float = 0.0,
+        elevation: _Float = 0.0,
+        side_offset: _Float = 0.0,
+        height_offset: _Float = 0.0,
+    ) -> None: ...
+
+def strike_ball(
+    strike: CueStrike, position: _Vec = (0.0, 0.0), params: Parameters = ..., cue: CueParameters = ...
+) -> BallState:
+    """The ball just after the strike at position (x, y) m; a miscue raises InvalidArgument ('tip offset')."""
+
+def cue_tip_offset_ok(strike: CueStrike, params: Parameters = ...) -> bool:
+    """True when sqrt(a^2 + b^2) <= 0.5 R."""
+
+def level_cue_tip_height(v0: _Float, w0: _Float, params: Parameters = ...) -> float:
+    """Tip height b, m, for a level cue giving speed v0 m/s and topspin w0 rad/s."""
+
+def level_cue_speed(v0: _Float, tip_height: _Float, params: Parameters = ..., cue: CueParameters = ...) -> float:
+    """Cue speed V, m/s, giving ball speed v0 with a level cue at tip_height m."""
+
+MAX_CUE_SPEED: float
+"""m/s"""
+MISCUE_OFFSET_FRACTION: float
+"""of R"""
+
+# ------------------------------------------------------------------ cushion impact
+
+class CushionImpactSample:
+    """The impact at one normal impulse P_I (cushion frame: X along it, Y into it, Z up)."""
+
+    normal_impulse: float
+    """P_I, N s"""
+    cushion_slip_speed: float
+    """m/s"""
+    cushion_slip_angle: float
+    """rad"""
+    bed_slip_speed: float
+    """m/s"""
+    bed_slip_angle: float
+    """rad"""
+    @property
+    def velocity(self) -> tuple[float, float, float]:
+        """m/s"""
+    @property
+    def angular_velocity(self) -> tuple[float, float, float]:
+        """rad/s"""
+    work: float
+    """J"""
+
+class CushionImpactResult:
+    """The ball after a cushion impact, in the cushion frame."""
+
+    @property
+    def velocity(self) -> tuple[float, float, float]:
+        """(vX, vY, vZ), m/s"""
+    @property
+    def angular_velocity(self) -> tuple[float, float, float]:
+        """(wX, wY, wZ), rad/s"""
+    rebound_speed: float
+    """m/s"""
+    rebound_angle: float
+    """rad from the cushion line"""
+    compression_impulse: float
+    """N s"""
+    total_impulse: float
+    """N s"""
+    compression_work: float
+    """J, negative"""
+    beyond_rigid_cushion_limit: bool
+    solver_steps: int
+    solver_events: int
+    history: list[CushionImpactSample]
+
+def cushion_impact(
+    speed: _Float,
+    angle: _Float,
+    topspin: _Float | None = None,
+    sidespin: _Float = 0.0,
+    *,
+    params: Parameters = ...,
+    restitution: _Float = 0.98,
+    friction: _Float = 0.14,
+    contact_height: _Float | None = None,
+    solver: str = "exact",
+    paper_steps: _Int = 5000,
+    history: bool = False,
+) -> CushionImpactResult:
+    """Mathavan 2010: speed V0 m/s, angle alpha rad in (0, pi/2], spins rad/s (topspin None: rolling)."""
+
+RIGID_CUSHION_SPEED_LIMIT: float
+"""m/s"""
+
+# ------------------------------------------------------------------ whole shots
+
+EVENT_TYPES: tuple[str, ...]
+"""Names of the codes in Result.events['type']."""
+PHASES: tuple[str, ...]
+"""Names of the codes in the 'phase' arrays: 'sliding', 'rolling', 'spinning', 'stationary'."""
+
+class EventArrays(TypedDict):
+    """One entry per event, in the order resolved."""
+
+    time: NDArray[np.float64]
+    """s"""
+    type: NDArray[np.int8]
+    """index into EVENT_TYPES"""
+    ball: NDArray[np.int32]
+    """the ball's id"""
+    other: NDArray[np.int32]
+    """the other ball's id (ball_ball), else -1"""
+    cushion: NDArray[np.int32]
+    """index into the table's cushions (ball_cushion), else -1"""
+    jaw: NDArray[np.int32]
+    """index into the table's jaws (ball_jaw), else -1"""
+    pocket: NDArray[np.int32]
+    """index into Result.pocket_names (ball_pocket), else -1"""
+
+class BallArrays(TypedDict):
+    """One row per ball, in the scenario's order; the final state."""
+
+    id: NDArray[np.int32]
+    name: list[str]
+    pocketed: NDArray[np.bool_]
+    pocket: NDArray[np.int32]
+    """index into Result.pocket_names, -1 if not pocketed"""
+    pocket_time: NDArray[np.float64]
+    """s, NaN if not pocketed"""
+    position: NDArray[np.float64]
+    """(n, 2), m"""
+    velocity: NDArray[np.float64]
+    """(n, 2), m/s"""
+    angular_velocity: NDArray[np.float64]
+    """(n, 3), rad/s"""
+
+class SegmentArrays(TypedDict):
+    """One ball's closed-form trajectory, one row per segment (its start)."""
+
+    time: NDArray[np.float64]
+    """start, s"""
+    position: NDArray[np.float64]
+    """(k, 2), m"""
+    velocity: NDArray[np.float64]
+    """(k, 2), m/s"""
+    angular_velocity: NDArray[np.float64]
+    """(k, 3), rad/s"""
+    phase: NDArray[np.int8]
+    """index into PHASES"""
+
+class StateArrays(TypedDict):
+    """Every ball's state at each time."""
+
+    time: NDArray[np.float64]
+    """(n_times,), s"""
+    position: NDArray[np.float64]
+    """(n_balls, n_times, 2), m"""
+    velocity: NDArray[np.float64]
+    """(n_balls, n_times, 2), m/s"""
+    angular_velocity: NDArray[np.float64]
+    """(n_balls, n_times, 3), rad/s"""
+    phase: NDArray[np.int8]
+    """(n_balls, n_times), index into PHASES"""
+
+class Result:
+    """A simulated shot; arrays built from the library's result on first access."""
+
+    @property
+    def end_time(self) -> float:
+        """s: every ball at rest or pocketed"""
+    @property
+    def events(self) -> EventArrays: ...
+    @property
+    def balls(self) -> BallArrays: ...
+    @property
+    def segments(self) -> list[SegmentArrays]:
+        """per ball, in the scenario's order"""
+    @property
+    def pocket_names(self) -> list[str]:
+        """the table's pockets, indexed by events['pocket'] and balls['pocket']"""
+    def state_at(self, times: _Float | Sequence[_Float] | NDArray[Any]) -> StateArrays:
+        """Every ball at each time (s, finite, >= 0; a number or 1-D); releases the GIL."""
+    def sample(self, rate: _Float) -> StateArrays:
+        """state_at(k / rate) up to end_time; rate Hz in (0, 1e4], at most 200000 states."""
+    def to_dict(self, sample_rate: _Float | None = None) -> dict[str, Any]:
+        """The documented result JSON as Python objects (json.loads of `cueball simulate --json`)."""
+    def to_json(self, sample_rate: _Float | None = None, indent: _Int = 1) -> str:
+        """The documented result JSON text, the CLI's bytes (indent -1: one line)."""
+
+def simulate(scenario: _Scenario = None, sample_rate: _Float = 0.0) -> Result:
+    """A whole shot until every ball is at rest or pocketed; scenario None is the built-in 9-ball break.
+
+    sample_rate (Hz) is the default of to_dict() and to_json(). Releases the GIL.
+    """
+
+def simulate_batch(scenario: _Scenario = None, shots: _Int = 1000, threads: _Int = 1, seed: _Int = 0) -> dict[str, Any]:
+    """Noisy copies of the scenario's shot; the keys of `cueball batch --json`. Releases the GIL."""
+
+def _time_run_scenario(scenario: _Scenario = None, repetitions: _Int = 100) -> float:
+    """Benchmark hook: seconds per run of the library's run_scenario(), timed in C++."""

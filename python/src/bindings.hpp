@@ -1,0 +1,91 @@
+// The Python module `cueball`: one source file per concept (as the library's
+// headers), each defining one bind_*() that module.cpp calls, and the
+// conversions they share.
+//
+// The bindings convert and nothing more: every function calls the library's
+// validating entry point (or its validate() first, where the kernel itself
+// does not validate), so NaN, infinity and out-of-range input raise
+// cueball.InvalidArgument naming the field. Vectors are tuples; enums are
+// strings.
+#pragma once
+
+#include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
+
+#include <array>
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "cueball/parameters.hpp"
+#include "cueball/scenario.hpp"
+#include "cueball/vec.hpp"
+
+namespace cueball_python {
+
+namespace py = pybind11;
+using namespace pybind11::literals;
+
+// ------------------------------------------------------------------ the bind_*() of each file
+
+void bind_errors(py::module_& m);        // errors.cpp: InvalidArgument, InfeasibleShot, SimulationError
+void bind_parameters(py::module_& m);    // parameters.cpp
+void bind_cloth_motion(py::module_& m);  // cloth_motion.cpp
+void bind_planner(py::module_& m);       // planner.cpp
+void bind_cue_strike(py::module_& m);    // cue_strike.cpp
+void bind_cushion(py::module_& m);       // cushion.cpp
+void bind_simulation(py::module_& m);    // simulation.cpp: simulate
+void bind_batch(py::module_& m);         // batch.cpp: simulate_batch
+#ifdef CUEBALL_HAVE_SIMULATE_MANY
+void bind_simulate_many(py::module_& m);  // simulate_many.cpp (defined there, when it exists)
+#endif
+
+// ------------------------------------------------------------------ conversions
+
+using Pair = std::array<double, 2>;
+using Triple = std::array<double, 3>;
+
+inline py::tuple to_tuple(cueball::Vec2 v) { return py::make_tuple(v.x, v.y); }
+inline py::tuple to_tuple(cueball::Vec3 v) { return py::make_tuple(v.x, v.y, v.z); }
+inline cueball::Vec2 to_vec2(const Pair& a) { return {a[0], a[1]}; }
+inline cueball::Vec3 to_vec3(const Triple& a) { return {a[0], a[1], a[2]}; }
+
+// "Type(name=value, ...)" with Python's repr of every value.
+std::string repr_of(const char* type, const std::vector<const char*>& names, const py::tuple& values);
+
+// __repr__ from the fields; `get` returns them as a tuple in `names` order.
+template <class T, class Get>
+void add_repr(py::class_<T>& cls, const char* type, std::vector<const char*> names, Get get) {
+  cls.def("__repr__", [type, names, get](const T& v) { return repr_of(type, names, get(v)); });
+}
+
+// A plain value type: __repr__, __eq__ field by field, and pickling (so that
+// parameters and states can go to multiprocessing workers); `make` builds
+// the value back from the tuple `get` returns.
+template <class T, class Get, class Make>
+void add_value_semantics(py::class_<T>& cls, const char* type, std::vector<const char*> names, Get get, Make make) {
+  add_repr(cls, type, std::move(names), get);
+  cls.def("__eq__", [get](const T& a, const py::object& b) -> py::object {
+    if (!py::isinstance<T>(b)) return py::reinterpret_borrow<py::object>(Py_NotImplemented);
+    return py::bool_(get(a).equal(get(b.cast<const T&>())));
+  });
+  cls.def(py::pickle([get](const T& v) { return get(v); }, [make](const py::tuple& t) { return make(t); }));
+}
+
+// Default argument of every function that needs the ball and cloth.
+py::arg_v params_arg();
+
+// ------------------------------------------------------------------ scenarios (scenario_input.cpp)
+
+// The scenario's JSON text, or nothing for the built-in 9-ball break.
+// Accepts None, a dict (serialised with Python's json module), a str that is
+// JSON text (its first non-blank character is '{') or else a file's path, or
+// a path (os.PathLike). Needs the GIL.
+std::optional<std::string> scenario_text(const py::object& scenario);
+
+// The scenario of scenario_text()'s text (the built-in break for nothing);
+// runs without the GIL.
+cueball::Scenario load_scenario(const std::optional<std::string>& text);
+
+}  // namespace cueball_python

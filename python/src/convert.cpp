@@ -1,0 +1,21 @@
+// Conversions and value semantics shared by every binding file.
+#include "bindings.hpp"
+
+#include <string>
+#include <vector>
+
+namespace cueball_python {
+
+// "Type(name=value, ...)" with Python's repr of every value.
+std::string repr_of(const char* type, const std::vector<const char*>& names, const py::tuple& values) {
+  std::string out = std::string(type) + "(";
+  for (std::size_t i = 0; i < names.size(); ++i) {
+    if (i > 0) out += ", ";
+    out += std::string(names[i]) + "=" + py::repr(values[i]).cast<std::string>();
+  }
+  return out + ")";
+}
+
+py::arg_v params_arg() { return py::arg_v("params", cueball::snooker_parameters(), "snooker_parameters()"); }
+
+}  // namespace cueball_python

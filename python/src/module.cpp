@@ -1,0 +1,42 @@
+// The module `cueball`: its docstring, version and every bind_*() of bindings.hpp.
+#include "bindings.hpp"
+
+namespace {
+
+constexpr const char* kModuleDoc = R"(cueball: physics of billiard balls (closed forms, no time steps).
+
+Units are SI throughout: m, s, kg, rad (degrees only where a name says so,
+as in a scenario's "aim_deg"). Table frame: x, y on the bed, x along the
+table, z up. A ball's position is its centre projected on the bed, its
+velocity (vx, vy) lies in the bed's plane, its angular velocity is
+(wx, wy, wz). Straight shots travel along +x; topspin w0 > 0 turns the ball
+the way it rolls (R w0 = v0 is natural roll, 0 a stun, < 0 draw); for motion
+along +x topspin is wy. Side spin wz > 0 is anticlockwise seen from above;
+right english (tip to the right of centre, seen from behind the cue) gives
+wz > 0. mu_r follows paper 001's energy convention: a rolling ball
+decelerates at (5/7) mu_r g.
+
+Functions that need the ball and cloth take params=Parameters, default
+snooker_parameters() (as the CLI). Bad input raises cueball.InvalidArgument
+(a ValueError naming the field), an impossible plan cueball.InfeasibleShot
+(ValueError), a simulation that cannot finish cueball.SimulationError
+(RuntimeError).)";
+
+}  // namespace
+
+PYBIND11_MODULE(cueball, m) {
+  using namespace cueball_python;
+  m.doc() = kModuleDoc;
+  m.attr("__version__") = CUEBALL_VERSION;
+  bind_errors(m);
+  bind_parameters(m);
+  bind_cloth_motion(m);
+  bind_planner(m);
+  bind_cue_strike(m);
+  bind_cushion(m);
+  bind_simulation(m);
+  bind_batch(m);
+#ifdef CUEBALL_HAVE_SIMULATE_MANY
+  bind_simulate_many(m);
+#endif
+}

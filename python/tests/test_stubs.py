@@ -1,0 +1,95 @@
+"""python/cueball.pyi against the built module: the same public names, the same
+class members, the same parameter names; and the typed program that
+`mypy --strict` checks against the stubs (ctest python_stubs) runs."""
+
+import ast
+import inspect
+import pathlib
+import re
+import sys
+import unittest
+
+import cueball
+
+STUB = pathlib.Path(__file__).resolve().parents[1] / "cueball.pyi"
+# Names only for type checkers: the dicts' TypedDicts and the private aliases.
+STUB_ONLY = {"EventArrays", "BallArrays", "SegmentArrays", "StateArrays", "_Float", "_Int", "_Vec", "_Scenario"}
+
+
+def stub_tree():
+    return ast.parse(STUB.read_text())
+
+
+def defined_names(body):
+    names = {}
+    for node in body:
+        if isinstance(node, (ast.FunctionDef, ast.ClassDef)):
+            names.setdefault(node.name, node)
+        elif isinstance(node, ast.AnnAssign) and isinstance(node.target, ast.Name):
+            names[node.target.id] = node
+        elif isinstance(node, ast.Assign):
+            for target in node.targets:
+                if isinstance(target, ast.Name):
+                    names[target.id] = node
+    return names
+
+
+def stub_parameters(fn):
+    a = fn.args
+    return [x.arg for x in a.posonlyargs + a.args + a.kwonlyargs]
+
+
+def module_parameters(obj):
+    """Parameter names from pybind11's signature line, e.g. 'f(x: float, *, y: int = 1) -> float'."""
+    first = (obj.__doc__ or "").splitlines()[0]
+    inside = first[first.index("(") + 1 : first.rindex(") ->")]
+    return re.findall(r"(?:^|[(,]\s*)(\w+):", inside)
+
+
+def public(names):
+    return {n for n in names if not (n.startswith("__") and n.endswith("__"))}
+
+
+class StubTest(unittest.TestCase):
+    def test_every_name_of_the_module_is_in_the_stub_and_back(self):
+        stub = defined_names(stub_tree().body)
+        module = public(dir(cueball))
+        self.assertEqual(sorted(module - set(stub)), [], "in the module, missing from cueball.pyi")
+        self.assertEqual(sorted(set(stub) - module - STUB_ONLY - {"__version__"}), [], "in cueball.pyi, not in the module")
+        self.assertIn("__version__", stub)
+        self.assertIsInstance(cueball.__version__, str)
+
+    def test_class_members_and_parameters_agree(self):
+        stub = defined_names(stub_tree().body)
+        for name in sorted(public(dir(cueball))):
+            obj = getattr(cueball, name)
+            node = stub[name]
+            with self.subTest(name=name):
+                if inspect.isclass(obj):
+                    self.assertIsInstance(node, ast.ClassDef)
+                    if issubclass(obj, BaseException):
+                        continue
+                    members = defined_names(node.body)
+                    mine = {m for m in vars(obj) if not m.startswith("_")}
+                    self.assertEqual(sorted(mine ^ (set(members) - {"__init__"})), [])
+                    if "__init__" in members:
+                        self.assertEqual(stub_parameters(members["__init__"]), module_parameters(obj.__init__))
+                    for m in mine:
+                        if isinstance(members[m], ast.FunctionDef) and callable(getattr(obj, m)):
+                            self.assertEqual(stub_parameters(members[m]), module_parameters(getattr(obj, m)), m)
+                elif callable(obj):
+                    self.assertIsInstance(node, ast.FunctionDef)
+                    self.assertEqual(stub_parameters(node), module_parameters(obj))
+                    self.assertTrue(ast.get_docstring(node), f"{name} has no docstring in the stub")
+
+    def test_the_typed_program_runs(self):
+        sys.path.insert(0, str(pathlib.Path(__file__).parent))
+        try:
+            import typed_usage
+        finally:
+            sys.path.pop(0)
+        typed_usage.main()
+
+
+if __name__ == "__main__":
+    unittest.main()

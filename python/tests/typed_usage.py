@@ -1,0 +1,60 @@
+"""The module's API as a typed program: checked by `mypy --strict` against
+python/cueball.pyi (ctest python_stubs) and run by test_stubs.py, so the
+stubs and the module cannot drift apart unnoticed."""
+
+import math
+import pathlib
+
+import numpy as np
+from numpy.typing import NDArray
+
+import cueball
+
+CUT_SHOT = pathlib.Path(__file__).resolve().parents[2] / "docs" / "example-cut-shot.json"
+
+
+def final_positions(result: cueball.Result) -> NDArray[np.float64]:
+    return result.balls["position"]
+
+
+def main() -> None:
+    p: cueball.Parameters = cueball.pool_parameters()
+    radius: float = p.ball.radius
+    state = cueball.BallState(position=np.array([0.5, 0.5]), velocity=(1.5, np.float32(0.0)))
+    later: cueball.BallState = cueball.evolve(state, np.float64(1.0), p)
+    x, y = later.position
+    t, kind = cueball.next_transition(state, p)
+    assert isinstance(kind, str) and t > 0.0 and x > 0.5 and y == 0.5 and radius > 0.0
+    shot: cueball.StraightShot = cueball.straight_shot(1.5, params=p)
+    plan: cueball.ShotPlan = cueball.plan_natural_roll_shot(x2=1.0)
+    ball = cueball.strike_ball(cueball.CueStrike(2.0, side_offset=0.01), params=p)
+    impact = cueball.cushion_impact(1.0, math.radians(45), sidespin=np.int64(3))
+    assert shot.v1 > 0.0 and plan.v0 > 0.0 and ball.angular_velocity[2] > 0.0 and impact.rebound_speed > 0.0
+
+    result = cueball.simulate(CUT_SHOT, sample_rate=30.0)
+    types: NDArray[np.int8] = result.events["type"]
+    names = [cueball.EVENT_TYPES[int(code)] for code in types]
+    states: cueball.StateArrays = result.state_at(np.linspace(0.0, result.end_time, 11))
+    phases: NDArray[np.int8] = states["phase"]
+    sampled = result.sample(10.0)
+    first: cueball.SegmentArrays = result.segments[0]
+    as_dict: dict[str, object] = result.to_dict()
+    text: str = result.to_json(indent=-1)
+    assert names[0] == "cue_strike" and phases.shape == (3, 11) and sampled["position"].ndim == 3
+    assert first["time"][0] == 0.0 and "events" in as_dict and text.startswith("{")
+    assert final_positions(result).shape == (3, 2)
+    odds = cueball.simulate_batch({"table": "pool_9ft", "rack": {"type": "nine_ball"},
+                                   "cue": {"ball": 0, "target": 1, "speed": np.float32(7.0)}},
+                                  shots=np.int64(4), seed=1)
+    assert odds["shots"] == 4
+    try:
+        cueball.simulate(sample_rate=-1.0)
+    except cueball.InvalidArgument as e:
+        field: str = e.field
+        assert field == "sample_rate"
+    seconds: float = cueball._time_run_scenario(None, 1)
+    assert seconds > 0.0
+
+
+if __name__ == "__main__":
+    main()

@@ -1,4 +1,5 @@
 // cueball simulate, cueball batch: whole shots on a table (scenario.hpp).
+#include <charconv>
 #include <cmath>
 #include <cstdio>
 #include <fstream>
@@ -77,10 +78,92 @@ void run_simulate(const SimulateFlags& f, std::ostream& out, std::ostream& err) 
   (void)err;
 }
 
+// ------------------------------------------------------------------ outcomes CSV
+
+// Per-shot outcomes as CSV (README, "Batches"): one header line, then one
+// row per shot in shot order:
+//   shot,miscue,failure,speed_reflected,elevation_reflected,events,first_contact,
+//   then for each ball, in the scenario's order, with its id:
+//   pocketed_ID,pocket_ID,x_ID,y_ID,cushions_before_contact_ID,cushions_ID
+// Flags 0/1; pocket the table's pocket index (-1 not pocketed); x, y the
+// final position in m, shortest round-trip decimal ("nan" when the shot was
+// not simulated); first_contact the id of the cue ball's first ball (-1).
+// Each row is written when its shot's block is merged, so memory does not
+// grow with the number of shots.
+class OutcomeCsv {
+ public:
+  OutcomeCsv(const std::string& path, const Scenario& s) : path_(path), file_(path, std::ios::binary) {
+    if (!file_) fail();
+    line_ = "shot,miscue,failure,speed_reflected,elevation_reflected,events,first_contact";
+    for (const SimulationBall& b : s.balls) {
+      const std::string id = std::to_string(b.id);
+      for (const char* column : {"pocketed_", "pocket_", "x_", "y_", "cushions_before_contact_", "cushions_"})
+        line_ += std::string(",") + column + id;
+    }
+    line_ += '\n';
+    write();
+  }
+
+  void add(int shot, const ShotOutcome& o) {
+    line_.clear();
+    number(shot);
+    flag(o.kind == ShotOutcome::Kind::miscue);
+    flag(o.kind == ShotOutcome::Kind::failure);
+    flag(o.speed_reflected);
+    flag(o.elevation_reflected);
+    number(o.events);
+    number(o.first_contact);
+    for (std::size_t j = 0; j < o.pocketed.size(); ++j) {
+      flag(o.pocketed[j] != 0);
+      number(o.pocket[j]);
+      real(o.final_position[j].x);
+      real(o.final_position[j].y);
+      number(o.cushions_before_contact[j]);
+      number(o.cushions[j]);
+    }
+    line_.back() = '\n';
+    write();
+  }
+
+  void close() {
+    if (!file_.flush()) fail();
+    file_.close();
+    if (!file_) fail();
+  }
+
+ private:
+  [[noreturn]] void fail() const {
+    throw UsageError("--outcomes " + quote_input(path_, kMaxEchoedPathChars) + ": cannot write the outcomes file");
+  }
+  void write() {
+    if (!file_.write(line_.data(), static_cast<std::streamsize>(line_.size()))) fail();
+  }
+  void flag(bool b) { line_ += b ? "1," : "0,"; }
+  void number(int v) {
+    line_ += std::to_string(v);
+    line_ += ',';
+  }
+  void real(double v) {
+    char buf[32];
+    if (std::isnan(v)) {
+      line_ += "nan,";
+      return;
+    }
+    const auto r = std::to_chars(buf, buf + sizeof buf, v);
+    line_.append(buf, r.ptr);
+    line_ += ',';
+  }
+
+  std::string path_;
+  std::ofstream file_;
+  std::string line_;
+};
+
 // ------------------------------------------------------------------ batch
 
 struct BatchFlags {
   std::string scenario;
+  std::string outcomes;
   double shots = 1000;  // read as a number so that 1e9 or 1e20 get the range error, not a parse error
   int threads = 1;
   long long seed = 0;
@@ -108,7 +191,12 @@ void run_batch(const BatchFlags& f, std::ostream& out, std::ostream& err) {
     check_flag("--sigma-height", *f.sigma_height, 0, 0.5, "sigma of the height offset, ball radii"),
         s.noise.height_offset = *f.sigma_height * radius;
 
-  const BatchResult r = simulate_batch(s, {static_cast<int>(f.shots), f.threads, static_cast<std::uint64_t>(f.seed)});
+  std::optional<OutcomeCsv> csv;
+  if (!f.outcomes.empty()) csv.emplace(f.outcomes, s);
+  const BatchResult r =
+      simulate_batch(s, {static_cast<int>(f.shots), f.threads, static_cast<std::uint64_t>(f.seed)},
+                     csv ? OutcomeSink([&](int shot, const ShotOutcome& o) { csv->add(shot, o); }) : OutcomeSink());
+  if (csv) csv->close();
   Report report("batch of " + std::to_string(r.shots) + " noisy shots (" + std::to_string(f.threads) + " threads, seed " +
                 std::to_string(f.seed) + ")");
   report.add_count("shots", r.shots, "requested");
@@ -147,6 +235,7 @@ void run_batch(const BatchFlags& f, std::ostream& out, std::ostream& err) {
                   b.pocketed_probability, b.mean_position.x, b.mean_position.y, b.position_std.x, b.position_std.y);
     out << line;
   }
+  if (csv) out << "  per-shot outcomes written to " << f.outcomes << '\n';
 }
 
 }  // namespace
@@ -178,7 +267,8 @@ Command add_batch_command(CLI::App& app) {
       "probability and final-position spread, and the throughput. A noisy speed above the 12 m/s cap\n"
       "or an elevation below 0 is reflected at the limit (2 cap - v, -e) and counted; a noisy tip\n"
       "offset beyond the miscue limit (0.5 R) is a miscue, counted and not simulated. Memory does\n"
-      "not grow with --shots (at most 1e8).");
+      "not grow with --shots (at most 1e8). --outcomes FILE also writes every shot's outcome as CSV\n"
+      "(pocketing, pocket, final position, first ball contacted, cushion contacts per ball; README).");
   sub->add_option("scenario", flags->scenario, "Scenario JSON file (default: the built-in 9-ball break)");
   sub->add_option("--shots", flags->shots, "Number of shots, [1, 1e8]")->capture_default_str();
   sub->add_option("--threads", flags->threads, "Worker threads")->capture_default_str();
@@ -188,6 +278,7 @@ Command add_batch_command(CLI::App& app) {
   sub->add_option("--sigma-elevation", flags->sigma_elevation, "Sigma of the cue elevation, degrees");
   sub->add_option("--sigma-side", flags->sigma_side, "Sigma of the side tip offset, ball radii");
   sub->add_option("--sigma-height", flags->sigma_height, "Sigma of the height tip offset, ball radii");
+  sub->add_option("--outcomes", flags->outcomes, "Write each shot's outcome to this CSV file (one row per shot)");
   sub->add_flag("--json", flags->json, "Print one JSON object");
   return [flags](std::ostream& out, std::ostream& err) { run_batch(*flags, out, err); };
 }

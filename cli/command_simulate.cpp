@@ -8,6 +8,7 @@
 #include <numbers>
 #include <optional>
 #include <sstream>
+#include <vector>
 
 #include "common.hpp"
 #include "cueball/batch.hpp"
@@ -238,7 +239,167 @@ void run_batch(const BatchFlags& f, std::ostream& out, std::ostream& err) {
   if (csv) out << "  per-shot outcomes written to " << f.outcomes << '\n';
 }
 
+// ------------------------------------------------------------------ many
+
+// A CSV of numbers with a fixed header: the data rows, row-major.
+std::vector<double> read_number_csv(const std::string& path, const char* flag, const std::string& header,
+                                    std::size_t& rows) {
+  const std::string text = read_text_file(path, std::string("the ") + (flag + 2) + " file", kMaxResultFileBytes);
+  const std::string where = std::string(flag) + " " + quote_input(path, kMaxEchoedPathChars);
+  std::vector<double> values;
+  std::size_t columns = 1;
+  for (char c : header) columns += c == ',' ? 1 : 0;
+  rows = 0;
+  std::size_t line_no = 0, start = 0;
+  while (start < text.size()) {
+    std::size_t end = text.find('\n', start);
+    if (end == std::string::npos) end = text.size();
+    std::string line = text.substr(start, end - start);
+    start = end + 1;
+    ++line_no;
+    if (!line.empty() && line.back() == '\r') line.pop_back();
+    if (line_no == 1) {
+      if (line != header)
+        throw UsageError(where + " line 1: the header must be \"" + header + "\", got " + quote_input(line));
+      continue;
+    }
+    if (line.empty()) continue;
+    std::size_t column = 0, cell_start = 0;
+    while (true) {
+      const std::size_t comma = line.find(',', cell_start);
+      const std::string cell = line.substr(cell_start, comma == std::string::npos ? std::string::npos : comma - cell_start);
+      ++column;
+      double v = 0.0;
+      const char* first = cell.data();
+      while (first < cell.data() + cell.size() && *first == ' ') ++first;
+      const auto r = std::from_chars(first, cell.data() + cell.size(), v);
+      if (r.ec != std::errc() || r.ptr != cell.data() + cell.size())
+        throw UsageError(where + " line " + std::to_string(line_no) + ", column " + std::to_string(column) + ": " +
+                         quote_input(cell) + " is not a number");
+      values.push_back(v);
+      if (comma == std::string::npos) break;
+      cell_start = comma + 1;
+    }
+    if (column != columns)
+      throw UsageError(where + " line " + std::to_string(line_no) + ": " + std::to_string(column) + " values, expected " +
+                       std::to_string(columns) + " (" + header + ")");
+    ++rows;
+  }
+  if (line_no == 0) throw UsageError(where + ": the file is empty; it needs the header \"" + header + "\"");
+  return values;
+}
+
+struct ManyFlags {
+  std::string scenario;
+  std::string actions;
+  std::string layouts;
+  std::string outcomes;
+  int threads = 1;
+  long long seed = 0;
+  bool noise = false;
+  bool json = false;
+};
+
+void run_many(const ManyFlags& f, std::ostream& out, std::ostream& err) {
+  check_flag("--threads", f.threads, 1, kMaxBatchThreads, "worker threads");
+  check_flag("--seed", static_cast<double>(f.seed), 0, 9.0e15, "random seed");
+  const Scenario s = load_scenario(f.scenario);
+  std::size_t shots = 0;
+  const std::vector<double> numbers =
+      read_number_csv(f.actions, "--actions", "speed,aim_deg,elevation_deg,side,height", shots);
+  if (shots < 1 || shots > static_cast<std::size_t>(kMaxManyShots))
+    throw UsageError("--actions " + quote_input(f.actions, kMaxEchoedPathChars) + ": " + std::to_string(shots) +
+                     " shots; allowed [1, " + std::to_string(kMaxManyShots) + "]");
+  std::vector<ShotAction> actions(shots);
+  for (std::size_t k = 0; k < shots; ++k)
+    actions[k] = {numbers[5 * k], numbers[5 * k + 1], numbers[5 * k + 2], numbers[5 * k + 3], numbers[5 * k + 4]};
+  std::vector<double> layouts;
+  if (!f.layouts.empty()) {
+    std::string header;
+    for (const SimulationBall& b : s.balls)
+      header += (header.empty() ? "" : ",") + std::string("x_") + std::to_string(b.id) + ",y_" + std::to_string(b.id);
+    std::size_t rows = 0;
+    layouts = read_number_csv(f.layouts, "--layouts", header, rows);
+    if (rows != shots)
+      throw UsageError("--layouts " + quote_input(f.layouts, kMaxEchoedPathChars) + ": " + std::to_string(rows) +
+                       " layouts for " + std::to_string(shots) + " actions; give one per action");
+  }
+  ManyResult r;
+  try {
+    r = simulate_many(s, actions, layouts, {f.threads, static_cast<std::uint64_t>(f.seed), f.noise});
+  } catch (const InvalidArgument& e) {
+    // actions[k] is data row k (line k + 2) of the file.
+    const std::string& field = e.field();
+    if (field.rfind("actions[", 0) == 0) throw UsageError("--actions (data row k is actions[k]): " + std::string(e.what()));
+    if (field.rfind("layouts[", 0) == 0) throw UsageError("--layouts (data row k is layouts[k]): " + std::string(e.what()));
+    throw;
+  }
+  if (!f.outcomes.empty()) {
+    OutcomeCsv csv(f.outcomes, s);
+    for (int k = 0; k < r.shots; ++k) csv.add(k, r.outcome(k));
+    csv.close();
+  }
+  int miscues = 0, failures = 0;
+  long long events = 0;
+  std::vector<int> potted(s.balls.size(), 0);
+  for (std::size_t k = 0; k < shots; ++k) {
+    miscues += r.miscue[k];
+    failures += r.failure[k];
+    events += r.events[k];
+    for (std::size_t j = 0; j < s.balls.size(); ++j) potted[j] += r.pocketed[k * s.balls.size() + j];
+  }
+  const int simulated = r.shots - miscues - failures;
+  Report report("many: " + std::to_string(r.shots) + " shots (" + std::to_string(f.threads) + " threads" +
+                (f.noise ? ", noise, seed " + std::to_string(f.seed) : std::string(", no noise")) + ")");
+  report.add_count("shots", r.shots, "actions played");
+  report.add_count("simulated", simulated, "shots simulated");
+  report.add_count("miscues", miscues, "noisy tip offsets beyond the miscue limit (not simulated)");
+  report.add_count("failures", failures, "shots stopped at the event limit");
+  report.add("seconds", r.seconds, "s", "wall-clock time");
+  report.add("shots_per_second", r.shots_per_second, "1/s");
+  report.add("events_per_shot", simulated ? static_cast<double>(events) / simulated : 0.0, "");
+  if (f.json) {
+    nlohmann::ordered_json j = report.to_json();
+    nlohmann::ordered_json pocketed = nlohmann::ordered_json::object();
+    for (std::size_t i = 0; i < s.balls.size(); ++i) pocketed[std::to_string(s.balls[i].id)] = potted[i];
+    j["pocketed"] = pocketed;
+    if (!f.outcomes.empty()) j["outcomes"] = f.outcomes;
+    out << j.dump(2) << '\n';
+    return;
+  }
+  emit(report, false, out, err);
+  out << "  ball  name      pocketed (shots)\n";
+  for (std::size_t i = 0; i < s.balls.size(); ++i) {
+    char line[96];
+    std::snprintf(line, sizeof line, "  %4d  %-8s  %d\n", s.balls[i].id, s.balls[i].name.c_str(), potted[i]);
+    out << line;
+  }
+  if (!f.outcomes.empty()) out << "  per-shot outcomes written to " << f.outcomes << '\n';
+}
+
 }  // namespace
+
+Command add_many_command(CLI::App& app) {
+  auto flags = std::make_shared<ManyFlags>();
+  CLI::App* sub = app.add_subcommand(
+      "many",
+      "Plays N different cue actions on the scenario's table and balls (simulate_many), each from the\n"
+      "scenario's layout or its own (--layouts), across threads; deterministic whatever --threads is.\n"
+      "--actions CSV: header speed,aim_deg,elevation_deg,side,height (m/s, degrees, degrees, ball radii,\n"
+      "ball radii: the scenario's \"cue\" units), one row per shot, struck on the scenario's cue ball.\n"
+      "--layouts CSV: header x_ID,y_ID for every ball in the scenario's order (m), one row per action.\n"
+      "--noise adds the scenario's execution noise (seeded per shot by --seed, as batch does).\n"
+      "--outcomes writes every shot's outcome as CSV in batch --outcomes' format. At most 1e6 shots.");
+  sub->add_option("scenario", flags->scenario, "Scenario JSON file (default: the built-in 9-ball break)");
+  sub->add_option("--actions", flags->actions, "CSV of the shots' cue actions")->required();
+  sub->add_option("--layouts", flags->layouts, "CSV of the shots' ball positions");
+  sub->add_option("--outcomes", flags->outcomes, "Write each shot's outcome to this CSV file (one row per shot)");
+  sub->add_option("--threads", flags->threads, "Worker threads")->capture_default_str();
+  sub->add_option("--seed", flags->seed, "Random seed of the noise")->capture_default_str();
+  sub->add_flag("--noise", flags->noise, "Perturb each action with the scenario's execution noise");
+  sub->add_flag("--json", flags->json, "Print one JSON object");
+  return [flags](std::ostream& out, std::ostream& err) { run_many(*flags, out, err); };
+}
 
 Command add_simulate_command(CLI::App& app) {
   auto flags = std::make_shared<SimulateFlags>();

@@ -235,5 +235,71 @@ TEST(CliBatchOutcomes, AnUnwritableFileIsAUsageError) {
                      "--outcomes \"" + dir.path("no/such/dir.csv") + "\": cannot write the outcomes file");
 }
 
+// ------------------------------------------------------------------ many
+
+TEST(CliMany, ActionsAndLayoutsFromCsvGiveTheLibrarysOutcomes) {
+  TempDir dir;
+  const std::string scenario = dir.write("cut.json", kCutShot);
+  const std::string actions = dir.write("actions.csv",
+                                        "speed,aim_deg,elevation_deg,side,height\n"
+                                        "2.5,13.587,0,0,-0.2\n"
+                                        "2.0,-90,0,0,0\n"
+                                        "1.0, 90,5,0.1,0.1\r\n");
+  const std::string layouts = dir.write("layouts.csv",
+                                        "x_0,y_0,x_1,y_1,x_9,y_9\n"
+                                        "1.1,0.7,2.05,0.95,0.8,1.0\n"
+                                        "1.0,0.3,1.0,0.9,0.5,1.0\n"
+                                        "1.1,0.7,2.05,0.95,0.8,1.0\n");
+  const std::string one = dir.path("one.csv"), two = dir.path("two.csv");
+  const CliRun r = run_cli({"many", scenario, "--actions", actions, "--layouts", layouts, "--outcomes", one, "--noise",
+                            "--seed", "4", "--json"});
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_EQ(Json::parse(r.out).at("shots"), 3);
+  ASSERT_EQ(run_cli({"many", scenario, "--actions", actions, "--layouts", layouts, "--outcomes", two, "--noise", "--seed",
+                     "4", "--threads", "3"})
+                .status,
+            0);
+  const std::string text = read_text(one);
+  EXPECT_EQ(text, read_text(two));
+  const auto rows = read_csv(text);
+  ASSERT_EQ(rows.size(), 4u);
+  const std::vector<ShotAction> a{{2.5, 13.587, 0, 0, -0.2}, {2.0, -90, 0, 0, 0}, {1.0, 90, 5, 0.1, 0.1}};
+  const std::vector<double> l{1.1, 0.7, 2.05, 0.95, 0.8, 1.0, 1.0, 0.3, 1.0, 0.9, 0.5, 1.0, 1.1, 0.7, 2.05, 0.95, 0.8, 1.0};
+  const ManyResult m = simulate_many(scenario_from_json(kCutShot), a, l, {1, 4, true});
+  for (std::size_t k = 0; k < 3; ++k) {
+    EXPECT_EQ(rows[k + 1][5], std::to_string(m.events[k])) << k;
+    EXPECT_EQ(rows[k + 1][6], std::to_string(m.first_contact[k])) << k;
+    for (std::size_t j = 0; j < 3; ++j) {
+      EXPECT_EQ(std::strtod(rows[k + 1][9 + 6 * j].c_str(), nullptr), m.final_position[(k * 3 + j) * 2]) << k << j;
+      EXPECT_EQ(rows[k + 1][12 + 6 * j], std::to_string(m.cushions[k * 3 + j])) << k << j;
+    }
+  }
+  // Shot 1 went into the near rail first, then hit ball 1 (layout 1).
+  EXPECT_EQ(m.first_contact[1], 1);
+  EXPECT_EQ(m.cushions_before_contact[3], 1);
+}
+
+TEST(CliMany, BadFilesAndActionsAreOneLineNamingTheRow) {
+  TempDir dir;
+  const std::string bad_speed = dir.write("a.csv", "speed,aim_deg,elevation_deg,side,height\n2,0,0,0,0\n0,1,0,0,0\n");
+  expect_usage_error({"many", "--actions", bad_speed},
+                     "--actions (data row k is actions[k]): actions[1].speed = 0 is outside the allowed range [1e-06, 12]");
+  const std::string not_a_number = dir.write("b.csv", "speed,aim_deg,elevation_deg,side,height\n2,x,0,0,0\n");
+  expect_usage_error({"many", "--actions", not_a_number}, "line 2, column 2: \"x\" is not a number");
+  const std::string short_row = dir.write("c.csv", "speed,aim_deg,elevation_deg,side,height\n2,0,0,0\n");
+  expect_usage_error({"many", "--actions", short_row}, "line 2: 4 values, expected 5");
+  const std::string header = dir.write("d.csv", "speed,aim,elevation,side,height\n2,0,0,0,0\n");
+  expect_usage_error({"many", "--actions", header}, "line 1: the header must be \"speed,aim_deg,elevation_deg,side,height\"");
+  const std::string none = dir.write("e.csv", "speed,aim_deg,elevation_deg,side,height\n");
+  expect_usage_error({"many", "--actions", none}, "0 shots; allowed [1, 1000000]");
+  const std::string scenario = dir.write("two.json", R"({"balls": [{"id": 0, "position": [0.5, 0.5]}, {"id": 5, "position": [2.0, 0.5]}]})");
+  const std::string actions = dir.write("f.csv", "speed,aim_deg,elevation_deg,side,height\n2,0,0,0,0\n2,0,0,0,0\n");
+  const std::string overlap = dir.write("g.csv", "x_0,y_0,x_5,y_5\n0.5,0.5,2.0,0.5\n0.5,0.5,0.52,0.5\n");
+  expect_usage_error({"many", scenario, "--actions", actions, "--layouts", overlap},
+                     "--layouts (data row k is layouts[k]): layouts[1][1] overlaps layouts[1][0]");
+  const std::string one_layout = dir.write("h.csv", "x_0,y_0,x_5,y_5\n0.5,0.5,2.0,0.5\n");
+  expect_usage_error({"many", scenario, "--actions", actions, "--layouts", one_layout}, "1 layouts for 2 actions");
+}
+
 }  // namespace
 }  // namespace cueball

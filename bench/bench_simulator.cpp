@@ -1,8 +1,14 @@
 // Benchmarks of whole shots (src/simulator.cpp): the built-in 9-ball break,
 // a one-ball shot with several cushion hits, and batch throughput on one and
-// two threads (their ratio is the parallel speed-up). Counters report events
-// and microseconds per shot.
+// two threads (their ratio is the parallel speed-up), and simulate_many of
+// the same noisy breaks against simulate_batch (their throughput ratio, the
+// two run alternately in one process). Counters report events and
+// microseconds per shot.
 #include <benchmark/benchmark.h>
+
+#include <chrono>
+#include <numbers>
+#include <vector>
 
 #include "cueball/batch.hpp"
 #include "cueball/scenario.hpp"
@@ -58,5 +64,38 @@ void BM_BatchBreaks(benchmark::State& st) {
   st.counters["shots_per_second"] = benchmark::Counter(shots, benchmark::Counter::kIsRate);
 }
 BENCHMARK(BM_BatchBreaks)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->UseRealTime();
+
+// N noisy breaks through simulate_many (one action per shot, all the
+// break's nominal strike, the scenario's noise) against simulate_batch of
+// the same N breaks, alternately in each iteration: many_over_batch is the
+// ratio of their throughputs (1 = no cost for returning every outcome).
+std::vector<ShotAction> nominal_breaks(const Scenario& s, int n) {
+  const CueStrike nominal = resolved_strike(s, s.cue->strike);
+  const double degree = std::numbers::pi / 180.0;
+  return std::vector<ShotAction>(static_cast<std::size_t>(n),
+                                 ShotAction{nominal.speed, nominal.aim / degree, nominal.elevation / degree, 0.0, 0.0});
+}
+
+void BM_ManyVsBatchBreaks(benchmark::State& st) {
+  static const Scenario s = default_scenario();
+  const int threads = static_cast<int>(st.range(0));
+  constexpr int kShots = 512;
+  const std::vector<ShotAction> actions = nominal_breaks(s, kShots);
+  double batch_seconds = 0.0, many_seconds = 0.0, shots = 0.0;
+  for (auto _ : st) {
+    auto t0 = std::chrono::steady_clock::now();
+    benchmark::DoNotOptimize(simulate_batch(s, {kShots, threads, 1}).events);
+    auto t1 = std::chrono::steady_clock::now();
+    benchmark::DoNotOptimize(simulate_many(s, actions, {}, {threads, 1, true}).events.data());
+    auto t2 = std::chrono::steady_clock::now();
+    batch_seconds += std::chrono::duration<double>(t1 - t0).count();
+    many_seconds += std::chrono::duration<double>(t2 - t1).count();
+    shots += kShots;
+  }
+  st.counters["batch_shots_per_s"] = shots / batch_seconds;
+  st.counters["many_shots_per_s"] = shots / many_seconds;
+  st.counters["many_over_batch"] = batch_seconds / many_seconds;
+}
+BENCHMARK(BM_ManyVsBatchBreaks)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->UseRealTime();
 
 }  // namespace

@@ -159,6 +159,7 @@ int run(int argc, const char* const* argv, std::ostream& out, std::ostream& err)
   add("fit-cushion", add_fit_cushion_command(app));
   add("simulate", add_simulate_command(app));
   add("batch", add_batch_command(app));
+  add("many", add_many_command(app));
   add("view", add_view_command(app));
 
   // Every option that takes a value: an empty value (--v0 "") is an error,

@@ -1,4 +1,5 @@
 // cueball simulate, cueball batch: whole shots on a table (scenario.hpp).
+#include <charconv>
 #include <cmath>
 #include <cstdio>
 #include <fstream>
@@ -7,6 +8,7 @@
 #include <numbers>
 #include <optional>
 #include <sstream>
+#include <vector>
 
 #include "common.hpp"
 #include "cueball/batch.hpp"
@@ -77,10 +79,92 @@ void run_simulate(const SimulateFlags& f, std::ostream& out, std::ostream& err) 
   (void)err;
 }
 
+// ------------------------------------------------------------------ outcomes CSV
+
+// Per-shot outcomes as CSV (README, "Batches"): one header line, then one
+// row per shot in shot order:
+//   shot,miscue,failure,speed_reflected,elevation_reflected,events,first_contact,
+//   then for each ball, in the scenario's order, with its id:
+//   pocketed_ID,pocket_ID,x_ID,y_ID,cushions_before_contact_ID,cushions_ID
+// Flags 0/1; pocket the table's pocket index (-1 not pocketed); x, y the
+// final position in m, shortest round-trip decimal ("nan" when the shot was
+// not simulated); first_contact the id of the cue ball's first ball (-1).
+// Each row is written when its shot's block is merged, so memory does not
+// grow with the number of shots.
+class OutcomeCsv {
+ public:
+  OutcomeCsv(const std::string& path, const Scenario& s) : path_(path), file_(path, std::ios::binary) {
+    if (!file_) fail();
+    line_ = "shot,miscue,failure,speed_reflected,elevation_reflected,events,first_contact";
+    for (const SimulationBall& b : s.balls) {
+      const std::string id = std::to_string(b.id);
+      for (const char* column : {"pocketed_", "pocket_", "x_", "y_", "cushions_before_contact_", "cushions_"})
+        line_ += std::string(",") + column + id;
+    }
+    line_ += '\n';
+    write();
+  }
+
+  void add(int shot, const ShotOutcome& o) {
+    line_.clear();
+    number(shot);
+    flag(o.kind == ShotOutcome::Kind::miscue);
+    flag(o.kind == ShotOutcome::Kind::failure);
+    flag(o.speed_reflected);
+    flag(o.elevation_reflected);
+    number(o.events);
+    number(o.first_contact);
+    for (std::size_t j = 0; j < o.pocketed.size(); ++j) {
+      flag(o.pocketed[j] != 0);
+      number(o.pocket[j]);
+      real(o.final_position[j].x);
+      real(o.final_position[j].y);
+      number(o.cushions_before_contact[j]);
+      number(o.cushions[j]);
+    }
+    line_.back() = '\n';
+    write();
+  }
+
+  void close() {
+    if (!file_.flush()) fail();
+    file_.close();
+    if (!file_) fail();
+  }
+
+ private:
+  [[noreturn]] void fail() const {
+    throw UsageError("--outcomes " + quote_input(path_, kMaxEchoedPathChars) + ": cannot write the outcomes file");
+  }
+  void write() {
+    if (!file_.write(line_.data(), static_cast<std::streamsize>(line_.size()))) fail();
+  }
+  void flag(bool b) { line_ += b ? "1," : "0,"; }
+  void number(int v) {
+    line_ += std::to_string(v);
+    line_ += ',';
+  }
+  void real(double v) {
+    char buf[32];
+    if (std::isnan(v)) {
+      line_ += "nan,";
+      return;
+    }
+    const auto r = std::to_chars(buf, buf + sizeof buf, v);
+    line_.append(buf, r.ptr);
+    line_ += ',';
+  }
+
+  std::string path_;
+  std::ofstream file_;
+  std::string line_;
+};
+
 // ------------------------------------------------------------------ batch
 
 struct BatchFlags {
   std::string scenario;
+  std::string outcomes;
   double shots = 1000;  // read as a number so that 1e9 or 1e20 get the range error, not a parse error
   int threads = 1;
   long long seed = 0;
@@ -108,7 +192,12 @@ void run_batch(const BatchFlags& f, std::ostream& out, std::ostream& err) {
     check_flag("--sigma-height", *f.sigma_height, 0, 0.5, "sigma of the height offset, ball radii"),
         s.noise.height_offset = *f.sigma_height * radius;
 
-  const BatchResult r = simulate_batch(s, {static_cast<int>(f.shots), f.threads, static_cast<std::uint64_t>(f.seed)});
+  std::optional<OutcomeCsv> csv;
+  if (!f.outcomes.empty()) csv.emplace(f.outcomes, s);
+  const BatchResult r =
+      simulate_batch(s, {static_cast<int>(f.shots), f.threads, static_cast<std::uint64_t>(f.seed)},
+                     csv ? OutcomeSink([&](int shot, const ShotOutcome& o) { csv->add(shot, o); }) : OutcomeSink());
+  if (csv) csv->close();
   Report report("batch of " + std::to_string(r.shots) + " noisy shots (" + std::to_string(f.threads) + " threads, seed " +
                 std::to_string(f.seed) + ")");
   report.add_count("shots", r.shots, "requested");
@@ -147,9 +236,170 @@ void run_batch(const BatchFlags& f, std::ostream& out, std::ostream& err) {
                   b.pocketed_probability, b.mean_position.x, b.mean_position.y, b.position_std.x, b.position_std.y);
     out << line;
   }
+  if (csv) out << "  per-shot outcomes written to " << f.outcomes << '\n';
+}
+
+// ------------------------------------------------------------------ many
+
+// A CSV of numbers with a fixed header: the data rows, row-major.
+std::vector<double> read_number_csv(const std::string& path, const char* flag, const std::string& header,
+                                    std::size_t& rows) {
+  const std::string text = read_text_file(path, std::string("the ") + (flag + 2) + " file", kMaxResultFileBytes);
+  const std::string where = std::string(flag) + " " + quote_input(path, kMaxEchoedPathChars);
+  std::vector<double> values;
+  std::size_t columns = 1;
+  for (char c : header) columns += c == ',' ? 1 : 0;
+  rows = 0;
+  std::size_t line_no = 0, start = 0;
+  while (start < text.size()) {
+    std::size_t end = text.find('\n', start);
+    if (end == std::string::npos) end = text.size();
+    std::string line = text.substr(start, end - start);
+    start = end + 1;
+    ++line_no;
+    if (!line.empty() && line.back() == '\r') line.pop_back();
+    if (line_no == 1) {
+      if (line != header)
+        throw UsageError(where + " line 1: the header must be \"" + header + "\", got " + quote_input(line));
+      continue;
+    }
+    if (line.empty()) continue;
+    std::size_t column = 0, cell_start = 0;
+    while (true) {
+      const std::size_t comma = line.find(',', cell_start);
+      const std::string cell = line.substr(cell_start, comma == std::string::npos ? std::string::npos : comma - cell_start);
+      ++column;
+      double v = 0.0;
+      const char* first = cell.data();
+      while (first < cell.data() + cell.size() && *first == ' ') ++first;
+      const auto r = std::from_chars(first, cell.data() + cell.size(), v);
+      if (r.ec != std::errc() || r.ptr != cell.data() + cell.size())
+        throw UsageError(where + " line " + std::to_string(line_no) + ", column " + std::to_string(column) + ": " +
+                         quote_input(cell) + " is not a number");
+      values.push_back(v);
+      if (comma == std::string::npos) break;
+      cell_start = comma + 1;
+    }
+    if (column != columns)
+      throw UsageError(where + " line " + std::to_string(line_no) + ": " + std::to_string(column) + " values, expected " +
+                       std::to_string(columns) + " (" + header + ")");
+    ++rows;
+  }
+  if (line_no == 0) throw UsageError(where + ": the file is empty; it needs the header \"" + header + "\"");
+  return values;
+}
+
+struct ManyFlags {
+  std::string scenario;
+  std::string actions;
+  std::string layouts;
+  std::string outcomes;
+  int threads = 1;
+  long long seed = 0;
+  bool noise = false;
+  bool json = false;
+};
+
+void run_many(const ManyFlags& f, std::ostream& out, std::ostream& err) {
+  check_flag("--threads", f.threads, 1, kMaxBatchThreads, "worker threads");
+  check_flag("--seed", static_cast<double>(f.seed), 0, 9.0e15, "random seed");
+  const Scenario s = load_scenario(f.scenario);
+  std::size_t shots = 0;
+  const std::vector<double> numbers =
+      read_number_csv(f.actions, "--actions", "speed,aim_deg,elevation_deg,side,height", shots);
+  if (shots < 1 || shots > static_cast<std::size_t>(kMaxManyShots))
+    throw UsageError("--actions " + quote_input(f.actions, kMaxEchoedPathChars) + ": " + std::to_string(shots) +
+                     " shots; allowed [1, " + std::to_string(kMaxManyShots) + "]");
+  std::vector<ShotAction> actions(shots);
+  for (std::size_t k = 0; k < shots; ++k)
+    actions[k] = {numbers[5 * k], numbers[5 * k + 1], numbers[5 * k + 2], numbers[5 * k + 3], numbers[5 * k + 4]};
+  std::vector<double> layouts;
+  if (!f.layouts.empty()) {
+    std::string header;
+    for (const SimulationBall& b : s.balls)
+      header += (header.empty() ? "" : ",") + std::string("x_") + std::to_string(b.id) + ",y_" + std::to_string(b.id);
+    std::size_t rows = 0;
+    layouts = read_number_csv(f.layouts, "--layouts", header, rows);
+    if (rows != shots)
+      throw UsageError("--layouts " + quote_input(f.layouts, kMaxEchoedPathChars) + ": " + std::to_string(rows) +
+                       " layouts for " + std::to_string(shots) + " actions; give one per action");
+  }
+  ManyResult r;
+  try {
+    r = simulate_many(s, actions, layouts, {f.threads, static_cast<std::uint64_t>(f.seed), f.noise});
+  } catch (const InvalidArgument& e) {
+    // actions[k] is data row k (line k + 2) of the file.
+    const std::string& field = e.field();
+    if (field.rfind("actions[", 0) == 0) throw UsageError("--actions (data row k is actions[k]): " + std::string(e.what()));
+    if (field.rfind("layouts[", 0) == 0) throw UsageError("--layouts (data row k is layouts[k]): " + std::string(e.what()));
+    throw;
+  }
+  if (!f.outcomes.empty()) {
+    OutcomeCsv csv(f.outcomes, s);
+    for (int k = 0; k < r.shots; ++k) csv.add(k, r.outcome(k));
+    csv.close();
+  }
+  int miscues = 0, failures = 0;
+  long long events = 0;
+  std::vector<int> potted(s.balls.size(), 0);
+  for (std::size_t k = 0; k < shots; ++k) {
+    miscues += r.miscue[k];
+    failures += r.failure[k];
+    events += r.events[k];
+    for (std::size_t j = 0; j < s.balls.size(); ++j) potted[j] += r.pocketed[k * s.balls.size() + j];
+  }
+  const int simulated = r.shots - miscues - failures;
+  Report report("many: " + std::to_string(r.shots) + " shots (" + std::to_string(f.threads) + " threads" +
+                (f.noise ? ", noise, seed " + std::to_string(f.seed) : std::string(", no noise")) + ")");
+  report.add_count("shots", r.shots, "actions played");
+  report.add_count("simulated", simulated, "shots simulated");
+  report.add_count("miscues", miscues, "noisy tip offsets beyond the miscue limit (not simulated)");
+  report.add_count("failures", failures, "shots stopped at the event limit");
+  report.add("seconds", r.seconds, "s", "wall-clock time");
+  report.add("shots_per_second", r.shots_per_second, "1/s");
+  report.add("events_per_shot", simulated ? static_cast<double>(events) / simulated : 0.0, "");
+  if (f.json) {
+    nlohmann::ordered_json j = report.to_json();
+    nlohmann::ordered_json pocketed = nlohmann::ordered_json::object();
+    for (std::size_t i = 0; i < s.balls.size(); ++i) pocketed[std::to_string(s.balls[i].id)] = potted[i];
+    j["pocketed"] = pocketed;
+    if (!f.outcomes.empty()) j["outcomes"] = f.outcomes;
+    out << j.dump(2) << '\n';
+    return;
+  }
+  emit(report, false, out, err);
+  out << "  ball  name      pocketed (shots)\n";
+  for (std::size_t i = 0; i < s.balls.size(); ++i) {
+    char line[96];
+    std::snprintf(line, sizeof line, "  %4d  %-8s  %d\n", s.balls[i].id, s.balls[i].name.c_str(), potted[i]);
+    out << line;
+  }
+  if (!f.outcomes.empty()) out << "  per-shot outcomes written to " << f.outcomes << '\n';
 }
 
 }  // namespace
+
+Command add_many_command(CLI::App& app) {
+  auto flags = std::make_shared<ManyFlags>();
+  CLI::App* sub = app.add_subcommand(
+      "many",
+      "Plays N different cue actions on the scenario's table and balls (simulate_many), each from the\n"
+      "scenario's layout or its own (--layouts), across threads; deterministic whatever --threads is.\n"
+      "--actions CSV: header speed,aim_deg,elevation_deg,side,height (m/s, degrees, degrees, ball radii,\n"
+      "ball radii: the scenario's \"cue\" units), one row per shot, struck on the scenario's cue ball.\n"
+      "--layouts CSV: header x_ID,y_ID for every ball in the scenario's order (m), one row per action.\n"
+      "--noise adds the scenario's execution noise (seeded per shot by --seed, as batch does).\n"
+      "--outcomes writes every shot's outcome as CSV in batch --outcomes' format. At most 1e6 shots.");
+  sub->add_option("scenario", flags->scenario, "Scenario JSON file (default: the built-in 9-ball break)");
+  sub->add_option("--actions", flags->actions, "CSV of the shots' cue actions")->required();
+  sub->add_option("--layouts", flags->layouts, "CSV of the shots' ball positions");
+  sub->add_option("--outcomes", flags->outcomes, "Write each shot's outcome to this CSV file (one row per shot)");
+  sub->add_option("--threads", flags->threads, "Worker threads")->capture_default_str();
+  sub->add_option("--seed", flags->seed, "Random seed of the noise")->capture_default_str();
+  sub->add_flag("--noise", flags->noise, "Perturb each action with the scenario's execution noise");
+  sub->add_flag("--json", flags->json, "Print one JSON object");
+  return [flags](std::ostream& out, std::ostream& err) { run_many(*flags, out, err); };
+}
 
 Command add_simulate_command(CLI::App& app) {
   auto flags = std::make_shared<SimulateFlags>();
@@ -178,7 +428,8 @@ Command add_batch_command(CLI::App& app) {
       "probability and final-position spread, and the throughput. A noisy speed above the 12 m/s cap\n"
       "or an elevation below 0 is reflected at the limit (2 cap - v, -e) and counted; a noisy tip\n"
       "offset beyond the miscue limit (0.5 R) is a miscue, counted and not simulated. Memory does\n"
-      "not grow with --shots (at most 1e8).");
+      "not grow with --shots (at most 1e8). --outcomes FILE also writes every shot's outcome as CSV\n"
+      "(pocketing, pocket, final position, first ball contacted, cushion contacts per ball; README).");
   sub->add_option("scenario", flags->scenario, "Scenario JSON file (default: the built-in 9-ball break)");
   sub->add_option("--shots", flags->shots, "Number of shots, [1, 1e8]")->capture_default_str();
   sub->add_option("--threads", flags->threads, "Worker threads")->capture_default_str();
@@ -188,6 +439,7 @@ Command add_batch_command(CLI::App& app) {
   sub->add_option("--sigma-elevation", flags->sigma_elevation, "Sigma of the cue elevation, degrees");
   sub->add_option("--sigma-side", flags->sigma_side, "Sigma of the side tip offset, ball radii");
   sub->add_option("--sigma-height", flags->sigma_height, "Sigma of the height tip offset, ball radii");
+  sub->add_option("--outcomes", flags->outcomes, "Write each shot's outcome to this CSV file (one row per shot)");
   sub->add_flag("--json", flags->json, "Print one JSON object");
   return [flags](std::ostream& out, std::ostream& err) { run_batch(*flags, out, err); };
 }

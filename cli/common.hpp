@@ -66,6 +66,7 @@ Command add_figures_command(CLI::App& app);
 Command add_fit_cushion_command(CLI::App& app);
 Command add_simulate_command(CLI::App& app);
 Command add_batch_command(CLI::App& app);
+Command add_many_command(CLI::App& app);
 Command add_view_command(CLI::App& app);
 
 /// Prints the report, then its warnings on stderr.

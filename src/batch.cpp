@@ -16,6 +16,7 @@
 #include <cmath>
 #include <condition_variable>
 #include <exception>
+#include <limits>
 #include <map>
 #include <mutex>
 #include <numbers>
@@ -152,10 +153,14 @@ struct BatchContext {
   std::uint64_t seed;
 };
 
+// The standard normals of shot k of a batch seeded `seed`.
+std::array<double, 5> shot_normals(std::uint64_t seed, int shot) {
+  return standard_normals(splitmix64(seed ^ splitmix64(static_cast<std::uint64_t>(shot))));
+}
+
 void play_shot(const BatchContext& c, int shot, ShotRecord& out) {
   const Scenario& s = c.scenario;
-  const CueStrike noisy = with_noise(
-      s.cue->strike, s.noise, standard_normals(splitmix64(c.seed ^ splitmix64(static_cast<std::uint64_t>(shot)))));
+  const CueStrike noisy = with_noise(s.cue->strike, s.noise, shot_normals(c.seed, shot));
   const LimitedStrike limited = reflect_into_limits(noisy);
   out.speed_reflected = limited.speed_reflected;
   out.elevation_reflected = limited.elevation_reflected;
@@ -169,12 +174,7 @@ void play_shot(const BatchContext& c, int shot, ShotRecord& out) {
   try {
     // The scenario was validated once in simulate_batch.
     const SimulationResult r = simulate_unchecked(s.table, balls, s.settings);
-    out.kind = ShotRecord::Kind::simulated;
-    out.events = static_cast<int>(r.events.size());
-    for (std::size_t i = 0; i < r.balls.size() && i < out.pocketed.size(); ++i) {
-      out.pocketed[i] = r.balls[i].pocketed ? 1 : 0;
-      out.final_position[i] = r.balls[i].final_state.position;
-    }
+    outcome_from_result(r, s.cue->ball, out);
   } catch (const SimulationError&) {
     out.kind = ShotRecord::Kind::failure;
   }
@@ -200,7 +200,12 @@ LimitedStrike reflect_into_limits(const CueStrike& strike) {
 
 namespace detail {
 
-BatchResult run_batch(int shots, int threads, std::size_t n, const PlayShot& play) {
+BatchResult run_batch(int shots, int threads, std::size_t n, const PlayShot& play, const OutcomeSink& sink) {
+  // A finished block: its reduction and, for the sink, its shots' outcomes.
+  struct Finished {
+    Partial part;
+    std::vector<ShotOutcome> outcomes;
+  };
   const int block_count = (shots + kBatchBlockShots - 1) / kBatchBlockShots;
   // Finished blocks wait here until every block before them is merged; a
   // worker that runs ahead by more than `window` blocks waits for the merge.
@@ -210,16 +215,15 @@ BatchResult run_batch(int shots, int threads, std::size_t n, const PlayShot& pla
   std::mutex mutex;
   std::condition_variable merged_more;
   int merged = 0;                    // blocks merged into `total` (under mutex)
-  std::map<int, Partial> finished;   // blocks done, not yet merged (under mutex)
+  std::map<int, Finished> finished;  // blocks done, not yet merged (under mutex)
   Partial total(n);
   int error_shot = INT_MAX;          // lowest failing shot (under mutex)
   std::exception_ptr error;
 
   const auto work = [&] {
     ShotRecord record;
-    record.pocketed.assign(n, 0);
-    record.final_position.assign(n, Vec2{});
     Partial part(n);
+    std::vector<ShotOutcome> outcomes;  // the block's, when there is a sink
     while (!stop.load()) {
       // Blocks are taken in increasing order, so when shot k fails every
       // block before k's has been taken and will be finished: the lowest
@@ -233,10 +237,9 @@ BatchResult run_batch(int shots, int threads, std::size_t n, const PlayShot& pla
         if (stop.load() && first >= error_shot) return;  // only earlier shots can matter now
       }
       part.clear();
+      if (sink) outcomes.resize(static_cast<std::size_t>(last - first));
       for (int k = first; k < last; ++k) {
-        record.kind = ShotRecord::Kind::simulated;
-        record.speed_reflected = record.elevation_reflected = false;
-        record.events = 0;
+        record.reset(n);
         try {
           play(k, record);
         } catch (...) {
@@ -250,13 +253,20 @@ BatchResult run_batch(int shots, int threads, std::size_t n, const PlayShot& pla
           return;
         }
         part.add(record);
+        if (sink) outcomes[static_cast<std::size_t>(k - first)] = record;
       }
       const std::lock_guard<std::mutex> lock(mutex);
       if (stop.load()) continue;  // the result is not needed any more
-      finished.emplace(b, part);
+      finished.emplace(b, Finished{part, sink ? std::move(outcomes) : std::vector<ShotOutcome>{}});
+      outcomes.clear();
       bool advanced = false;
       for (auto it = finished.begin(); it != finished.end() && it->first == merged; it = finished.erase(it)) {
-        total.merge(it->second);
+        total.merge(it->second.part);
+        if (sink) {
+          const int block_first = it->first * kBatchBlockShots;
+          for (std::size_t i = 0; i < it->second.outcomes.size(); ++i)
+            sink(block_first + static_cast<int>(i), it->second.outcomes[i]);
+        }
         ++merged;
         advanced = true;
       }
@@ -321,7 +331,7 @@ BatchResult run_batch(int shots, int threads, std::size_t n, const PlayShot& pla
 
 }  // namespace detail
 
-BatchResult simulate_batch(const Scenario& s, const BatchOptions& options) {
+BatchResult simulate_batch(const Scenario& s, const BatchOptions& options, const OutcomeSink& on_outcome) {
   if (options.shots < 1 || options.shots > kMaxBatchShots)
     throw InvalidArgument("shots", static_cast<double>(options.shots), "[1, " + format_number(kMaxBatchShots) + "]",
                           "number of shots");
@@ -337,11 +347,238 @@ BatchResult simulate_batch(const Scenario& s, const BatchOptions& options) {
   const auto start = std::chrono::steady_clock::now();
   const BatchContext context{s, options.seed};
   BatchResult r = detail::run_batch(options.shots, options.threads, s.balls.size(),
-                                    [&](int shot, ShotRecord& record) { play_shot(context, shot, record); });
+                                    [&](int shot, ShotRecord& record) { play_shot(context, shot, record); },
+                                    on_outcome);
   r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   r.shots_per_second = r.seconds > 0.0 ? options.shots / r.seconds : 0.0;
   for (std::size_t i = 0; i < r.balls.size(); ++i) r.balls[i].id = s.balls[i].id;
   return r;
+}
+
+// ------------------------------------------------------------------ outcomes
+
+void ShotOutcome::reset(std::size_t balls) {
+  kind = Kind::simulated;
+  speed_reflected = elevation_reflected = false;
+  events = 0;
+  first_contact = -1;
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  pocketed.assign(balls, 0);
+  pocket.assign(balls, -1);
+  final_position.assign(balls, Vec2{nan, nan});
+  cushions_before_contact.assign(balls, 0);
+  cushions.assign(balls, 0);
+}
+
+void outcome_from_result(const SimulationResult& r, int cue_ball, ShotOutcome& out) {
+  const std::size_t n = r.balls.size();
+  out.kind = ShotOutcome::Kind::simulated;
+  out.first_contact = -1;
+  out.pocketed.assign(n, 0);
+  out.pocket.assign(n, -1);
+  out.final_position.resize(n);
+  out.cushions_before_contact.assign(n, 0);
+  out.cushions.assign(n, 0);
+  for (std::size_t i = 0; i < n; ++i) {
+    const BallTrajectory& b = r.balls[i];
+    out.pocketed[i] = b.pocketed ? 1 : 0;
+    out.pocket[i] = b.pocketed ? b.pocket : -1;
+    out.final_position[i] = b.final_state.position;
+  }
+  const auto index_of = [&](int id) {
+    for (std::size_t i = 0; i < n; ++i)
+      if (r.balls[i].id == id) return i;
+    return n;
+  };
+  int events = 0;
+  bool contacted = false;
+  for (const Event& e : r.events) {
+    if (e.type == EventType::cue_strike) continue;
+    ++events;
+    if (e.type == EventType::ball_cushion) {
+      const std::size_t i = index_of(e.ball);
+      if (i == n) continue;
+      ++out.cushions[i];
+      if (!contacted) ++out.cushions_before_contact[i];
+    } else if (e.type == EventType::ball_ball && !contacted && (e.ball == cue_ball || e.other == cue_ball)) {
+      contacted = true;
+      out.first_contact = e.ball == cue_ball ? e.other : e.ball;
+    }
+  }
+  out.events = events;
+}
+
+// ------------------------------------------------------------------ many different shots
+
+CueStrike to_strike(const ShotAction& a, double radius) {
+  constexpr double degree = std::numbers::pi / 180.0;
+  return CueStrike{a.speed, a.aim_deg * degree, a.elevation_deg * degree, a.side * radius, a.height * radius};
+}
+
+ShotOutcome ManyResult::outcome(int shot) const {
+  if (shot < 0 || shot >= shots)
+    throw InvalidArgument("shot", static_cast<double>(shot), "[0, " + std::to_string(shots - 1) + "]", "row of the result");
+  const auto n = static_cast<std::size_t>(balls);
+  const auto k = static_cast<std::size_t>(shot);
+  ShotOutcome o;
+  o.reset(n);
+  o.kind = failure[k] ? ShotOutcome::Kind::failure
+           : miscue[k] ? ShotOutcome::Kind::miscue
+                       : ShotOutcome::Kind::simulated;
+  o.speed_reflected = speed_reflected[k] != 0;
+  o.elevation_reflected = elevation_reflected[k] != 0;
+  o.events = events[k];
+  o.first_contact = first_contact[k];
+  for (std::size_t j = 0; j < n; ++j) {
+    const std::size_t e = k * n + j;
+    o.pocketed[j] = static_cast<char>(pocketed[e]);
+    o.pocket[j] = pocket[e];
+    o.final_position[j] = {final_position[2 * e], final_position[2 * e + 1]};
+    o.cushions_before_contact[j] = cushions_before_contact[e];
+    o.cushions[j] = cushions[e];
+  }
+  return o;
+}
+
+namespace {
+
+std::string action_field(std::size_t k, const char* what) { return "actions[" + std::to_string(k) + "]." + what; }
+
+std::string layout_field(std::size_t k, std::size_t j) {
+  return "layouts[" + std::to_string(k) + "][" + std::to_string(j) + "]";
+}
+
+void check_action(std::size_t k, const ShotAction& a, const BallParameters& ball) {
+  const auto in = [&](const char* name, double v, double lo, double hi, const char* meaning) {
+    if (!(std::isfinite(v) && v >= lo && v <= hi))
+      throw InvalidArgument(action_field(k, name), v, "[" + format_number(lo) + ", " + format_number(hi) + "]", meaning);
+  };
+  // The scenario JSON's ranges for "cue" (scenario.cpp, read_cue).
+  in("speed", a.speed, 1e-6, kMaxCueSpeed, "cue speed, m/s");
+  in("aim_deg", a.aim_deg, -360.0, 360.0, "aim direction from +x, degrees");
+  in("elevation_deg", a.elevation_deg, 0.0, 89.0, "cue elevation, degrees");
+  in("side", a.side, -kMiscueOffsetFraction, kMiscueOffsetFraction, "tip offset to the right, ball radii");
+  in("height", a.height, -kMiscueOffsetFraction, kMiscueOffsetFraction, "tip offset above the centre, ball radii");
+  if (!cue_tip_offset_ok(to_strike(a, ball.radius), ball))
+    throw InvalidArgument(action_field(k, "tip_offset"), std::hypot(a.side, a.height),
+                          "[0, " + format_number(kMiscueOffsetFraction) + "]",
+                          "sqrt(side^2 + height^2), ball radii; beyond it the tip slips (a miscue)");
+}
+
+void check_layout(const Table& table, std::span<const double> layout, std::size_t k, double radius) {
+  const std::size_t n = layout.size() / 2;
+  for (std::size_t j = 0; j < n; ++j) {
+    const Vec2 p{layout[2 * j], layout[2 * j + 1]};
+    if (!(std::isfinite(p.x) && std::isfinite(p.y)) || !ball_on_table(table, p, radius))
+      throw InvalidArgument(layout_field(k, j), layout_field(k, j) + " = (" + format_number(p.x) + ", " +
+                                                    format_number(p.y) +
+                                                    ") m is off the playing surface or inside a cushion");
+    for (std::size_t i = 0; i < j; ++i) {
+      const double d = norm(p - Vec2{layout[2 * i], layout[2 * i + 1]});
+      if (d < 2 * radius - kPlacementTolerance)
+        throw InvalidArgument(layout_field(k, j), layout_field(k, j) + " overlaps " + layout_field(k, i) +
+                                                      ": centres " + format_number(d) + " m apart, allowed >= 2R = " +
+                                                      format_number(2 * radius) + " m");
+    }
+  }
+}
+
+}  // namespace
+
+ManyResult simulate_many(const Scenario& s, std::span<const ShotAction> actions, std::span<const double> layouts,
+                         const ManyOptions& options) {
+  const auto start = std::chrono::steady_clock::now();
+  if (actions.empty() || actions.size() > static_cast<std::size_t>(kMaxManyShots))
+    throw InvalidArgument("actions", static_cast<double>(actions.size()), "[1, " + format_number(kMaxManyShots) + "]",
+                          "number of shots (rows of actions)");
+  if (options.threads < 1 || options.threads > kMaxBatchThreads)
+    throw InvalidArgument("threads", static_cast<double>(options.threads),
+                          "[1, " + std::to_string(kMaxBatchThreads) + "]", "worker threads");
+  validate_simulation_input(s.table, s.balls, s.settings);  // once; each shot then runs unchecked
+  if (options.noise) validate(s.noise);
+  const BallParameters& ball = s.settings.parameters.ball;
+  const std::size_t shots = actions.size(), n = s.balls.size();
+  const int cue_id = s.cue ? s.cue->ball : 0;
+  std::size_t cue = n;
+  for (std::size_t j = 0; j < n; ++j)
+    if (s.balls[j].id == cue_id) cue = j;
+  if (cue == n)
+    throw InvalidArgument(s.cue ? "cue.ball" : "balls",
+                          "the scenario has no ball with id " + std::to_string(cue_id) + " to strike");
+  for (std::size_t k = 0; k < shots; ++k) check_action(k, actions[k], ball);
+  if (!layouts.empty() && layouts.size() != shots * n * 2)
+    throw InvalidArgument("layouts", static_cast<double>(layouts.size()),
+                          std::to_string(shots * n * 2) + " (shots " + std::to_string(shots) + " x balls " +
+                              std::to_string(n) + " x 2) or 0",
+                          "number of coordinates");
+  for (std::size_t k = 0; k < shots && !layouts.empty(); ++k)
+    check_layout(s.table, layouts.subspan(k * n * 2, n * 2), k, ball.radius);
+
+  ManyResult out;
+  out.shots = static_cast<int>(shots);
+  out.balls = static_cast<int>(n);
+  for (const SimulationBall& b : s.balls) out.ids.push_back(b.id);
+  out.pocketed.assign(shots * n, 0);
+  out.pocket.assign(shots * n, -1);
+  out.final_position.assign(shots * n * 2, 0.0);
+  out.first_contact.assign(shots, -1);
+  out.cushions_before_contact.assign(shots * n, 0);
+  out.cushions.assign(shots * n, 0);
+  out.events.assign(shots, 0);
+  out.miscue.assign(shots, 0);
+  out.failure.assign(shots, 0);
+  out.speed_reflected.assign(shots, 0);
+  out.elevation_reflected.assign(shots, 0);
+
+  // Each shot writes its own rows only: no two threads touch one element.
+  const auto store = [&](std::size_t k, const ShotOutcome& o) {
+    out.miscue[k] = o.kind == ShotOutcome::Kind::miscue ? 1 : 0;
+    out.failure[k] = o.kind == ShotOutcome::Kind::failure ? 1 : 0;
+    out.speed_reflected[k] = o.speed_reflected ? 1 : 0;
+    out.elevation_reflected[k] = o.elevation_reflected ? 1 : 0;
+    out.events[k] = o.events;
+    out.first_contact[k] = o.first_contact;
+    for (std::size_t j = 0; j < n; ++j) {
+      const std::size_t e = k * n + j;
+      out.pocketed[e] = o.pocketed[j] ? 1 : 0;
+      out.pocket[e] = o.pocket[j];
+      out.final_position[2 * e] = o.final_position[j].x;
+      out.final_position[2 * e + 1] = o.final_position[j].y;
+      out.cushions_before_contact[e] = o.cushions_before_contact[j];
+      out.cushions[e] = o.cushions[j];
+    }
+  };
+  const auto play = [&](int shot, ShotRecord& record) {
+    const auto k = static_cast<std::size_t>(shot);
+    CueStrike strike = to_strike(actions[k], ball.radius);
+    if (options.noise) {
+      const LimitedStrike limited = reflect_into_limits(with_noise(strike, s.noise, shot_normals(options.seed, shot)));
+      strike = limited.strike;
+      record.speed_reflected = limited.speed_reflected;
+      record.elevation_reflected = limited.elevation_reflected;
+      if (!cue_tip_offset_ok(strike, ball)) {
+        record.kind = ShotRecord::Kind::miscue;
+        store(k, record);
+        return;
+      }
+    }
+    std::vector<SimulationBall> balls = s.balls;
+    if (!layouts.empty())
+      for (std::size_t j = 0; j < n; ++j)
+        balls[j].state.position = {layouts[(k * n + j) * 2], layouts[(k * n + j) * 2 + 1]};
+    balls[cue].state = strike_ball(strike, balls[cue].state.position, ball, s.cue_parameters);
+    try {
+      const SimulationResult r = simulate_unchecked(s.table, balls, s.settings);
+      outcome_from_result(r, cue_id, record);
+    } catch (const SimulationError&) {
+      record.kind = ShotRecord::Kind::failure;
+    }
+    store(k, record);
+  };
+  detail::run_batch(out.shots, options.threads, n, play);
+  out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  out.shots_per_second = out.seconds > 0.0 ? out.shots / out.seconds : 0.0;
+  return out;
 }
 
 }  // namespace cueball

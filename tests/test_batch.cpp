@@ -7,6 +7,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <atomic>
 #include <chrono>
 #include <cmath>
@@ -14,6 +15,7 @@
 #include <cstring>
 #include <limits>
 #include <new>
+#include <span>
 #include <numbers>
 #include <stdexcept>
 #include <string>
@@ -371,6 +373,271 @@ TEST(BatchNoise, TipOffsetsBeyondTheMiscueLimitAreTheOnlyMiscues) {
   EXPECT_EQ(r.simulated + r.miscues + r.failures, 128);
   EXPECT_EQ(r.speed_reflected, 0);
   EXPECT_EQ(r.elevation_reflected, 0);
+}
+
+// ------------------------------------------------------------------ per-shot outcomes
+
+void expect_same_outcome(const ShotOutcome& a, const ShotOutcome& b, const std::string& what) {
+  EXPECT_EQ(a.kind, b.kind) << what;
+  EXPECT_EQ(a.speed_reflected, b.speed_reflected) << what;
+  EXPECT_EQ(a.elevation_reflected, b.elevation_reflected) << what;
+  EXPECT_EQ(a.events, b.events) << what;
+  EXPECT_EQ(a.first_contact, b.first_contact) << what;
+  EXPECT_EQ(a.pocketed, b.pocketed) << what;
+  EXPECT_EQ(a.pocket, b.pocket) << what;
+  EXPECT_EQ(a.cushions_before_contact, b.cushions_before_contact) << what;
+  EXPECT_EQ(a.cushions, b.cushions) << what;
+  ASSERT_EQ(a.final_position.size(), b.final_position.size()) << what;
+  // Bit for bit (NaN for a shot not simulated).
+  EXPECT_EQ(0, std::memcmp(a.final_position.data(), b.final_position.data(), a.final_position.size() * sizeof(Vec2)))
+      << what;
+}
+
+// Every array of two results, bit for bit.
+void expect_identical(const ManyResult& a, const ManyResult& b, const std::string& what) {
+  EXPECT_EQ(a.shots, b.shots) << what;
+  EXPECT_EQ(a.balls, b.balls) << what;
+  EXPECT_EQ(a.ids, b.ids) << what;
+  EXPECT_EQ(a.pocketed, b.pocketed) << what;
+  EXPECT_EQ(a.pocket, b.pocket) << what;
+  ASSERT_EQ(a.final_position.size(), b.final_position.size()) << what;
+  EXPECT_EQ(0, std::memcmp(a.final_position.data(), b.final_position.data(), a.final_position.size() * sizeof(double)))
+      << what;
+  EXPECT_EQ(a.first_contact, b.first_contact) << what;
+  EXPECT_EQ(a.cushions_before_contact, b.cushions_before_contact) << what;
+  EXPECT_EQ(a.cushions, b.cushions) << what;
+  EXPECT_EQ(a.events, b.events) << what;
+  EXPECT_EQ(a.miscue, b.miscue) << what;
+  EXPECT_EQ(a.failure, b.failure) << what;
+  EXPECT_EQ(a.speed_reflected, b.speed_reflected) << what;
+  EXPECT_EQ(a.elevation_reflected, b.elevation_reflected) << what;
+}
+
+// N varied actions around the break: speeds 2-10 m/s, aims across the rack,
+// some elevation, side and height.
+std::vector<ShotAction> varied_actions(int n) {
+  std::vector<ShotAction> a;
+  for (int k = 0; k < n; ++k) {
+    const auto u = [&](int i) { return unit(static_cast<std::uint64_t>(16 * k + i)); };
+    a.push_back({2.0 + 8.0 * u(0), -8.0 + 16.0 * u(1), 10.0 * u(2), -0.3 + 0.6 * u(3), -0.3 + 0.6 * u(4)});
+  }
+  return a;
+}
+
+// The scenario `s` with its strike replaced by `action` (aimed, not targeted).
+Scenario with_action(Scenario s, const ShotAction& action) {
+  s.cue->target.reset();
+  s.cue->strike = to_strike(action, s.settings.parameters.ball.radius);
+  return s;
+}
+
+TEST(ManyOutcomes, EachShotIsTheSingleRunOfItsAction) {
+  const Scenario s = default_scenario();
+  const std::vector<ShotAction> actions = varied_actions(12);
+  const ManyResult many = simulate_many(s, actions, {}, {});
+  ASSERT_EQ(many.shots, 12);
+  ASSERT_EQ(many.balls, 10);
+  for (std::size_t j = 0; j < s.balls.size(); ++j) EXPECT_EQ(many.ids[j], s.balls[j].id) << j;  // the scenario's order
+  int contacts = 0, pocketed = 0;
+  for (int k = 0; k < many.shots; ++k) {
+    const SimulationResult r = run_scenario(with_action(s, actions[static_cast<std::size_t>(k)]));
+    ShotOutcome single;
+    outcome_from_result(r, 0, single);
+    EXPECT_EQ(single.events, static_cast<int>(r.events.size()) - 1);  // the cue strike not counted
+    expect_same_outcome(many.outcome(k), single, "shot " + std::to_string(k));
+    contacts += single.first_contact >= 0 ? 1 : 0;
+    for (char p : single.pocketed) pocketed += p;
+  }
+  // The actions are varied enough to exercise the fields.
+  EXPECT_GT(contacts, 3);
+  EXPECT_GT(pocketed, 0);
+}
+
+TEST(ManyOutcomes, BitIdenticalWithOneTwoAndFourThreads) {
+  Scenario s = default_scenario();
+  s.noise.height_offset = 0.3 * s.settings.parameters.ball.radius;  // some miscues
+  s.noise.elevation = 0.02;                                         // some reflected elevations
+  const std::vector<ShotAction> actions = varied_actions(150);      // two full blocks and a partial one
+  for (bool noise : {false, true}) {
+    const ManyResult one = simulate_many(s, actions, {}, {1, 9, noise});
+    if (noise) {
+      EXPECT_GT(std::count(one.miscue.begin(), one.miscue.end(), 1), 0);
+      EXPECT_GT(std::count(one.elevation_reflected.begin(), one.elevation_reflected.end(), 1), 0);
+    } else {
+      EXPECT_EQ(std::count(one.miscue.begin(), one.miscue.end(), 1), 0);
+    }
+    for (int threads : {2, 4})
+      expect_identical(one, simulate_many(s, actions, {}, {threads, 9, noise}),
+                       std::to_string(threads) + " threads, noise " + std::to_string(noise));
+  }
+}
+
+TEST(ManyOutcomes, NoisyCopiesOfOneActionAreTheBatchsShots) {
+  // An aimed (not targeted) strike: the action is exactly the scenario's.
+  const Scenario s = scenario_from_json(R"({"table": "pool_9ft",
+      "balls": [{"id": 0, "position": [1.1, 0.7]}, {"id": 1, "position": [2.05, 0.95]}, {"id": 9, "position": [0.8, 1.0]}],
+      "cue": {"ball": 0, "aim_deg": 13.587, "speed": 2.5, "height": -0.2},
+      "noise": {"speed": 0.05, "aim_deg": 0.25, "side": 0.02, "height": 0.3}})");
+  const int shots = 200;
+  std::vector<ShotOutcome> streamed;
+  const BatchResult batch = simulate_batch(s, {shots, 2, 5}, [&](int shot, const ShotOutcome& outcome) {
+    EXPECT_EQ(shot, static_cast<int>(streamed.size()));  // in shot order
+    streamed.push_back(outcome);
+  });
+  ASSERT_EQ(static_cast<int>(streamed.size()), shots);
+  const std::vector<ShotAction> same(shots, ShotAction{2.5, 13.587, 0.0, 0.0, -0.2});
+  const ManyResult many = simulate_many(s, same, {}, {2, 5, true});
+  for (int k = 0; k < shots; ++k) expect_same_outcome(many.outcome(k), streamed[static_cast<std::size_t>(k)], std::to_string(k));
+  // And the batch's aggregates are those of the streamed outcomes.
+  int simulated = 0, miscues = 0, potted = 0;
+  long long events = 0;
+  for (const ShotOutcome& x : streamed) {
+    miscues += x.kind == ShotOutcome::Kind::miscue ? 1 : 0;
+    if (x.kind != ShotOutcome::Kind::simulated) continue;
+    ++simulated;
+    events += x.events;
+    potted += x.pocketed[1];
+  }
+  EXPECT_GT(miscues, 0);
+  EXPECT_EQ(batch.miscues, miscues);
+  EXPECT_EQ(batch.simulated, simulated);
+  EXPECT_EQ(batch.events, events);
+  EXPECT_DOUBLE_EQ(batch.balls[1].pocketed_probability, static_cast<double>(potted) / simulated);
+}
+
+// Cue ball 0 and object ball 5 on the pool table (2.54 x 1.27 m).
+Scenario two_balls() {
+  return scenario_from_json(R"({"table": "pool_9ft",
+      "balls": [{"id": 0, "position": [0.5, 0.5]}, {"id": 5, "position": [2.0, 0.5]}],
+      "cue": {"ball": 0, "aim_deg": 0, "speed": 2.0}})");
+}
+
+TEST(ManyOutcomes, FirstContactAndCushionsOnHandMadeShots) {
+  const Scenario s = two_balls();
+  const std::vector<ShotAction> actions{
+      {2.0, 0.0, 0.0, 0.0, 0.0},     // 0: straight at ball 5 (scenario layout)
+      {2.0, -90.0, 0.0, 0.0, 0.0},   // 1: down into the near rail, back up into ball 5 above it
+      {1.0, 90.0, 0.0, 0.0, 0.0},    // 2: up into the far rail, no ball in the way
+  };
+  const std::vector<double> layouts{
+      0.5, 0.5, 2.0, 0.5,   // shot 0: as the scenario
+      1.0, 0.3, 1.0, 0.9,   // shot 1: ball 5 straight above the cue ball
+      0.5, 0.5, 2.0, 0.5,   // shot 2
+  };
+  const ManyResult r = simulate_many(s, actions, layouts, {});
+  const ShotOutcome straight = r.outcome(0), rail_first = r.outcome(1), none = r.outcome(2);
+  EXPECT_EQ(straight.first_contact, 5);
+  EXPECT_EQ(straight.cushions_before_contact, (std::vector<int>{0, 0}));
+  EXPECT_GE(straight.cushions[1], 1);  // ball 5 goes on into the right-hand rail
+  EXPECT_EQ(rail_first.first_contact, 5);
+  EXPECT_EQ(rail_first.cushions_before_contact, (std::vector<int>{1, 0}));
+  EXPECT_GE(rail_first.cushions[0], 1);
+  EXPECT_GE(rail_first.cushions[1], 1);  // ball 5 driven into the far rail
+  EXPECT_EQ(none.first_contact, -1);
+  EXPECT_GE(none.cushions[0], 1);
+  EXPECT_EQ(none.cushions_before_contact, none.cushions);  // no contact: every cushion is before it
+  EXPECT_EQ(none.cushions[1], 0);
+  // The layouts were applied: shot 1 is the single run from its layout.
+  Scenario moved = with_action(s, actions[1]);
+  moved.balls[0].state.position = {1.0, 0.3};
+  moved.balls[1].state.position = {1.0, 0.9};
+  ShotOutcome single;
+  outcome_from_result(run_scenario(moved), 0, single);
+  expect_same_outcome(rail_first, single, "layout 1");
+  // Not the scenario's layout: there the same action misses ball 5.
+  EXPECT_EQ(simulate_many(s, std::span(actions).subspan(1, 1), {}, {}).first_contact[0], -1);
+  // Row-major positions: shot 2's ball 5 never moved.
+  EXPECT_EQ(r.final_position[(2 * 2 + 1) * 2], 2.0);
+  EXPECT_EQ(r.final_position[(2 * 2 + 1) * 2 + 1], 0.5);
+}
+
+TEST(ManyOutcomes, BadActionsAndLayoutsAreNamed) {
+  const Scenario s = two_balls();
+  const auto error = [&](std::vector<ShotAction> actions, std::vector<double> layouts, ManyOptions o = {}) {
+    try {
+      simulate_many(s, actions, layouts, o);
+    } catch (const InvalidArgument& e) {
+      return std::string(e.field()) + " | " + e.what();
+    }
+    return std::string("accepted");
+  };
+  std::vector<ShotAction> ok(20, ShotAction{2.0, 0.0, 0.0, 0.0, 0.0});
+  EXPECT_EQ(error(ok, {}), "accepted");
+  const auto bad = [&](std::size_t k, auto set) {
+    std::vector<ShotAction> a = ok;
+    set(a[k]);
+    return error(a, {});
+  };
+  const std::string speed = bad(17, [](ShotAction& a) { a.speed = 0.0; });
+  EXPECT_EQ(speed.rfind("actions[17].speed | ", 0), 0u) << speed;
+  EXPECT_NE(speed.find("[1e-06, 12]"), std::string::npos) << speed;
+  EXPECT_EQ(bad(3, [](ShotAction& a) { a.speed = 12.5; }).rfind("actions[3].speed | ", 0), 0u);
+  EXPECT_EQ(bad(4, [](ShotAction& a) { a.aim_deg = std::nan(""); }).rfind("actions[4].aim_deg | ", 0), 0u);
+  const std::string elevation = bad(5, [](ShotAction& a) { a.elevation_deg = 90.0; });
+  EXPECT_EQ(elevation.rfind("actions[5].elevation_deg | ", 0), 0u) << elevation;
+  EXPECT_NE(elevation.find("[0, 89]"), std::string::npos) << elevation;
+  EXPECT_EQ(bad(6, [](ShotAction& a) { a.side = -0.6; }).rfind("actions[6].side | ", 0), 0u);
+  EXPECT_EQ(bad(7, [](ShotAction& a) { a.height = 0.6; }).rfind("actions[7].height | ", 0), 0u);
+  const std::string tip = bad(8, [](ShotAction& a) { a.side = a.height = 0.4; });
+  EXPECT_EQ(tip.rfind("actions[8].tip_offset | ", 0), 0u) << tip;
+  EXPECT_NE(tip.find("[0, 0.5]"), std::string::npos) << tip;
+  EXPECT_EQ(error({}, {}).rfind("actions | ", 0), 0u);
+  EXPECT_EQ(error(ok, {}, {0, 0, false}).rfind("threads | ", 0), 0u);
+  // Layouts: 20 shots x 2 balls x 2.
+  std::vector<double> layouts;
+  for (int k = 0; k < 20; ++k) layouts.insert(layouts.end(), {0.5, 0.5, 2.0, 0.5});
+  EXPECT_EQ(error(ok, layouts), "accepted");
+  const std::string size = error(ok, std::vector<double>(layouts.begin(), layouts.end() - 1));
+  EXPECT_EQ(size.rfind("layouts | ", 0), 0u) << size;
+  EXPECT_NE(size.find("80"), std::string::npos) << size;
+  std::vector<double> off = layouts;
+  off[3 * 4 + 2] = 2.7;  // layouts[3][1] beyond the right-hand rail
+  const std::string off_table = error(ok, off);
+  EXPECT_EQ(off_table.rfind("layouts[3][1] | layouts[3][1] = (2.7, 0.5) m is off the playing surface", 0), 0u)
+      << off_table;
+  std::vector<double> overlap = layouts;
+  overlap[9 * 4 + 2] = 0.55;  // layouts[9][1] 5 cm from ball 0 (2R = 5.715 cm)
+  const std::string overlapping = error(ok, overlap);
+  EXPECT_EQ(overlapping.rfind("layouts[9][1] | layouts[9][1] overlaps layouts[9][0]", 0), 0u) << overlapping;
+  std::vector<double> nan = layouts;
+  nan[11 * 4] = std::nan("");
+  EXPECT_EQ(error(ok, nan).rfind("layouts[11][0] | ", 0), 0u);
+  // Touching is allowed.
+  std::vector<double> touching = layouts;
+  touching[2] = 0.5 + 2 * s.settings.parameters.ball.radius;
+  EXPECT_EQ(error(ok, touching), "accepted");
+}
+
+TEST(ManyOutcomes, ResultRowsAreChecked) {
+  const ManyResult r = simulate_many(two_balls(), std::vector<ShotAction>{ShotAction{}}, {}, {});
+  EXPECT_THROW((void)r.outcome(1), InvalidArgument);
+  EXPECT_THROW((void)r.outcome(-1), InvalidArgument);
+}
+
+TEST(BatchOutcomes, StreamingDoesNotGrowWithTheShotsAndStopsOnTheSinksError) {
+  const Scenario s = scenario_from_json(R"({"table": "pool_9ft", "balls": [{"id": 0, "position": [0.6, 0.6]}],
+      "cue": {"ball": 0, "aim_deg": 30, "speed": 1.0}, "noise": {"speed": 0.05, "aim_deg": 1}})");
+  long long rows = 0;
+  const OutcomeSink count = [&](int, const ShotOutcome& x) { rows += static_cast<long long>(x.cushions.size()); };
+  // Up to 4 x 2 + 2 = 10 blocks of 64 outcomes (~170 bytes each for one
+  // ball) wait to be merged, ~110 kB, whether the window fills or not
+  // depends on the scheduling; storing all 16384 outcomes would be 2.7 MB.
+  const long long small = peak_growth([&] { simulate_batch(s, {2048, 2, 1}, count); });
+  const long long large = peak_growth([&] { simulate_batch(s, {16384, 2, 1}, count); });
+  EXPECT_EQ(rows, 2048 + 16384);
+  EXPECT_LT(large, small + 128 * 1024) << small << " -> " << large << " bytes";
+  EXPECT_LT(large, 384 * 1024) << large << " bytes";
+  const OutcomeSink failing = [](int shot, const ShotOutcome&) {
+    if (shot == 100) throw std::runtime_error("disk full");
+  };
+  for (int threads : {1, 2}) {
+    try {
+      simulate_batch(s, {1000, threads, 1}, failing);
+      ADD_FAILURE() << "expected the sink's error";
+    } catch (const std::runtime_error& e) {
+      EXPECT_STREQ(e.what(), "disk full");
+    }
+  }
 }
 
 }  // namespace

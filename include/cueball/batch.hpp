@@ -40,6 +40,7 @@
 
 #include <cstdint>
 #include <functional>
+#include <span>
 #include <vector>
 
 #include "cueball/scenario.hpp"
@@ -56,6 +57,44 @@ inline constexpr int kMaxBatchThreads = 256;
 /// Shots per reduction block (a fixed number: it must not depend on the
 /// thread count, or the rounding of the sums would).
 inline constexpr int kBatchBlockShots = 64;
+
+/// What one shot did, derived from its SimulationResult's events
+/// (outcome_from_result). The vectors have one entry per ball, in the
+/// scenario's ball order.
+struct ShotOutcome {
+  enum class Kind : char { simulated, miscue, failure };
+  Kind kind = Kind::simulated;     ///< miscue: not simulated; failure: SimulationError (event limit)
+  bool speed_reflected = false;    ///< the noisy cue speed was reflected into the limits (noisy shots only)
+  bool elevation_reflected = false;
+  /// Events the simulator resolved, the cue strike not counted (run_scenario's
+  /// events.size() - 1); 0 when not simulated.
+  int events = 0;
+  /// Id of the first ball the cue ball touches (the first ball_ball event
+  /// involving it), -1 when it touches none or the shot was not simulated.
+  int first_contact = -1;
+  std::vector<char> pocketed;                ///< 1 when pocketed
+  std::vector<int> pocket;                   ///< index into Table::pockets, -1 when not pocketed
+  std::vector<Vec2> final_position;          ///< at the end (a pocketed ball: where it was captured); NaN when not simulated
+  /// ball_cushion events of each ball before the cue ball's first contact
+  /// with another ball (in event order; all of them when there is none).
+  /// Jaw contacts (ball_jaw) are not counted.
+  std::vector<int> cushions_before_contact;
+  std::vector<int> cushions;                 ///< ball_cushion events of each ball in the whole shot
+
+  /// Sizes every vector for `balls` balls and sets the fields to "not
+  /// simulated" (kind simulated, 0 / -1 / NaN).
+  void reset(std::size_t balls);
+};
+
+/// Fills `out` (every field but speed_reflected and elevation_reflected,
+/// which it leaves alone) from a simulated shot: kind simulated, pocketing,
+/// pockets and final positions from r.balls, counts from r.events. `cue_ball`
+/// is the struck ball's id. r.balls must be in the order `out` is to report.
+void outcome_from_result(const SimulationResult& r, int cue_ball, ShotOutcome& out);
+
+/// Receives the outcome of every shot of a batch, in shot order, from one
+/// thread at a time (the worker that merges the shot's block).
+using OutcomeSink = std::function<void(int shot, const ShotOutcome& outcome)>;
 
 struct BatchOptions {
   int shots = 1000;         ///< [1, kMaxBatchShots]
@@ -87,7 +126,13 @@ struct BatchResult {
 /// range), a scenario without a cue strike ("cue"), input the simulator
 /// rejects, or a nominal strike that a single run would reject; rethrows a
 /// shot's error as described above.
-BatchResult simulate_batch(const Scenario& scenario, const BatchOptions& options);
+///
+/// `on_outcome`, when set, is called with each shot's outcome in shot order
+/// 0, 1, 2, ... as the blocks are merged, under the batch's lock (at most
+/// 4 x threads + 2 blocks of outcomes are held at once, so memory still does
+/// not grow with the shots). An exception it throws stops the batch and is
+/// rethrown by simulate_batch.
+BatchResult simulate_batch(const Scenario& scenario, const BatchOptions& options, const OutcomeSink& on_outcome = {});
 
 /// A noisy strike brought within the limits by the reflection rule above.
 struct LimitedStrike {
@@ -103,29 +148,107 @@ struct LimitedStrike {
 /// strike's validation reports them).
 LimitedStrike reflect_into_limits(const CueStrike& strike);
 
+// ------------------------------------------------------------------ many different shots
+//
+// simulate_many plays N different cue actions (optionally each from its own
+// layout of the balls, optionally with the scenario's execution noise) and
+// returns every shot's outcome, struct-of-arrays: flat row-major vectors that
+// a binding can hand out as NumPy arrays of shape (N,), (N, balls) or
+// (N, balls, 2) without touching the elements. Shots are scheduled exactly as
+// simulate_batch's (blocks of kBatchBlockShots, work stealing) and each
+// writes only its own rows, so the arrays are bit-identical whatever the
+// number of threads; a shot's error other than SimulationError is rethrown
+// in the caller, the lowest shot's winning, as simulate_batch does.
+
+/// One cue action, in the units of the scenario JSON's "cue" (so that an
+/// (N, 5) float64 array of rows speed, aim_deg, elevation_deg, side, height
+/// IS a span of ShotAction).
+struct ShotAction {
+  double speed = 3.0;          ///< cue speed, m/s, [1e-6, 12]
+  double aim_deg = 0.0;        ///< the cue's direction in the bed's plane, degrees anticlockwise from +x, [-360, 360]
+  double elevation_deg = 0.0;  ///< butt raised, degrees, [0, 89]
+  double side = 0.0;           ///< tip offset to the right, ball radii, [-0.5, 0.5]
+  double height = 0.0;         ///< tip offset above the centre, ball radii, [-0.5, 0.5]; sqrt(side^2 + height^2) <= 0.5
+};
+static_assert(sizeof(ShotAction) == 5 * sizeof(double), "ShotAction must be five packed doubles");
+
+/// The CueStrike (radians, metres) of an action for balls of radius `radius`.
+CueStrike to_strike(const ShotAction& action, double radius);
+
+/// Most shots in one simulate_many call. The result holds 12 bytes per shot
+/// and 29 per shot and ball (1 + 4 + 16 + 4 + 4): 1e6 shots of a 10-ball
+/// 9-ball rack are 302 MB, of a 22-ball snooker frame 650 MB. Split bigger studies into chunks (shot k's noise depends
+/// on seed and k: pass a seed per chunk).
+inline constexpr int kMaxManyShots = 1'000'000;
+
+struct ManyOptions {
+  int threads = 1;          ///< [1, kMaxBatchThreads]
+  std::uint64_t seed = 0;   ///< noise of shot k drawn from (seed, k) as in simulate_batch
+  /// Perturb each action with the scenario's execution noise (reflected into
+  /// the limits; a tip offset beyond the miscue limit is a miscue, not
+  /// simulated), exactly as simulate_batch perturbs its one strike.
+  bool noise = false;
+};
+
+/// Every shot's outcome; `shots` = N rows, `balls` = the scenario's balls,
+/// in its order (ids[j] is ball j's id). Row-major: element (k, j) of a
+/// shots x balls array is at k * balls + j; final_position (k, j, axis) at
+/// (k * balls + j) * 2 + axis.
+struct ManyResult {
+  int shots = 0;
+  int balls = 0;
+  std::vector<int> ids;                                 ///< (balls)
+  std::vector<std::uint8_t> pocketed;                   ///< (shots, balls) 0 / 1
+  std::vector<std::int32_t> pocket;                     ///< (shots, balls) pocket index, -1 not pocketed
+  std::vector<double> final_position;                   ///< (shots, balls, 2) m; NaN when not simulated
+  std::vector<std::int32_t> first_contact;              ///< (shots) id of the cue ball's first ball, -1 none
+  std::vector<std::int32_t> cushions_before_contact;    ///< (shots, balls)
+  std::vector<std::int32_t> cushions;                   ///< (shots, balls)
+  std::vector<std::int32_t> events;                     ///< (shots) cue strike not counted; 0 when not simulated
+  std::vector<std::uint8_t> miscue;                     ///< (shots) 0 / 1 (noise only)
+  std::vector<std::uint8_t> failure;                    ///< (shots) 0 / 1: SimulationError (event limit)
+  std::vector<std::uint8_t> speed_reflected;            ///< (shots) 0 / 1 (noise only)
+  std::vector<std::uint8_t> elevation_reflected;        ///< (shots) 0 / 1 (noise only)
+  double seconds = 0.0;                                 ///< wall-clock time, validation included
+  double shots_per_second = 0.0;
+
+  /// Row k gathered into a ShotOutcome (for tests and small callers).
+  ShotOutcome outcome(int shot) const;
+};
+
+/// Plays actions[k] for k = 0 .. N-1, struck on the scenario's cue ball
+/// (cue.ball; ball 0 without "cue"): the action's aim is absolute, the
+/// scenario's cue "target" and strike are not used (its cue mass and tip
+/// restitution are). `layouts`, when not empty, holds N x balls x 2 doubles:
+/// shot k starts with ball j at (layouts[(k balls + j) 2], ... + 1), the
+/// balls' velocities and spins being the scenario's. Everything is checked
+/// before any shot runs, each error an InvalidArgument naming the first bad
+/// item: "actions" (N in [1, kMaxManyShots]), "threads", "actions[17].speed"
+/// (or .aim_deg, .elevation_deg, .side, .height; "actions[17].tip_offset"
+/// beyond the miscue limit), "layouts" (the size), "layouts[3][2]" (ball 2
+/// of layout 3: not finite, off the table or inside a cushion, or
+/// overlapping an earlier ball of that layout), the scenario as the
+/// simulator checks it, the noise ("sigma ...") when used.
+ManyResult simulate_many(const Scenario& scenario, std::span<const ShotAction> actions,
+                         std::span<const double> layouts, const ManyOptions& options);
+
 namespace detail {
 
 /// One shot as the reducer sees it; the player fills it in.
-struct ShotRecord {
-  enum class Kind : char { simulated, miscue, failure };
-  Kind kind = Kind::simulated;
-  bool speed_reflected = false;
-  bool elevation_reflected = false;
-  int events = 0;
-  std::vector<char> pocketed;        ///< per ball, sized by the reducer
-  std::vector<Vec2> final_position;  ///< per ball, sized by the reducer
-};
+using ShotRecord = ShotOutcome;
 
-/// Plays shot `shot` into `record` (whose vectors have one entry per ball).
-/// Called concurrently from the worker threads.
+/// Plays shot `shot` into `record` (reset for the batch's balls before each
+/// shot). Called concurrently from the worker threads.
 using PlayShot = std::function<void(int shot, ShotRecord& record)>;
 
-/// The scheduler and reducer behind simulate_batch, for any player: blocks
-/// of kBatchBlockShots shots taken by `threads` workers, reduced and merged
-/// in block order (at most 4 x threads + 2 finished blocks wait to be merged),
-/// errors rethrown by lowest shot. Fills every field of BatchResult but the
-/// balls' ids, seconds and shots_per_second. Options are not validated.
-BatchResult run_batch(int shots, int threads, std::size_t balls, const PlayShot& play);
+/// The scheduler and reducer behind simulate_batch and simulate_many, for
+/// any player: blocks of kBatchBlockShots shots taken by `threads` workers,
+/// reduced and merged in block order (at most 4 x threads + 2 finished
+/// blocks wait to be merged), errors rethrown by lowest shot; `sink`, when
+/// set, receives every outcome in shot order as its block is merged. Fills
+/// every field of BatchResult but the balls' ids, seconds and
+/// shots_per_second. Options are not validated.
+BatchResult run_batch(int shots, int threads, std::size_t balls, const PlayShot& play, const OutcomeSink& sink = {});
 
 }  // namespace detail
 

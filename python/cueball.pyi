@@ -424,5 +424,34 @@ def simulate(scenario: _Scenario = None, sample_rate: _Float = 0.0) -> Result:
 def simulate_batch(scenario: _Scenario = None, shots: _Int = 1000, threads: _Int = 1, seed: _Int = 0) -> dict[str, Any]:
     """Noisy copies of the scenario's shot; the keys of `cueball batch --json`. Releases the GIL."""
 
+class ManyOutcomes(TypedDict):
+    """simulate_many's per-shot outcomes: rows by shot, columns by ball (`ids`)."""
+
+    ids: NDArray[np.int32]
+    pocketed: NDArray[np.bool_]
+    pocket: NDArray[np.int32]
+    final_position: NDArray[np.float64]
+    first_contact: NDArray[np.int32]
+    cushions_before_contact: NDArray[np.int32]
+    cushions: NDArray[np.int32]
+    events: NDArray[np.int32]
+    miscue: NDArray[np.bool_]
+    failure: NDArray[np.bool_]
+    speed_reflected: NDArray[np.bool_]
+    elevation_reflected: NDArray[np.bool_]
+    seconds: float
+    shots_per_second: float
+
+def simulate_many(
+    scenario: _Scenario = None,
+    actions: NDArray[Any] | Sequence[Sequence[_Float]] = ...,
+    layouts: NDArray[Any] | None = None,
+    threads: _Int = 1,
+    seed: _Int = 0,
+    noise: bool = False,
+) -> ManyOutcomes:
+    """N different shots in one call: actions (N, 5) of cue speed m/s, aim deg, elevation deg,
+    side and height ball radii; layouts (N, n_balls, 2) m, optional. Releases the GIL."""
+
 def _time_run_scenario(scenario: _Scenario = None, repetitions: _Int = 100) -> float:
     """Benchmark hook: seconds per run of the library's run_scenario(), timed in C++."""

@@ -39,4 +39,7 @@ PYBIND11_MODULE(cueball, m) {
 #ifdef CUEBALL_HAVE_SIMULATE_MANY
   bind_simulate_many(m);
 #endif
+#ifdef CUEBALL_HAVE_SIMULATE_MANY
+  bind_simulate_many(m);
+#endif
 }

@@ -43,7 +43,10 @@ struct SimulateFlags {
 
 void run_simulate(const SimulateFlags& f, std::ostream& out, std::ostream& err) {
   check_flag("--sample", f.sample, 0.0, 10000.0, "sampling rate, Hz (0: none)");
-  const Scenario s = load_scenario(f.scenario);
+  // A result file (-o) replays its "scenario" (scenario_from_document).
+  const Scenario s = f.scenario.empty()
+                         ? default_scenario()
+                         : scenario_from_document(read_text_file(f.scenario, "the scenario file", kMaxScenarioBytes));
   SimulationResult r;
   try {
     r = run_scenario(s);
@@ -409,8 +412,11 @@ Command add_simulate_command(CLI::App& app) {
       "describes the table, the balls (or a rack), the cue strike and the parameters (see README,\n"
       "'Scenario format'); without it, a built-in 9-ball break. Positions in m from the table's corner,\n"
       "x along the length; speeds m/s; angles degrees in the scenario. Prints a summary; -o writes the\n"
-      "full result (events, final states, trajectory segments), --json prints it.");
-  sub->add_option("scenario", flags->scenario, "Scenario JSON file (default: the built-in 9-ball break)");
+      "full result (events, final states, trajectory segments, the cue strike and the whole scenario),\n"
+      "--json prints it. SCENARIO.json may also be such a result file: its \"scenario\" is replayed,\n"
+      "bit for bit.");
+  sub->add_option("scenario", flags->scenario,
+                  "Scenario JSON file, or a result file to replay (default: the built-in 9-ball break)");
   sub->add_option("-o,--output", flags->output, "Write the result JSON to this file");
   sub->add_option("--html", flags->html, "Write the shot as a self-contained HTML viewer page to this file");
   sub->add_option("--sample", flags->sample, "Also sample every ball's state at this rate, Hz");

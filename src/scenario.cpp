@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstdio>
 #include <initializer_list>
+#include <limits>
 #include <numbers>
 #include <set>
 
@@ -186,6 +187,10 @@ ShotStrike read_cue(const Reader& r, CueParameters& cue, double radius) {
   s.strike.elevation = r.number("elevation_deg", 0.0, 0.0, 89.0, "cue elevation, degrees") * kDegree;
   s.strike.side_offset = r.number("side", 0.0, -kMiscueOffsetFraction, kMiscueOffsetFraction, "tip offset to the right, ball radii") * radius;
   s.strike.height_offset = r.number("height", 0.0, -kMiscueOffsetFraction, kMiscueOffsetFraction, "tip offset above the centre, ball radii") * radius;
+  s.given = CueStrikeInUnits{r.number("aim_deg", 0.0, -360.0, 360.0, "aim direction from +x, degrees"),
+                             r.number("elevation_deg", 0.0, 0.0, 89.0, "cue elevation, degrees"),
+                             r.number("side", 0.0, -kMiscueOffsetFraction, kMiscueOffsetFraction, "tip offset to the right, ball radii"),
+                             r.number("height", 0.0, -kMiscueOffsetFraction, kMiscueOffsetFraction, "tip offset above the centre, ball radii")};
   cue.mass = r.number("mass", cue.mass, 0.1, 2.0, "cue mass, kg");
   cue.tip_restitution = r.number("tip_restitution", cue.tip_restitution, 0.0, 1.0, "cue tip restitution");
   return s;
@@ -270,7 +275,97 @@ InvalidArgument relabelled(const InvalidArgument& e, const Json& j, const std::v
   return at(table_object ? "scenario.table" : "scenario");
 }
 
+// A value u in the scenario's units whose conversion u * unit (what the
+// reader computes) is x exactly: `given` when it is one, else the one nearest
+// x / unit within 64 doubles of it, else x / unit itself.
+double in_units(double x, double unit, std::optional<double> given) {
+  if (given && *given * unit == x) return *given;
+  const double u = x / unit;
+  if (u * unit == x) return u;
+  double up = u, down = u;
+  for (int k = 0; k < 64; ++k) {
+    up = std::nextafter(up, std::numeric_limits<double>::infinity());
+    if (up * unit == x) return up;
+    down = std::nextafter(down, -std::numeric_limits<double>::infinity());
+    if (down * unit == x) return down;
+  }
+  return u;
+}
+
+std::optional<double> given_part(const std::optional<CueStrikeInUnits>& g, double CueStrikeInUnits::*field) {
+  if (!g) return std::nullopt;
+  return (*g).*field;
+}
+
+Json cue_json(const Scenario& s) {
+  const ShotStrike& c = *s.cue;
+  const double radius = s.settings.parameters.ball.radius;
+  Json j;
+  j["ball"] = c.ball;
+  if (c.target) {
+    j["target"] = *c.target;
+  } else {
+    j["aim_deg"] = in_units(c.strike.aim, kDegree, given_part(c.given, &CueStrikeInUnits::aim_deg));
+  }
+  j["speed"] = c.strike.speed;
+  j["elevation_deg"] = in_units(c.strike.elevation, kDegree, given_part(c.given, &CueStrikeInUnits::elevation_deg));
+  j["side"] = in_units(c.strike.side_offset, radius, given_part(c.given, &CueStrikeInUnits::side));
+  j["height"] = in_units(c.strike.height_offset, radius, given_part(c.given, &CueStrikeInUnits::height));
+  j["mass"] = s.cue_parameters.mass;
+  j["tip_restitution"] = s.cue_parameters.tip_restitution;
+  return j;
+}
+
+Json scenario_json(const Scenario& s) {
+  const Parameters& p = s.settings.parameters;
+  const double radius = p.ball.radius;
+  Json j;
+  j["table"] = Json::parse(table_to_json(s.table));
+  j["parameters"] = {{"mass", p.ball.mass},
+                     {"radius", p.ball.radius},
+                     {"mu_s", p.cloth.sliding_friction},
+                     {"mu_r", p.cloth.rolling_resistance},
+                     {"mu_sp", p.cloth.spin_friction},
+                     {"g", p.cloth.gravity}};
+  j["cushion"] = {{"restitution", s.settings.cushion_restitution}, {"friction", s.settings.cushion_friction}};
+  const BallCollisionParameters& b = s.settings.ball_collision;
+  j["ball_collision"] = {{"restitution", b.restitution},
+                         {"friction", b.friction},
+                         {"friction_excess", b.friction_excess},
+                         {"friction_decay", b.friction_decay}};
+  j["max_events"] = s.settings.max_events;
+  Json balls = Json::array();
+  for (const SimulationBall& ball : s.balls) {
+    Json jb = state_json(ball.state);
+    jb["id"] = ball.id;
+    jb["name"] = ball.name;
+    balls.push_back(jb);
+  }
+  j["balls"] = balls;
+  if (s.cue) j["cue"] = cue_json(s);
+  j["noise"] = {{"speed", s.noise.speed},
+                {"aim_deg", in_units(s.noise.aim, kDegree, std::nullopt)},
+                {"elevation_deg", in_units(s.noise.elevation, kDegree, std::nullopt)},
+                {"side", in_units(s.noise.side_offset, radius, std::nullopt)},
+                {"height", in_units(s.noise.height_offset, radius, std::nullopt)}};
+  return j;
+}
+
 }  // namespace
+
+std::string scenario_to_json(const Scenario& s, int indent) { return scenario_json(s).dump(indent); }
+
+Scenario scenario_from_document(std::string_view json_text) {
+  if (json_text.size() > kMaxScenarioBytes) return scenario_from_json(json_text);  // its size error
+  const Json j = detail::parse_json(json_text, "scenario");
+  if (j.is_object() && j.contains("events") && j.contains("scenario")) {
+    if (!j.at("scenario").is_object())
+      throw InvalidArgument("scenario", "scenario: the result's \"scenario\" must be a scenario object, got " +
+                                            std::string(j.at("scenario").type_name()));
+    return scenario_from_json(j.at("scenario").dump());
+  }
+  return scenario_from_json(json_text);
+}
 
 Scenario scenario_from_json(std::string_view json_text) {
   if (json_text.size() > kMaxScenarioBytes)
@@ -449,14 +544,43 @@ std::string result_to_json(const Scenario& s, const SimulationResult& r, double 
                        {"g", p.cloth.gravity},
                        {"cushion_restitution", s.settings.cushion_restitution},
                        {"cushion_friction", s.settings.cushion_friction}};
+  if (s.cue) {
+    const ShotStrike& c = *s.cue;
+    const CueStrike k = resolved_strike(s, c.strike);
+    const double radius = p.ball.radius;
+    out["cue_strike"] = {{"given", cue_json(s)},
+                         {"resolved",
+                          {{"ball", c.ball},
+                           {"target", c.target ? Json(*c.target) : Json(nullptr)},
+                           {"speed", k.speed},
+                           {"aim_deg", k.aim / kDegree},
+                           {"elevation_deg", k.elevation / kDegree},
+                           {"side", k.side_offset / radius},
+                           {"height", k.height_offset / radius},
+                           {"aim_rad", k.aim},
+                           {"elevation_rad", k.elevation},
+                           {"side_m", k.side_offset},
+                           {"height_m", k.height_offset},
+                           {"mass", s.cue_parameters.mass},
+                           {"tip_restitution", s.cue_parameters.tip_restitution}}}};
+  } else {
+    out["cue_strike"] = nullptr;
+  }
+  out["scenario"] = scenario_json(s);
   out["end_time"] = r.end_time;
   Json events = Json::array();
   for (const Event& e : r.events) {
     Json ev{{"time", e.time}, {"type", to_string(e.type)}, {"balls", Json::array({e.ball})}};
     switch (e.type) {
       case EventType::ball_ball: ev["balls"].push_back(e.other); break;
-      case EventType::ball_cushion: ev["cushion"] = e.other; break;
-      case EventType::ball_jaw: ev["jaw"] = e.other; break;
+      case EventType::ball_cushion:
+        ev["cushion"] = e.other;
+        ev["cushion_name"] = cushion_name(s.table, static_cast<std::size_t>(e.other));
+        break;
+      case EventType::ball_jaw:
+        ev["jaw"] = e.other;
+        ev["jaw_name"] = jaw_name(s.table, static_cast<std::size_t>(e.other));
+        break;
       case EventType::ball_pocket: ev["pocket"] = s.table.pockets[static_cast<std::size_t>(e.other)].name; break;
       default: break;
     }

@@ -22,6 +22,7 @@
 #include "cueball/batch.hpp"
 #include "cueball/scenario.hpp"
 #include "cueball/simulator.hpp"
+#include "cueball/table.hpp"
 
 namespace cueball {
 namespace {
@@ -615,6 +616,67 @@ TEST(CliBatch, BadInputExitsWithStatusTwoNamingTheFlag) {
   expect_usage_error({"batch", dir.write("no_cue.json", R"({"balls": [{"id": 0, "position": [0.5, 0.5]}]})")}, "cue");
   expect_usage_error({"batch", dir.path("missing.json")}, dir.path("missing.json"));
   expect_usage_error({"batch", dir.write("bad.json", R"({"noise": {"aim_deg": -1}})")}, "scenario.noise.aim_deg");
+}
+
+// ------------------------------------------------------------------ simulate: replaying a result
+
+// A result file given back to `simulate` replays its "scenario": the same
+// result file byte for byte; the extracted "scenario" object does the same.
+TEST(CliSimulate, ResultFileReplaysBitForBit) {
+  Json custom = Json::parse(table_to_json(pool_table_9ft()));
+  custom["name"] = "custom";
+  custom["cushions"][5]["name"] = "renamed rail";
+  for (Json& c : custom["cushions"]) c["contact_height"] = 0.0368;
+  for (Json& c : custom["jaws"]) c["contact_height"] = 0.0368;
+  Json custom_scenario = {{"table", custom},
+                          {"parameters", {{"mu_s", 0.19}, {"mu_r", 0.011}}},
+                          {"cushion", {{"restitution", 0.9}, {"friction", 0.18}}},
+                          {"ball_collision", {{"restitution", 0.94}}},
+                          {"rack", {{"type", "nine_ball"}, {"gap_sigma", 2e-4}, {"seed", 11}}},
+                          {"cue", {{"target", 1}, {"speed", 7.77}, {"side", 0.11}, {"height", 0.23}}}};
+  const std::vector<std::pair<std::string, std::string>> scenarios = {
+      {"break", kBreak},
+      {"layout", R"({"table": "pool_9ft", "balls": [{"id": 0, "position": [0.61234, 0.41]},
+                     {"id": 1, "position": [1.37, 0.73]}, {"id": 2, "position": [1.9, 0.2]},
+                     {"id": 5, "name": "five", "position": [2.2, 1.0]}],
+                     "cue": {"speed": 3.71, "aim_deg": 21.987654321, "elevation_deg": 7.3, "side": -0.271, "height": 0.137}})"},
+      {"custom", custom_scenario.dump()},
+      {"snooker", R"({"table": "snooker_12ft", "rack": {"type": "snooker"},
+                      "cue": {"target": 1, "speed": 5.5, "side": 0.2, "height": -0.1}})"}};
+  const TempDir dir;
+  for (const auto& [name, text] : scenarios) {
+    SCOPED_TRACE(name);
+    const std::string scenario = dir.write(name + ".json", text);
+    const std::string first = dir.path(name + "-result.json");
+    const std::string second = dir.path(name + "-replay.json");
+    const std::string third = dir.path(name + "-from-scenario.json");
+    CliRun r = run_cli({"simulate", scenario, "-o", first});
+    ASSERT_EQ(r.status, 0) << r.err;
+    r = run_cli({"simulate", first, "-o", second});
+    ASSERT_EQ(r.status, 0) << r.err;
+    const std::string original = read_text(first);
+    EXPECT_EQ(read_text(second), original);
+    const Json result = Json::parse(original);
+    const std::string extracted = dir.write(name + "-scenario.json", result.at("scenario").dump(2));
+    r = run_cli({"simulate", extracted, "-o", third});
+    ASSERT_EQ(r.status, 0) << r.err;
+    EXPECT_EQ(read_text(third), original);
+    // The events name their cushions and jaws.
+    int named = 0;
+    for (const Json& e : result.at("events")) {
+      if (e.at("type") == "ball_cushion") named += e.at("cushion_name").is_string();
+      if (e.at("type") == "ball_jaw") named += e.at("jaw_name").is_string();
+    }
+    EXPECT_GT(named, 0);
+  }
+}
+
+TEST(CliSimulate, BadResultFileNamesTheScenarioPath) {
+  const TempDir dir;
+  const std::string bad = dir.write("bad-result.json", R"({"events": [], "scenario": {"cue": {"speed": 99}}})");
+  const CliRun r = run_cli({"simulate", bad});
+  EXPECT_EQ(r.status, 2) << r.err;
+  EXPECT_NE(r.err.find("scenario.cue.speed"), std::string::npos) << r.err;
 }
 
 }  // namespace

@@ -170,12 +170,12 @@ TEST(TableContact, ContactDistanceIsRCosTheta) {
   // Pool: nose 1 7/16 in, ball 2.25 in.
   const double Rp = 1.125 * kIn;
   EXPECT_NEAR(cushion_contact_distance(1.4375 * kIn, Rp), contact_distance(1.4375 * kIn, Rp), 1e-15);
-  const JawArc jaw{{0, 0}, 0.01, 1.4 * R};
+  const JawArc jaw{{0, 0}, 0.01, 1.4 * R, {}};
   EXPECT_NEAR(jaw_contact_distance(jaw, R), 0.01 + R * std::sqrt(21.0) / 5.0, 1e-15);
 }
 
 TEST(TableContact, InwardNormalIsOnTheLeft) {
-  const CushionSegment s{{0, 0}, {2, 0}, 0.03};
+  const CushionSegment s{{0, 0}, {2, 0}, 0.03, {}};
   EXPECT_NEAR(inward_normal(s).x, 0.0, 1e-15);
   EXPECT_NEAR(inward_normal(s).y, 1.0, 1e-15);
   EXPECT_NEAR(distance_to_segment(s, {1, 0.5}), 0.5, 1e-15);
@@ -446,7 +446,7 @@ TEST(TableLayout, BlockedMouthIsDetected) {
   // The check above can fail: a cushion across a mouth stops the ball.
   Table t = pool_table_9ft();
   const Pocket p = t.pockets[1];  // bottom side pocket
-  t.cushions.push_back({{t.length / 2 + 0.1, 0.0}, {t.length / 2 - 0.1, 0.0}, t.cushions[0].contact_height});
+  t.cushions.push_back({{t.length / 2 + 0.1, 0.0}, {t.length / 2 - 0.1, 0.0}, t.cushions[0].contact_height, {}});
   EXPECT_FALSE(ball_reaches_pocket(t, p, 0.0));
 }
 
@@ -546,7 +546,7 @@ TEST(BallOnTable, ExplicitRadius) {
 TEST(BallOnTable, JawsAndPocketsAreObstaclesOnTheirOwn) {
   Table t = carom_table_10ft();
   const Vec2 c{t.length / 2, t.width / 2};
-  t.jaws.push_back({c, 0.01, 0.037});
+  t.jaws.push_back({c, 0.01, 0.037, {}});
   const double d = contact_distance(0.037, t.ball.radius);
   EXPECT_FALSE(ball_on_table(t, c + Vec2{0.01 + 0.5 * d, 0}));
   EXPECT_TRUE(ball_on_table(t, c + Vec2{0.01 + d, 0}));
@@ -714,7 +714,7 @@ TEST(TableBoundary, SelfIntersectingTableIsRejected) {
     const double a = std::numbers::pi / 2 + k * 4.0 * std::numbers::pi / 5.0;
     star.push_back({1.0 + 0.45 * std::cos(a), 0.5 + 0.45 * std::sin(a)});
   }
-  for (std::size_t k = 0; k < 5; ++k) t.cushions.push_back({star[k], star[(k + 1) % 5], 0.037});
+  for (std::size_t k = 0; k < 5; ++k) t.cushions.push_back({star[k], star[(k + 1) % 5], 0.037, {}});
   const Caught c = invalid_table(t);
   EXPECT_EQ(c.field, "cushions[2]") << c.message;
   EXPECT_TRUE(contains(c.message, "crosses cushions[0]")) << c.message;
@@ -728,10 +728,10 @@ TEST(TableBoundary, ConvexCornerNeedsAJaw) {
   t.diamonds.clear();
   const std::vector<Vec2> v{{0, 0}, {2, 0}, {2, 0.5}, {1, 0.5}, {1, 1}, {0, 1}};
   t.cushions.clear();
-  for (std::size_t k = 0; k < v.size(); ++k) t.cushions.push_back({v[k], v[(k + 1) % v.size()], 0.037});
+  for (std::size_t k = 0; k < v.size(); ++k) t.cushions.push_back({v[k], v[(k + 1) % v.size()], 0.037, {}});
   EXPECT_EQ(invalid_table(t).field, "cushions[3].start") << invalid_table(t).message;
   // A triangle is fine (all corners turn left).
-  t.cushions = {{{0, 0}, {2, 0}, 0.037}, {{2, 0}, {1, 1}, 0.037}, {{1, 1}, {0, 0}, 0.037}};
+  t.cushions = {{{0, 0}, {2, 0}, 0.037, {}}, {{2, 0}, {1, 1}, 0.037, {}}, {{1, 1}, {0, 0}, 0.037, {}}};
   EXPECT_EQ(invalid_table(t).field, "accepted") << invalid_table(t).message;
 }
 
@@ -811,7 +811,7 @@ TEST(InsidePlayingArea, PositionsBeyondTheCushionsAreOutside) {
   tri.length = 2.0;
   tri.width = 1.0;
   tri.diamonds.clear();
-  tri.cushions = {{{0, 0}, {2, 0}, 0.037}, {{2, 0}, {1, 1}, 0.037}, {{1, 1}, {0, 0}, 0.037}};
+  tri.cushions = {{{0, 0}, {2, 0}, 0.037, {}}, {{2, 0}, {1, 1}, 0.037, {}}, {{1, 1}, {0, 0}, 0.037, {}}};
   ASSERT_NO_THROW(validate(tri));
   EXPECT_FALSE(inside_playing_area(tri, {0.1, 0.9}));
   EXPECT_FALSE(ball_on_table(tri, {0.1, 0.9}));
@@ -967,6 +967,167 @@ TEST(TableJson, BadNumbersAreRejectedByPathWithTheRange) {
             "table.cushions");
   EXPECT_EQ(json_error(R"({"length": 2, "width": 1, "ball": {"mass": 0.2}, "cushions": []})").field,
             "table.ball.radius");
+}
+
+// ------------------------------------------------------------------ names
+
+namespace names {
+
+const char* kRails[6] = {"bottom rail, left of the side pocket", "bottom rail, right of the side pocket",
+                         "right rail", "top rail, right of the side pocket", "top rail, left of the side pocket",
+                         "left rail"};
+
+// The documented scheme, checked against the geometry: each name says where
+// its part is.
+void expect_pocket_table_names(const Table& t) {
+  ASSERT_EQ(t.cushions.size(), 18u);
+  ASSERT_EQ(t.jaws.size(), 12u);
+  const double L = t.length, W = t.width;
+  std::vector<std::string> all;
+  for (std::size_t i = 0; i < t.cushions.size(); ++i) all.push_back(t.cushions[i].name);
+  for (std::size_t i = 0; i < t.jaws.size(); ++i) all.push_back(t.jaws[i].name);
+  std::vector<std::string> sorted = all;
+  std::sort(sorted.begin(), sorted.end());
+  EXPECT_EQ(std::adjacent_find(sorted.begin(), sorted.end()), sorted.end()) << "names repeat";
+  for (int rail = 0; rail < 6; ++rail) {
+    const CushionSegment& s = t.cushions[static_cast<std::size_t>(3 * rail + 2)];
+    EXPECT_EQ(s.name, kRails[rail]);
+    const Vec2 mid = 0.5 * (s.start + s.end);
+    if (contains(s.name, "bottom rail")) { EXPECT_EQ(mid.y, 0.0) << s.name; }
+    if (contains(s.name, "top rail")) { EXPECT_EQ(mid.y, W) << s.name; }
+    if (contains(s.name, "right rail")) { EXPECT_EQ(mid.x, L) << s.name; }
+    if (contains(s.name, "left rail")) { EXPECT_EQ(mid.x, 0.0) << s.name; }
+    if (contains(s.name, "left of the side")) { EXPECT_LT(mid.x, L / 2) << s.name; }
+    if (contains(s.name, "right of the side")) { EXPECT_GT(mid.x, L / 2) << s.name; }
+  }
+  for (std::size_t k = 0; k < 6; ++k) {
+    const Pocket& p = t.pockets[k];
+    const bool side = contains(p.name, "side");
+    for (std::size_t m = 0; m < 2; ++m) {
+      const JawArc& jaw = t.jaws[2 * k + m];
+      const CushionSegment& facing = t.cushions[3 * k + m];
+      const std::string prefix = p.name + " pocket, ";
+      ASSERT_EQ(jaw.name.rfind(prefix, 0), 0u) << jaw.name;
+      const std::string which = jaw.name.substr(prefix.size(), jaw.name.size() - prefix.size() - 4);
+      EXPECT_EQ(jaw.name, prefix + which + " jaw");
+      EXPECT_EQ(facing.name, prefix + which + " facing");
+      // The facing starts or ends on its jaw's circle.
+      EXPECT_NEAR(std::min(norm(facing.start - jaw.centre), norm(facing.end - jaw.centre)), jaw.radius, 1e-9)
+          << facing.name;
+      const Vec2 d = jaw.centre - p.centre;
+      if (side) {
+        // Left and right of the side pocket, as drawn.
+        if (which == "left") { EXPECT_LT(d.x, 0.0) << jaw.name; }
+        else if (which == "right") { EXPECT_GT(d.x, 0.0) << jaw.name; }
+        else { ADD_FAILURE() << jaw.name; }
+      } else {
+        // The rail the jaw ends: the bottom rail's jaw lies along x from the corner.
+        if (which == "bottom" || which == "top") { EXPECT_GT(std::abs(d.x), std::abs(d.y)) << jaw.name; }
+        else if (which == "left" || which == "right") { EXPECT_LT(std::abs(d.x), std::abs(d.y)) << jaw.name; }
+        else { ADD_FAILURE() << jaw.name; }
+        if (which == "bottom") { EXPECT_LT(jaw.centre.y, W / 2) << jaw.name; }
+        if (which == "top") { EXPECT_GT(jaw.centre.y, W / 2) << jaw.name; }
+        if (which == "left") { EXPECT_LT(jaw.centre.x, L / 2) << jaw.name; }
+        if (which == "right") { EXPECT_GT(jaw.centre.x, L / 2) << jaw.name; }
+        EXPECT_TRUE(contains(p.name, which)) << jaw.name << ": a corner pocket's jaw is on one of its two rails";
+      }
+    }
+  }
+}
+
+}  // namespace names
+
+TEST(TableNames, PoolAndSnookerPresetsFollowTheScheme) {
+  names::expect_pocket_table_names(pool_table_9ft());
+  names::expect_pocket_table_names(snooker_table_12ft());
+  TableSpec small = pool_table_9ft_spec();
+  small.length = 2.0;
+  small.width = 1.0;
+  names::expect_pocket_table_names(build_table(small));
+  // A few names spelled out, as the README lists them.
+  const Table t = pool_table_9ft();
+  EXPECT_EQ(t.jaws[0].name, "bottom-left pocket, left jaw");
+  EXPECT_EQ(t.jaws[1].name, "bottom-left pocket, bottom jaw");
+  EXPECT_EQ(t.jaws[2].name, "bottom-side pocket, left jaw");
+  EXPECT_EQ(t.jaws[3].name, "bottom-side pocket, right jaw");
+  EXPECT_EQ(t.jaws[8].name, "top-side pocket, right jaw");
+  EXPECT_EQ(t.cushions[1].name, "bottom-left pocket, bottom facing");
+  EXPECT_EQ(t.cushions[2].name, "bottom rail, left of the side pocket");
+}
+
+TEST(TableNames, CaromRailsAreNamedByRail) {
+  const Table t = carom_table_10ft();
+  ASSERT_EQ(t.cushions.size(), 4u);
+  EXPECT_EQ(t.cushions[0].name, "bottom rail");
+  EXPECT_EQ(t.cushions[1].name, "right rail");
+  EXPECT_EQ(t.cushions[2].name, "top rail");
+  EXPECT_EQ(t.cushions[3].name, "left rail");
+  EXPECT_EQ(t.cushions[0].start.y, 0.0);
+  EXPECT_EQ(t.cushions[1].start.x, t.length);
+}
+
+TEST(TableNames, JsonNamesAreKeptAndMissingOnesDefaultToTheirPath) {
+  const Table t = table_from_json(R"({"length": 2, "width": 1, "ball": {"mass": 0.2, "radius": 0.03},
+    "cushions": [{"name": "south", "start": [0, 0], "end": [2, 0], "contact_height": 0.04},
+                 {"start": [2, 0], "end": [2, 1], "contact_height": 0.04},
+                 {"name": "north \u00e9", "start": [2, 1], "end": [0, 1], "contact_height": 0.04},
+                 {"start": [0, 1], "end": [0, 0], "contact_height": 0.04}],
+    "jaws": [{"centre": [1, 0.5], "radius": 0.05, "contact_height": 0.04},
+             {"name": "post", "centre": [1.5, 0.5], "radius": 0.05, "contact_height": 0.04}]})");
+  EXPECT_EQ(t.cushions[0].name, "south");
+  EXPECT_EQ(t.cushions[1].name, "cushions[1]");
+  EXPECT_EQ(t.cushions[2].name, "north \xc3\xa9");
+  EXPECT_EQ(t.cushions[3].name, "cushions[3]");
+  EXPECT_EQ(t.jaws[0].name, "jaws[0]");
+  EXPECT_EQ(t.jaws[1].name, "post");
+  EXPECT_EQ(table_from_json(table_to_json(t)), t);
+  EXPECT_TRUE(contains(table_to_json(t), R"("name": "cushions[1]")"));
+}
+
+TEST(TableNames, UnnamedPartsInCppUseTheirPath) {
+  Table t = carom_table_10ft();
+  t.cushions[2].name.clear();
+  EXPECT_NO_THROW(validate(t));
+  EXPECT_EQ(cushion_name(t, 2), "cushions[2]");
+  EXPECT_EQ(cushion_name(t, 1), "right rail");
+  const Table back = table_from_json(table_to_json(t));
+  EXPECT_EQ(back.cushions[2].name, "cushions[2]");
+  name_parts(t);
+  EXPECT_EQ(back, t);
+  Table pool = pool_table_9ft();
+  pool.jaws[4].name.clear();
+  EXPECT_EQ(jaw_name(pool, 4), "jaws[4]");
+}
+
+TEST(TableNames, BadNamesAreRejectedByPath) {
+  const std::string ok64(64, 'x');
+  EXPECT_EQ(json_error(pool_full_with(R"("name": "bottom-left pocket, left facing")", "\"name\": \"" + ok64 + "\"")).field,
+            "accepted");
+  Caught c = json_error(pool_full_with(R"("name": "bottom-left pocket, left facing")", "\"name\": \"" + ok64 + "y\""));
+  EXPECT_EQ(c.field, "table.cushions[0].name");
+  EXPECT_TRUE(contains(c.message, "1 to 64 bytes")) << c.message;
+  c = json_error(pool_full_with(R"("name": "bottom-left pocket, left facing")", R"("name": "")"));
+  EXPECT_EQ(c.field, "table.cushions[0].name");
+  EXPECT_TRUE(contains(c.message, "must not be empty")) << c.message;
+  c = json_error(pool_full_with(R"("name": "bottom-left pocket, left facing")", R"("name": "tab\there")"));
+  EXPECT_EQ(c.field, "table.cushions[0].name");
+  EXPECT_TRUE(contains(c.message, "control characters")) << c.message;
+  c = json_error(pool_full_with(R"("name": "bottom-left pocket, left facing")", R"("name": 7)"));
+  EXPECT_EQ(c.field, "table.cushions[0].name");
+  // Unique across cushions and jaws: the later one is named.
+  c = json_error(pool_full_with(R"("name": "bottom-left pocket, left jaw")", R"("name": "left rail")"));
+  EXPECT_EQ(c.field, "table.jaws[0].name");
+  EXPECT_TRUE(contains(c.message, "repeats the name of table.cushions[17]")) << c.message;
+  // A given name may not take an unnamed part's default.
+  Table t = carom_table_10ft();
+  t.cushions[3].name.clear();
+  t.cushions[0].name = "cushions[3]";
+  c = catch_invalid([&] { validate(t); });
+  EXPECT_EQ(c.field, "cushions[3].name");
+  // In C++ too.
+  Table p = pool_table_9ft();
+  p.jaws[2].name = std::string("bell\x07");
+  EXPECT_EQ(catch_invalid([&] { validate(p); }).field, "jaws[2].name");
 }
 
 }  // namespace

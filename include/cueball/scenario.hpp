@@ -52,10 +52,22 @@ inline constexpr int kMaxEvents = 1'000'000;
 /// Most sampled ball states in a result: (floor(end_time x rate) + 1) x balls.
 inline constexpr double kMaxSamples = 200000;
 
+/// A cue strike in the scenario's units: degrees and ball radii.
+struct CueStrikeInUnits {
+  double aim_deg = 0.0;
+  double elevation_deg = 0.0;
+  double side = 0.0;    ///< a / R
+  double height = 0.0;  ///< b / R
+};
+
 struct ShotStrike {
   int ball = 0;              ///< id of the struck ball
   std::optional<int> target; ///< aim at this ball's centre (instead of strike.aim)
   CueStrike strike;          ///< offsets in metres here
+  /// The values as the scenario's "cue" gave them (scenario_from_json sets
+  /// it); scenario_to_json writes them back when they convert to `strike`
+  /// exactly, else the double nearest strike / unit that does.
+  std::optional<CueStrikeInUnits> given;
 };
 
 struct Scenario {
@@ -69,6 +81,27 @@ struct Scenario {
 
 /// Parses and validates a scenario; throws InvalidArgument with the JSON path.
 Scenario scenario_from_json(std::string_view json_text);
+
+/// The scenario written out in full, every value explicit: the table's whole
+/// geometry (names included), "parameters" (mass, radius, mu_s, mu_r, mu_sp,
+/// g), "cushion", "ball_collision", "max_events", every ball as placed
+/// ("balls": id, name, position, velocity, angular_velocity; no "rack"), the
+/// "cue" (target or aim_deg, elevation_deg, side, height, speed, mass,
+/// tip_restitution) and the "noise". scenario_from_json() of it gives the
+/// same simulation bit for bit: numbers are written as the shortest decimal
+/// that reads back to the same double, and angles and tip offsets as a value
+/// whose conversion to radians and metres gives the scenario's own (the value
+/// the JSON gave when there was one). Only a strike set in C++ whose radians
+/// or metres no value in degrees or ball radii converts to exactly (about 9
+/// per cent of angles and 4 per cent of offsets) comes back rounded to the
+/// nearest convertible one, within an ulp.
+/// `indent` as in result_to_json.
+std::string scenario_to_json(const Scenario& s, int indent = 1);
+
+/// A scenario JSON, or a result JSON of result_to_json() (an object with
+/// "events" and "scenario"), whose "scenario" is read: the way to replay a
+/// result. Errors name the path inside the scenario ("scenario.cue.speed").
+Scenario scenario_from_document(std::string_view json_text);
 
 /// The built-in default: a 9-ball break on a 9-ft pool table, cue ball on
 /// the head string, struck at 7 m/s at the centre of the 1 ball.
@@ -84,9 +117,14 @@ std::vector<SimulationBall> balls_after_strike(const Scenario& s, const std::opt
 /// Runs the scenario's shot. The result's first event is the cue strike.
 SimulationResult run_scenario(const Scenario& s);
 
-/// The documented result JSON: table, parameters, events, balls (final
-/// states, pocketing, trajectory segments) and, when sample_rate > 0, the
-/// states sampled at that rate (Hz). `indent`: spaces per nesting level, or
+/// The documented result JSON (README "Result format"): table, parameters,
+/// events (ball_cushion and ball_jaw events with the part's index and
+/// "cushion_name" / "jaw_name"), balls (final states, pocketing, trajectory
+/// segments), "cue_strike" ({"given": the scenario's cue, "resolved": ball,
+/// target, speed, aim_deg, elevation_deg, side, height and the same in
+/// radians and metres, cue mass and tip restitution}, or null without a cue),
+/// "scenario" (scenario_to_json: replaying it reproduces the result bit for
+/// bit) and, when sample_rate > 0, the states sampled at that rate (Hz). `indent`: spaces per nesting level, or
 /// -1 for everything on one line. More than kMaxSamples sampled states throw
 /// InvalidArgument naming "sample_rate" (before anything is allocated).
 std::string result_to_json(const Scenario& s, const SimulationResult& r, double sample_rate = 0.0, int indent = 1);

@@ -46,10 +46,32 @@
 //   throat: a ball that has passed the jaws and the shelf and is still between
 //   the facings is inside the circle before the facings end (the facings stop
 //   at the depth of the circle's centre). See build_table().
+//
+// Names. Every cushion segment and jaw has a name, which the result JSON's
+// events carry ("cushion_name", "jaw_name"). The presets and every table of
+// build_table() use this stable scheme (pockets: "bottom-left",
+// "bottom-side", "bottom-right", "top-right", "top-side", "top-left"):
+//   * nose segments, by rail: "bottom rail", "right rail", "top rail",
+//     "left rail"; on a rail with a side pocket, "bottom rail, left of the
+//     side pocket", "bottom rail, right of the side pocket", "top rail, left
+//     of the side pocket", "top rail, right of the side pocket";
+//   * jaws: "<pocket> pocket, <which> jaw" and the facing behind it
+//     "<pocket> pocket, <which> facing", where <which> is the rail the jaw
+//     ends for a corner pocket ("bottom-left pocket, bottom jaw" is on the
+//     bottom rail, "bottom-left pocket, left jaw" on the left one) and the
+//     side of the pocket for a side pocket ("bottom-side pocket, left jaw",
+//     "top-side pocket, right jaw"), left and right as drawn (x to the right).
+// A custom table (JSON or C++) may name its parts: a name is at most
+// kMaxPartNameBytes bytes without control characters, and the names in use
+// are unique across cushions and jaws. A part without a name (an empty name
+// in C++, no "name" in JSON) is called by its JSON path, "cushions[3]" or
+// "jaws[0]" (cushion_name(), jaw_name()); table_from_json() fills these
+// defaults in and table_to_json() writes them.
 #pragma once
 
 #include <array>
 #include <cmath>
+#include <cstddef>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -64,6 +86,7 @@ struct CushionSegment {
   Vec2 start;
   Vec2 end;
   double contact_height = 0.0;  ///< h, height of the nose above the bed, m, in (R, 2R)
+  std::string name;             ///< "Names" above; empty: the default "cushions[i]"
 
   friend bool operator==(const CushionSegment&, const CushionSegment&) = default;
 };
@@ -74,6 +97,7 @@ struct JawArc {
   Vec2 centre;
   double radius = 0.0;          ///< m, > 0
   double contact_height = 0.0;  ///< h, m, in (R, 2R)
+  std::string name;             ///< "Names" above; empty: the default "jaws[j]"
 
   friend bool operator==(const JawArc&, const JawArc&) = default;
 };
@@ -99,6 +123,15 @@ struct Table {
 };
 
 bool operator==(const Table& a, const Table& b);
+
+/// Longest cushion or jaw name, bytes.
+inline constexpr std::size_t kMaxPartNameBytes = 64;
+/// The name of table.cushions[i] in use: its own, or "cushions[i]" when empty.
+std::string cushion_name(const Table& table, std::size_t i);
+/// The name of table.jaws[j] in use: its own, or "jaws[j]" when empty.
+std::string jaw_name(const Table& table, std::size_t j);
+/// Gives every unnamed cushion and jaw its default name (cushion_name()).
+void name_parts(Table& table);
 
 // ------------------------------------------------------------------ contact rules
 
@@ -156,7 +189,8 @@ inline constexpr double kBoundaryTolerance = 1e-6;
 /// parameter ranges; at least 3 cushions; every point finite and within
 /// 0.5 m of the playing surface; segments at least 1e-6 m long; contact
 /// heights in (R, 2R); jaw radii and pocket radii in (0, 0.2] m; pocket
-/// names non-empty and unique.
+/// names non-empty and unique; cushion and jaw names as in "Names" (header
+/// comment), e.g. "jaws[2].name".
 ///
 /// Then the table must be a closed playing area, the boundary the simulator
 /// relies on (header comment). In list order, cushions[i].end joins
@@ -285,12 +319,14 @@ Table preset_table(std::string_view name);
 /// Full geometry (what table_to_json() writes):
 ///   { "name": string, "length": m, "width": m,
 ///     "ball": { "mass": kg, "radius": m },
-///     "cushions": [ { "start": [x, y], "end": [x, y], "contact_height": m }, ... ],
-///     "jaws":     [ { "centre": [x, y], "radius": m, "contact_height": m }, ... ],
+///     "cushions": [ { "name": string, "start": [x, y], "end": [x, y], "contact_height": m }, ... ],
+///     "jaws":     [ { "name": string, "centre": [x, y], "radius": m, "contact_height": m }, ... ],
 ///     "pockets":  [ { "name": string, "centre": [x, y], "radius": m }, ... ],
 ///     "diamonds": [ [x, y], ... ] }
 ///   "name", "jaws", "pockets" and "diamonds" are optional (default "custom"
-///   and empty); "ball" and the others are required.
+///   and empty); "ball" and the others are required. A cushion's or jaw's
+///   "name" is optional (default "cushions[i]", "jaws[j]"; "Names" above) and,
+///   when given, a non-empty string.
 ///
 /// Unknown keys are rejected. Every error is an InvalidArgument whose field()
 /// is the JSON path, with `path` naming the document itself, and whose message
@@ -300,7 +336,10 @@ Table preset_table(std::string_view name);
 /// is validated (validate(const Table&)), with fields named by JSON path.
 Table table_from_json(std::string_view json_text, std::string_view path = "table");
 
-/// The full-geometry form; table_from_json(table_to_json(t)) == t exactly.
+/// The full-geometry form, every cushion and jaw with its name in use;
+/// table_from_json(table_to_json(t)) == t exactly when every part is named
+/// (any table of build_table() or table_from_json()), else == t after
+/// name_parts(t).
 std::string table_to_json(const Table& table);
 
 }  // namespace cueball

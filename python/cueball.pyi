@@ -443,8 +443,8 @@ class ManyOutcomes(TypedDict):
     shots_per_second: float
 
 def simulate_many(
-    scenario: _Scenario = None,
-    actions: NDArray[Any] | Sequence[Sequence[_Float]] = ...,
+    scenario: _Scenario,
+    actions: NDArray[Any] | Sequence[Sequence[_Float]],
     layouts: NDArray[Any] | None = None,
     threads: _Int = 1,
     seed: _Int = 0,

@@ -39,7 +39,4 @@ PYBIND11_MODULE(cueball, m) {
 #ifdef CUEBALL_HAVE_SIMULATE_MANY
   bind_simulate_many(m);
 #endif
-#ifdef CUEBALL_HAVE_SIMULATE_MANY
-  bind_simulate_many(m);
-#endif
 }

@@ -98,9 +98,9 @@ void bind_simulate_many(py::module_& m) {
         out["shots_per_second"] = r.shots_per_second;
         return out;
       },
-      "scenario"_a = py::none(), "actions"_a, "layouts"_a = py::none(), "threads"_a = 1, "seed"_a = 0,
+      "scenario"_a, "actions"_a, "layouts"_a = py::none(), "threads"_a = 1, "seed"_a = 0,
       "noise"_a = false,
-      "Simulates N different shots of the scenario in one call, on `threads` threads (the GIL\n"
+      "Simulates N different shots of the scenario (None: the built-in break) in one call, on `threads` threads (the GIL\n"
       "released): `actions` is an (N, 5) array of cue speed (m/s), aim (deg), elevation (deg),\n"
       "side and height tip offsets (ball radii), the units of the scenario's \"cue\"; the ball\n"
       "struck is the scenario's cue ball. `layouts`, optional, is an (N, n_balls, 2) array of\n"

@@ -13,7 +13,7 @@ import cueball
 
 STUB = pathlib.Path(__file__).resolve().parents[1] / "cueball.pyi"
 # Names only for type checkers: the dicts' TypedDicts and the private aliases.
-STUB_ONLY = {"EventArrays", "BallArrays", "SegmentArrays", "StateArrays", "_Float", "_Int", "_Vec", "_Scenario"}
+STUB_ONLY = {"EventArrays", "BallArrays", "SegmentArrays", "StateArrays", "ManyOutcomes", "_Float", "_Int", "_Vec", "_Scenario"}
 
 
 def stub_tree():

@@ -47,6 +47,9 @@ def main() -> None:
                                    "cue": {"ball": 0, "target": 1, "speed": np.float32(7.0)}},
                                   shots=np.int64(4), seed=1)
     assert odds["shots"] == 4
+    many: cueball.ManyOutcomes = cueball.simulate_many(None, np.array([[3.0, 0.0, 0.0, 0.0, 0.0]]), threads=1)
+    pocketed: NDArray[np.bool_] = many["pocketed"]
+    assert pocketed.shape == (1, 10) and many["first_contact"][0] == 1
     try:
         cueball.simulate(sample_rate=-1.0)
     except cueball.InvalidArgument as e:

@@ -68,9 +68,10 @@ BallState rest_against_walls(const BallState& s, std::span<const Vec2> normals, 
   std::size_t resting = 0;
   for (std::size_t k = 0; k < count; ++k)
     if (dot(out.velocity, held[k]) < kMinApproachSpeed) held[resting++] = held[k];
+  // A slip below kSlipTolerance is rolling (cloth_motion.hpp): it presses nothing.
   const Vec2 u = slip_velocity(out, radius);
   const Vec2 clear = -nearest_clear_of_walls(-u, std::span<const Vec2>(held.data(), resting));
-  if (!(clear == u)) change_slip_by_spin(out, clear - u, radius);
+  if (norm(clear - u) > kSlipTolerance) change_slip_by_spin(out, clear - u, radius);
   return out;
 }
 
@@ -90,12 +91,13 @@ bool press_apart(BallState& a, BallState& b, double radius) {
     b.velocity = b.velocity + (0.5 * closing) * n;
   }
   // a's friction, -mu_s g u^, points at b when u_a . n < 0; b's at a when u_b . n > 0.
+  // A slip below kSlipTolerance is rolling (cloth_motion.hpp): it presses nothing.
   const double a_presses = -dot(slip_velocity(a, radius), n);
   const double b_presses = dot(slip_velocity(b, radius), n);
-  const double push_b = a_presses > 0.0 ? (2.0 / 5.0) * a_presses : 0.0;  // J / m on b, along n
-  const double push_a = b_presses > 0.0 ? (2.0 / 5.0) * b_presses : 0.0;  // J / m on a, along -n
-  if (a_presses > 0.0) change_slip_by_spin(a, a_presses * n, radius);
-  if (b_presses > 0.0) change_slip_by_spin(b, -b_presses * n, radius);
+  const double push_b = a_presses > kSlipTolerance ? (2.0 / 5.0) * a_presses : 0.0;  // J / m on b, along n
+  const double push_a = b_presses > kSlipTolerance ? (2.0 / 5.0) * b_presses : 0.0;  // J / m on a, along -n
+  if (a_presses > kSlipTolerance) change_slip_by_spin(a, a_presses * n, radius);
+  if (b_presses > kSlipTolerance) change_slip_by_spin(b, -b_presses * n, radius);
   a.velocity = a.velocity - push_a * n;
   b.velocity = b.velocity + push_b * n;
   // Changes below the resolution of the numbers are no change.

@@ -11,6 +11,7 @@ cd "$(dirname "$0")"
 mode=${1:-demo}
 
 packages=(g++ cmake ninja-build libgtest-dev libgmock-dev libbenchmark-dev nlohmann-json3-dev libcli11-dev gnuplot-nox pybind11-dev python3-dev)
+packages+=(python3-numpy python3-venv python3-pip python3-setuptools python3-wheel)  # the module's dependency; pip install of it into a venv, offline
 if [[ "$mode" == test ]]; then
   packages+=(clang-14 libclang-rt-14-dev llvm-14)  # libFuzzer (libclang_rt.fuzzer) and readable traces
   packages+=(chromium)                             # the viewer's end-to-end tests

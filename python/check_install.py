@@ -45,9 +45,10 @@ PROBE = r"""
 import json, sys
 import cueball
 result = cueball.simulate(sys.argv[1])
-pockets = {b["name"]: b["pocket"] for b in result["balls"]}
+doc = result.to_dict()
+pockets = {b["name"]: b["pocket"] for b in doc["balls"]}
 print(json.dumps({"file": cueball.__file__, "version": cueball.__version__,
-                  "events": len(result["events"]), "pockets": pockets}))
+                  "events": len(doc["events"]), "pockets": pockets}))
 """
 
 

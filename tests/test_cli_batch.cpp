@@ -23,6 +23,7 @@
 namespace cueball {
 namespace {
 
+using test::batch_json;
 using test::CliRun;
 using test::count_lines;
 using test::expect_usage_error;
@@ -31,14 +32,6 @@ using test::read_text;
 using test::TempDir;
 using Json = nlohmann::json;
 
-Json batch_json(const std::vector<std::string>& args) {
-  std::vector<std::string> all{"batch"};
-  all.insert(all.end(), args.begin(), args.end());
-  all.push_back("--json");
-  const CliRun r = run_cli(all);
-  EXPECT_EQ(r.status, 0) << r.err;
-  return Json::parse(r.out);
-}
 
 // The 9-ball break on the pool table written out in full, with jaws[0]
 // raised to a height valid for the table's ball but not for the smaller

@@ -27,6 +27,7 @@
 namespace cueball {
 namespace {
 
+using test::batch_json;
 using test::CliRun;
 using test::count_lines;
 using test::expect_usage_error;
@@ -90,15 +91,6 @@ Json simulate_json(const std::vector<std::string>& args) {
   return Json::parse(r.out);
 }
 
-// Runs `batch ... --json` and parses it.
-Json batch_json(const std::vector<std::string>& args) {
-  std::vector<std::string> all{"batch"};
-  all.insert(all.end(), args.begin(), args.end());
-  all.push_back("--json");
-  const CliRun r = run_cli(all);
-  EXPECT_EQ(r.status, 0) << r.err;
-  return Json::parse(r.out);
-}
 
 // ------------------------------------------------------------------ simulate: summary
 

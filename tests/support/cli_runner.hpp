@@ -3,6 +3,8 @@
 
 #include <gtest/gtest.h>
 
+#include <nlohmann/json.hpp>
+
 #include <sstream>
 #include <string>
 #include <vector>
@@ -40,6 +42,16 @@ inline void expect_usage_error(const std::vector<std::string>& args, const std::
   EXPECT_EQ(count_lines(r.err), 1) << r.err;
   EXPECT_NE(r.err.find(what), std::string::npos) << "stderr should name " << what << ": " << r.err;
   EXPECT_TRUE(r.out.empty()) << r.out;
+}
+
+// Runs `batch ... --json` (expecting success) and parses it.
+inline nlohmann::json batch_json(const std::vector<std::string>& args) {
+  std::vector<std::string> all{"batch"};
+  all.insert(all.end(), args.begin(), args.end());
+  all.push_back("--json");
+  const CliRun r = run_cli(all);
+  EXPECT_EQ(r.status, 0) << r.err;
+  return nlohmann::json::parse(r.out);
 }
 
 }  // namespace cueball::test

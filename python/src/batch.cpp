@@ -2,6 +2,7 @@
 #include "bindings.hpp"
 
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <string>
 #include "cueball/batch.hpp"
@@ -50,17 +51,17 @@ void bind_batch(py::module_& m) {
         if (threads < 1 || threads > cueball::kMaxBatchThreads)
           throw cueball::InvalidArgument("threads", static_cast<double>(threads),
                                          "[1, " + std::to_string(cueball::kMaxBatchThreads) + "]", "worker threads");
-        const std::optional<std::string> text = scenario_text(scenario);
-        cueball::Scenario s;
+        const ScenarioInput input = scenario_input(scenario);
+        std::shared_ptr<const cueball::Scenario> s;
         cueball::BatchResult r;
         {
           py::gil_scoped_release release;
-          s = load_scenario(text);
+          s = load_scenario(input);
           // A worker's error (e.g. InvalidArgument) is rethrown here, in this thread.
           r = cueball::simulate_batch(
-              s, cueball::BatchOptions{static_cast<int>(shots), static_cast<int>(threads), seed});
+              *s, cueball::BatchOptions{static_cast<int>(shots), static_cast<int>(threads), seed});
         }
-        return batch_dict(s, r);
+        return batch_dict(*s, r);
       },
       "scenario"_a = py::none(), "shots"_a = 1000, "threads"_a = 1, "seed"_a = 0,
       "Simulates `shots` copies of the scenario's shot with Gaussian execution noise on the cue\n"

@@ -18,6 +18,9 @@
 #include <utility>
 #include <vector>
 
+#include <memory>
+
+#include "cueball/cushion_impact.hpp"
 #include "cueball/parameters.hpp"
 #include "cueball/scenario.hpp"
 #include "cueball/vec.hpp"
@@ -35,6 +38,11 @@ void bind_cloth_motion(py::module_& m);  // cloth_motion.cpp
 void bind_planner(py::module_& m);       // planner.cpp
 void bind_cue_strike(py::module_& m);    // cue_strike.cpp
 void bind_cushion(py::module_& m);       // cushion.cpp
+void bind_table(py::module_& m);         // table.cpp: Table, its parts, TableSpec, presets
+void bind_rack(py::module_& m);          // rack.cpp: racks, spots
+void bind_ball_collision(py::module_& m);  // ball_collision.cpp
+void bind_cushion_fit(py::module_& m);   // cushion_fit.cpp: fit_cushion
+void bind_scenario(py::module_& m);      // scenario.cpp: Scenario, ShotStrike, SimulationBall, SimulationSettings
 void bind_simulation(py::module_& m);    // simulation.cpp: simulate
 void bind_batch(py::module_& m);         // batch.cpp: simulate_batch
 #ifdef CUEBALL_HAVE_SIMULATE_MANY
@@ -73,19 +81,38 @@ void add_value_semantics(py::class_<T>& cls, const char* type, std::vector<const
   cls.def(py::pickle([get](const T& v) { return get(v); }, [make](const py::tuple& t) { return make(t); }));
 }
 
-// Default argument of every function that needs the ball and cloth.
+// Default argument of every function that needs the ball and cloth: the
+// pool preset, as the default table, rack and scenario (python/README.md,
+// "Units and defaults").
 py::arg_v params_arg();
+
+// The cushion solver named 'exact' or 'paper' (InvalidArgument 'solver'
+// otherwise), and its name (cushion.cpp).
+cueball::CushionSolver cushion_solver(const std::string& name);
+const char* cushion_solver_name(cueball::CushionSolver solver);
 
 // ------------------------------------------------------------------ scenarios (scenario_input.cpp)
 
-// The scenario's JSON text, or nothing for the built-in 9-ball break.
-// Accepts None, a dict (serialised with Python's json module), a str that is
-// JSON text (its first non-blank character is '{') or else a file's path, or
-// a path (os.PathLike). Needs the GIL.
-std::optional<std::string> scenario_text(const py::object& scenario);
+// A scenario as Python gave it: a Scenario object (shared, never changed:
+// the class is read-only), or the JSON text of one, or neither for the
+// built-in 9-ball break.
+struct ScenarioInput {
+  std::shared_ptr<const cueball::Scenario> scenario;
+  std::optional<std::string> text;
+};
 
-// The scenario of scenario_text()'s text (the built-in break for nothing);
-// runs without the GIL.
-cueball::Scenario load_scenario(const std::optional<std::string>& text);
+// Accepts None, a cueball.Scenario, a dict (serialised with Python's json
+// module), a str that is JSON text (its first non-blank character is '{') or
+// else a file's path, or a path (os.PathLike). Needs the GIL.
+ScenarioInput scenario_input(const py::object& scenario);
+
+// The scenario of scenario_input() (the built-in break for neither); runs
+// without the GIL.
+std::shared_ptr<const cueball::Scenario> load_scenario(const ScenarioInput& input);
+
+// A dict as JSON text for the library's readers: NumPy scalars and arrays
+// become numbers and lists, NaN and infinity raise InvalidArgument naming
+// the path under `root` ("scenario.cue.speed"). Needs the GIL.
+std::string json_text(const py::handle& dict, const std::string& root);
 
 }  // namespace cueball_python

@@ -16,6 +16,6 @@ std::string repr_of(const char* type, const std::vector<const char*>& names, con
   return out + ")";
 }
 
-py::arg_v params_arg() { return py::arg_v("params", cueball::snooker_parameters(), "snooker_parameters()"); }
+py::arg_v params_arg() { return py::arg_v("params", cueball::pool_parameters(), "pool_parameters()"); }
 
 }  // namespace cueball_python

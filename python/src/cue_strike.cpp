@@ -2,10 +2,18 @@
 #include "bindings.hpp"
 
 #include <limits>
+#include <numbers>
 #include "cueball/cue_strike.hpp"
 #include "cueball/errors.hpp"
 
 namespace cueball_python {
+
+namespace {
+
+// The scenario's degree (src/scenario.cpp): the same product converts alike.
+constexpr double kDegree = std::numbers::pi / 180.0;
+
+}  // namespace
 
 void bind_cue_strike(py::module_& m) {
   using cueball::CueParameters;
@@ -38,7 +46,30 @@ void bind_cue_strike(py::module_& m) {
       .def_readwrite("aim", &CueStrike::aim, "phi, rad, anticlockwise from +x")
       .def_readwrite("elevation", &CueStrike::elevation, "theta, rad; 0 = level cue")
       .def_readwrite("side_offset", &CueStrike::side_offset, "a, m; > 0 right english")
-      .def_readwrite("height_offset", &CueStrike::height_offset, "b, m; > 0 above the centre");
+      .def_readwrite("height_offset", &CueStrike::height_offset, "b, m; > 0 above the centre")
+      .def_static(
+          "from_units",
+          [](double speed, double aim_deg, double elevation_deg, double side, double height, double radius) {
+            cueball::check_range(cueball::kRadiusRange, radius);
+            return CueStrike{speed, aim_deg * kDegree, elevation_deg * kDegree, side * radius, height * radius};
+          },
+          "speed"_a, "aim_deg"_a = 0.0, "elevation_deg"_a = 0.0, "side"_a = 0.0, "height"_a = 0.0, py::kw_only(),
+          py::arg_v("radius", cueball::pool_parameters().ball.radius, "pool_parameters().ball.radius"),
+          "The strike given in the scenario's units (its JSON \"cue\", simulate_many's actions): cue speed\n"
+          "m/s, aim and elevation in degrees, side and height tip offsets in ball radii of a ball of\n"
+          "`radius` m. Converts as the scenario reader does (deg * pi/180, offset * radius), so a\n"
+          "scenario with these values strikes with exactly this CueStrike.")
+      .def(
+          "in_units",
+          [](const CueStrike& s, double radius) {
+            cueball::check_range(cueball::kRadiusRange, radius);
+            return py::dict("speed"_a = s.speed, "aim_deg"_a = s.aim / kDegree, "elevation_deg"_a = s.elevation / kDegree,
+                            "side"_a = s.side_offset / radius, "height"_a = s.height_offset / radius);
+          },
+          py::kw_only(), py::arg_v("radius", cueball::pool_parameters().ball.radius, "pool_parameters().ball.radius"),
+          "The strike in the scenario's units, a dict with the JSON \"cue\"'s keys speed (m/s), aim_deg,\n"
+          "elevation_deg (degrees), side, height (ball radii of a ball of `radius` m); from_units of it\n"
+          "gives this strike back to within an ulp.");
   add_value_semantics(
       strike, "CueStrike", {"speed", "aim", "elevation", "side_offset", "height_offset"},
       [](const CueStrike& s) { return py::make_tuple(s.speed, s.aim, s.elevation, s.side_offset, s.height_offset); },

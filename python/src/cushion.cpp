@@ -10,15 +10,15 @@
 
 namespace cueball_python {
 
-namespace {
-
 cueball::CushionSolver cushion_solver(const std::string& name) {
   if (name == "exact") return cueball::CushionSolver::exact;
   if (name == "paper") return cueball::CushionSolver::paper;
   throw cueball::InvalidArgument("solver", "solver = '" + name + "' is not a solver; allowed: 'exact', 'paper'");
 }
 
-}  // namespace
+const char* cushion_solver_name(cueball::CushionSolver solver) {
+  return solver == cueball::CushionSolver::paper ? "paper" : "exact";
+}
 
 void bind_cushion(py::module_& m) {
   using cueball::CushionImpactResult;

@@ -34,6 +34,11 @@ PYBIND11_MODULE(cueball, m) {
   bind_planner(m);
   bind_cue_strike(m);
   bind_cushion(m);
+  bind_cushion_fit(m);
+  bind_ball_collision(m);
+  bind_table(m);
+  bind_rack(m);
+  bind_scenario(m);
   bind_simulation(m);
   bind_batch(m);
 #ifdef CUEBALL_HAVE_SIMULATE_MANY

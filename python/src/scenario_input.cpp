@@ -1,4 +1,4 @@
-// include/cueball/scenario.hpp: a scenario given from Python (None, dict, JSON text, path).
+// include/cueball/scenario.hpp: a scenario given from Python (None, Scenario, dict, JSON text, path).
 #include "bindings.hpp"
 
 #include <cctype>
@@ -113,28 +113,30 @@ std::string read_scenario_file(const py::object& path) {
 
 }  // namespace
 
-// The scenario's JSON text, or nothing for the built-in 9-ball break.
-// Accepts None, a dict (serialised with Python's json module), a str that is
-// JSON text (a scenario is an object: its first non-blank character is '{')
-// or else a file's path, or a path (os.PathLike).
-std::optional<std::string> scenario_text(const py::object& scenario) {
-  if (scenario.is_none()) return std::nullopt;
+std::string json_text(const py::handle& dict, const std::string& root) {
+  const py::object plain = ScenarioObjects().normalise(dict, root, 0);
+  return py::module_::import("json").attr("dumps")(plain).cast<std::string>();
+}
+
+ScenarioInput scenario_input(const py::object& scenario) {
+  if (scenario.is_none()) return {};
+  if (py::isinstance<cueball::Scenario>(scenario)) return {scenario.cast<std::shared_ptr<cueball::Scenario>>(), {}};
   if (py::isinstance<py::str>(scenario)) {
     std::string text = scenario.cast<std::string>();
     const std::size_t first = text.find_first_not_of(" \t\r\n");
-    return first != std::string::npos && text[first] == '{' ? text : read_scenario_file(scenario);
+    return {nullptr, first != std::string::npos && text[first] == '{' ? text : read_scenario_file(scenario)};
   }
-  if (py::isinstance(scenario, py::module_::import("os").attr("PathLike"))) return read_scenario_file(scenario);
-  if (py::isinstance<py::dict>(scenario)) {
-    const py::object plain = ScenarioObjects().normalise(scenario, "scenario", 0);
-    return py::module_::import("json").attr("dumps")(plain).cast<std::string>();
-  }
-  throw py::type_error("scenario must be None (the built-in 9-ball break), a dict, JSON text, or a path (str or os.PathLike)");
+  if (py::isinstance(scenario, py::module_::import("os").attr("PathLike"))) return {nullptr, read_scenario_file(scenario)};
+  if (py::isinstance<py::dict>(scenario)) return {nullptr, json_text(scenario, "scenario")};
+  throw py::type_error(
+      "scenario must be None (the built-in 9-ball break), a cueball.Scenario, a dict, JSON text, or a path (str or "
+      "os.PathLike)");
 }
 
-cueball::Scenario load_scenario(const std::optional<std::string>& text) {
-  if (text) return cueball::scenario_from_json(*text);
-  static const cueball::Scenario built_in = cueball::default_scenario();  // read once
+std::shared_ptr<const cueball::Scenario> load_scenario(const ScenarioInput& input) {
+  if (input.scenario) return input.scenario;
+  if (input.text) return std::make_shared<const cueball::Scenario>(cueball::scenario_from_json(*input.text));
+  static const auto built_in = std::make_shared<const cueball::Scenario>(cueball::default_scenario());  // made once
   return built_in;
 }
 

@@ -71,12 +71,12 @@ void bind_simulate_many(py::module_& m) {
         if (threads < 1 || threads > cueball::kMaxBatchThreads)
           throw cueball::InvalidArgument("threads", static_cast<double>(threads),
                                          "[1, " + std::to_string(cueball::kMaxBatchThreads) + "]", "worker threads");
-        const std::optional<std::string> text = scenario_text(scenario);
+        const ScenarioInput input = scenario_input(scenario);
         auto result = std::make_unique<cueball::ManyResult>();
         {
           py::gil_scoped_release release;
-          const cueball::Scenario s = load_scenario(text);
-          *result = cueball::simulate_many(s, shots, positions, {static_cast<int>(threads), seed, noise});
+          const std::shared_ptr<const cueball::Scenario> s = load_scenario(input);
+          *result = cueball::simulate_many(*s, shots, positions, {static_cast<int>(threads), seed, noise});
         }
         const cueball::ManyResult& r = *result;
         const py::capsule owner(result.release(), [](void* p) { delete static_cast<cueball::ManyResult*>(p); });

@@ -275,6 +275,10 @@ void bind_simulation(py::module_& m) {
           "segment: time (start, s), position (k, 2), velocity (k, 2), angular_velocity (k, 3) at the\n"
           "start, phase (int8, index into PHASES). Between starts the state is evolve(start, t - time).")
       .def_property_readonly(
+          "scenario", [](const Result& r) { return std::const_pointer_cast<cueball::Scenario>(r.scenario); },
+          "the Scenario that ran (the same object when simulate() was given one): simulate(result.scenario)\n"
+          "reproduces this result bit for bit")
+      .def_property_readonly(
           "pocket_names",
           [](const Result& r) {
             py::list names;
@@ -331,12 +335,12 @@ void bind_simulation(py::module_& m) {
   m.def(
       "simulate",
       [](const py::object& scenario, double sample_rate) {
-        const std::optional<std::string> text = scenario_text(scenario);
+        const ScenarioInput input = scenario_input(scenario);
         Result r;
         {
           py::gil_scoped_release release;
           cueball::require_in_range("sample_rate", sample_rate, 0.0, 1e4, "sampling rate, Hz (0: none)");
-          auto s = std::make_shared<const cueball::Scenario>(load_scenario(text));
+          std::shared_ptr<const cueball::Scenario> s = load_scenario(input);
           r.result = cueball::run_scenario(*s);
           r.scenario = std::move(s);
         }
@@ -359,9 +363,10 @@ void bind_simulation(py::module_& m) {
         if (repetitions < 1 || repetitions > 1000000)
           throw cueball::InvalidArgument("repetitions", static_cast<double>(repetitions), "[1, 1e6]",
                                          "runs to time");
-        const std::optional<std::string> text = scenario_text(scenario);
+        const ScenarioInput input = scenario_input(scenario);
         py::gil_scoped_release release;
-        const cueball::Scenario s = load_scenario(text);
+        const std::shared_ptr<const cueball::Scenario> scenario_ptr = load_scenario(input);
+        const cueball::Scenario& s = *scenario_ptr;
         std::size_t events = 0;
         const auto start = std::chrono::steady_clock::now();
         for (long long k = 0; k < repetitions; ++k) events += cueball::run_scenario(s).events.size();

@@ -1,0 +1,284 @@
+// include/cueball/scenario.hpp: a shot as an object. A Scenario is
+// read-only and always valid; every way of making one goes through the
+// library's JSON reader (scenario_from_json), so the checks, the defaults and
+// the units (degrees and ball radii for the cue) are the JSON's, and its
+// JSON (scenario_to_json) reads back to the same simulation bit for bit.
+#include "bindings.hpp"
+
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+#include "cueball/errors.hpp"
+#include "cueball/rack.hpp"
+#include "cueball/scenario.hpp"
+
+namespace cueball_python {
+
+namespace {
+
+using cueball::Scenario;
+using cueball::SimulationBall;
+using cueball::SimulationSettings;
+using ScenarioPtr = std::shared_ptr<Scenario>;
+
+// The scenario's "cue" in its units, as the JSON gives it.
+struct ShotStrike {
+  double speed = 3.0;  // the JSON's default
+  double aim_deg = 0.0;
+  double elevation_deg = 0.0;
+  double side = 0.0;
+  double height = 0.0;
+  int ball = 0;
+  std::optional<int> target;
+};
+
+py::tuple shot_fields(const ShotStrike& s) {
+  return py::make_tuple(s.speed, s.aim_deg, s.elevation_deg, s.side, s.height, s.ball,
+                        s.target ? py::object(py::int_(*s.target)) : py::object(py::none()));
+}
+
+py::object json_loads(const std::string& text) { return py::module_::import("json").attr("loads")(text); }
+
+py::dict written(const Scenario& s) { return json_loads(cueball::scenario_to_json(s, -1)); }
+
+ScenarioPtr from_json(const std::string& text) {
+  py::gil_scoped_release release;
+  return std::make_shared<Scenario>(cueball::scenario_from_json(text));
+}
+
+ScenarioPtr from_document(const std::string& text) {
+  py::gil_scoped_release release;
+  return std::make_shared<Scenario>(cueball::scenario_from_document(text));
+}
+
+ScenarioPtr built_in() { return std::make_shared<Scenario>(cueball::default_scenario()); }
+
+std::string to_json(const Scenario& s, int indent) {
+  if (indent < -1 || indent > 16)
+    throw cueball::InvalidArgument("indent", indent, "[-1, 16]", "spaces per level, -1: one line");
+  return cueball::scenario_to_json(s, indent);
+}
+
+const std::vector<const char*> kShotFields{"speed", "aim_deg", "elevation_deg", "side", "height", "ball", "target"};
+
+// The cue as the scenario's JSON writes it (the values that convert exactly).
+std::optional<ShotStrike> cue_of(const Scenario& s) {
+  if (!s.cue) return std::nullopt;
+  const py::dict c = written(s)["cue"].cast<py::dict>();
+  ShotStrike out;
+  out.speed = c["speed"].cast<double>();
+  out.aim_deg = c.contains("aim_deg") ? c["aim_deg"].cast<double>() : 0.0;
+  out.elevation_deg = c["elevation_deg"].cast<double>();
+  out.side = c["side"].cast<double>();
+  out.height = c["height"].cast<double>();
+  out.ball = s.cue->ball;
+  out.target = s.cue->target;
+  return out;
+}
+
+py::list vec(const cueball::Vec2& v) { return py::list(to_tuple(v)); }
+py::list vec(const cueball::Vec3& v) { return py::list(to_tuple(v)); }
+
+py::dict ball_json(const SimulationBall& b) {
+  py::dict d("id"_a = b.id, "position"_a = vec(b.state.position), "velocity"_a = vec(b.state.velocity),
+             "angular_velocity"_a = vec(b.state.angular_velocity));
+  if (!b.name.empty()) d["name"] = b.name;
+  return d;
+}
+
+// The scenario's JSON of the parts given to Scenario(...); the table's own
+// JSON text goes in as it is.
+std::string scenario_json(const py::object& table, const py::iterable& balls, const std::optional<ShotStrike>& cue,
+                          const std::optional<SimulationSettings>& settings,
+                          const std::optional<cueball::CueParameters>& cue_parameters, const py::object& noise) {
+  std::string table_text;
+  if (py::isinstance<py::str>(table)) {
+    table_text = py::module_::import("json").attr("dumps")(table).cast<std::string>();
+  } else if (py::isinstance<cueball::Table>(table)) {
+    table_text = cueball::table_to_json(table.cast<const cueball::Table&>());
+  } else {
+    throw py::type_error("table must be a cueball.Table or a preset's name (TABLE_PRESETS)");
+  }
+  py::dict d;
+  py::list placed;
+  for (const py::handle& b : balls) {
+    if (py::isinstance<SimulationBall>(b)) {
+      placed.append(ball_json(b.cast<const SimulationBall&>()));
+    } else if (py::isinstance<cueball::PlacedBall>(b)) {
+      const auto& p = b.cast<const cueball::PlacedBall&>();
+      placed.append(ball_json(SimulationBall{p.id, p.name, {p.position, {}, {}}}));
+    } else {
+      throw py::type_error("balls must be SimulationBall or PlacedBall objects");
+    }
+  }
+  d["balls"] = placed;
+  if (settings) {
+    const cueball::Parameters& p = settings->parameters;
+    d["parameters"] = py::dict("mass"_a = p.ball.mass, "radius"_a = p.ball.radius, "mu_s"_a = p.cloth.sliding_friction,
+                               "mu_r"_a = p.cloth.rolling_resistance, "mu_sp"_a = p.cloth.spin_friction,
+                               "g"_a = p.cloth.gravity);
+    d["cushion"] = py::dict("restitution"_a = settings->cushion_restitution, "friction"_a = settings->cushion_friction);
+    const cueball::BallCollisionParameters& c = settings->ball_collision;
+    d["ball_collision"] = py::dict("restitution"_a = c.restitution, "friction"_a = c.friction,
+                                   "friction_excess"_a = c.friction_excess, "friction_decay"_a = c.friction_decay);
+    d["max_events"] = settings->max_events;
+  }
+  if (cue) {
+    py::dict c("ball"_a = cue->ball, "speed"_a = cue->speed, "elevation_deg"_a = cue->elevation_deg,
+               "side"_a = cue->side, "height"_a = cue->height);
+    if (cue->target) c["target"] = *cue->target;
+    if (!cue->target || cue->aim_deg != 0.0) c["aim_deg"] = cue->aim_deg;  // both: the reader's error
+    if (cue_parameters) {
+      c["mass"] = cue_parameters->mass;
+      c["tip_restitution"] = cue_parameters->tip_restitution;
+    }
+    d["cue"] = c;
+  } else if (cue_parameters) {
+    throw cueball::InvalidArgument("cue_parameters", "cue_parameters: the cue's mass and tip belong to a cue strike; "
+                                                     "give cue= as well");
+  }
+  if (!noise.is_none()) d["noise"] = noise;
+  const std::string rest = json_text(d, "scenario");  // "{...}", never empty: "balls" is there
+  return "{\"table\": " + table_text + ", " + rest.substr(1);
+}
+
+}  // namespace
+
+void bind_scenario(py::module_& m) {
+  py::class_<SimulationBall> ball_cls(m, "SimulationBall",
+                                  "A ball placed for a shot: id (0-1000000, unique), name (default the id), state\n"
+                                  "(BallState: position m, velocity m/s, angular_velocity rad/s) before the strike.");
+  ball_cls.def(py::init([](int id, const Pair& position, const Pair& velocity, const Triple& angular_velocity,
+                       const std::string& name) {
+             return SimulationBall{id, name, {to_vec2(position), to_vec2(velocity), to_vec3(angular_velocity)}};
+           }),
+           "id"_a, "position"_a, "velocity"_a = Pair{0.0, 0.0}, "angular_velocity"_a = Triple{0.0, 0.0, 0.0},
+           "name"_a = "")
+      .def_readwrite("id", &SimulationBall::id)
+      .def_readwrite("name", &SimulationBall::name, "'' in a new ball: the scenario names it by its id")
+      .def_readwrite("state", &SimulationBall::state, "BallState (a copy; assign a new one to change it)");
+  add_value_semantics(
+      ball_cls, "SimulationBall", {"id", "name", "state"},
+      [](const SimulationBall& b) { return py::make_tuple(b.id, b.name, b.state); },
+      [](const py::tuple& t) {
+        return SimulationBall{t[0].cast<int>(), t[1].cast<std::string>(), t[2].cast<cueball::BallState>()};
+      });
+
+  const SimulationSettings defaults;
+  py::class_<SimulationSettings> settings_cls(
+      m, "SimulationSettings",
+      "The physics of a shot: parameters (ball and cloth), the cushion's e_e and mu_w (Mathavan 2010),\n"
+      "the ball-ball contact, and max_events (SimulationError beyond it, [1, 1e6]).");
+  settings_cls
+      .def(py::init([](const cueball::Parameters& p, double e, double mu, const cueball::BallCollisionParameters& c,
+                       int max_events) { return SimulationSettings{p, e, mu, c, max_events}; }),
+           py::arg_v("parameters", cueball::pool_parameters(), "pool_parameters()"),
+           "cushion_restitution"_a = defaults.cushion_restitution, "cushion_friction"_a = defaults.cushion_friction,
+           py::arg_v("ball_collision", defaults.ball_collision, "ball_collision_alciatore()"),
+           "max_events"_a = defaults.max_events)
+      .def_readwrite("parameters", &SimulationSettings::parameters)
+      .def_readwrite("cushion_restitution", &SimulationSettings::cushion_restitution, "e_e, (0, 1]")
+      .def_readwrite("cushion_friction", &SimulationSettings::cushion_friction, "mu_w, >= 0")
+      .def_readwrite("ball_collision", &SimulationSettings::ball_collision)
+      .def_readwrite("max_events", &SimulationSettings::max_events);
+  add_value_semantics(
+      settings_cls, "SimulationSettings",
+      {"parameters", "cushion_restitution", "cushion_friction", "ball_collision", "max_events"},
+      [](const SimulationSettings& s) {
+        return py::make_tuple(s.parameters, s.cushion_restitution, s.cushion_friction, s.ball_collision, s.max_events);
+      },
+      [](const py::tuple& t) {
+        return SimulationSettings{t[0].cast<cueball::Parameters>(), t[1].cast<double>(), t[2].cast<double>(),
+                                  t[3].cast<cueball::BallCollisionParameters>(), t[4].cast<int>()};
+      });
+
+  py::class_<ShotStrike> shot(
+      m, "ShotStrike",
+      "A scenario's cue strike in the scenario's units (its JSON \"cue\"): speed of the cue, m/s, (0, 12];\n"
+      "aim_deg, degrees anticlockwise from +x (or target, a ball id to aim at); elevation_deg, degrees,\n"
+      "[0, 89]; side (to the right seen from behind the cue) and height (above the centre) tip offsets\n"
+      "in ball radii, miscue beyond 0.5; ball, the id of the ball struck. Checked when a Scenario is made.");
+  shot.def(py::init([](double speed, double aim_deg, double elevation_deg, double side, double height, int ball,
+                       std::optional<int> target) {
+             return ShotStrike{speed, aim_deg, elevation_deg, side, height, ball, target};
+           }),
+           "speed"_a, "aim_deg"_a = 0.0, "elevation_deg"_a = 0.0, "side"_a = 0.0, "height"_a = 0.0, "ball"_a = 0,
+           "target"_a = py::none())
+      .def_readwrite("speed", &ShotStrike::speed, "cue speed, m/s")
+      .def_readwrite("aim_deg", &ShotStrike::aim_deg, "degrees from +x")
+      .def_readwrite("elevation_deg", &ShotStrike::elevation_deg, "degrees")
+      .def_readwrite("side", &ShotStrike::side, "a / R, ball radii")
+      .def_readwrite("height", &ShotStrike::height, "b / R, ball radii")
+      .def_readwrite("ball", &ShotStrike::ball, "id of the struck ball")
+      .def_readwrite("target", &ShotStrike::target, "id of the ball aimed at, or None (aim_deg)");
+  add_value_semantics(
+      shot, "ShotStrike", kShotFields, shot_fields,
+      [](const py::tuple& t) {
+        return ShotStrike{t[0].cast<double>(), t[1].cast<double>(), t[2].cast<double>(), t[3].cast<double>(),
+                          t[4].cast<double>(), t[5].cast<int>(),    t[6].cast<std::optional<int>>()};
+      });
+
+  py::class_<Scenario, ScenarioPtr> scenario(
+      m, "Scenario",
+      "A shot: table, balls, cue strike, physics. Read-only and always valid (made through the\n"
+      "library's scenario reader: the JSON's checks, defaults and units). simulate(), simulate_batch()\n"
+      "and simulate_many() take it wherever they take a scenario dict; == compares the full JSON;\n"
+      "pickled as its JSON, which reads back to the same simulation bit for bit.");
+  scenario
+      .def(py::init([](const py::object& table, const py::iterable& balls, std::optional<ShotStrike> cue,
+                       std::optional<SimulationSettings> settings, std::optional<cueball::CueParameters> cue_parameters,
+                       const py::object& noise) {
+             return from_json(scenario_json(table, balls, cue, settings, cue_parameters, noise));
+           }),
+           "table"_a, "balls"_a, "cue"_a = py::none(), py::kw_only(), "settings"_a = py::none(),
+           "cue_parameters"_a = py::none(), "noise"_a = py::none(),
+           "A scenario from its parts: table (a Table or a preset's name), balls (SimulationBall or\n"
+           "PlacedBall, e.g. a rack), cue (ShotStrike, or None: the balls start as given), settings\n"
+           "(SimulationSettings; None: the table's ball with the cloth preset that goes with the table),\n"
+           "cue_parameters (CueParameters; None: the default cue), noise (a dict of the JSON's \"noise\":\n"
+           "speed m/s, aim_deg, elevation_deg degrees, side, height ball radii). Errors name the JSON path\n"
+           "('scenario.balls[1].position').")
+      .def_static("default", &built_in, "The built-in 9-ball break (simulate(None)'s).")
+      .def_static("from_json", &from_json, "text"_a, "A scenario from its JSON text (README 'Scenario format').")
+      .def_static("from_document", &from_document, "text"_a,
+                  "A scenario JSON, or a result JSON (Result.to_json()) whose \"scenario\" is read: a replay.")
+      .def("to_json", &to_json, "indent"_a = 1, "The scenario in full, every value explicit; from_json of it simulates bit for bit alike.")
+      .def("to_dict", &written, "json.loads(to_json()).")
+      .def_readonly("table", &Scenario::table, "the Table (a copy)")
+      .def_readonly("balls", &Scenario::balls, "list of SimulationBall as placed, before the strike (copies)")
+      .def_property_readonly(
+          "cue", &cue_of,
+          "the cue strike in the scenario's units (ShotStrike: degrees, ball radii), or None")
+      .def_readonly("cue_parameters", &Scenario::cue_parameters, "CueParameters (a copy)")
+      .def_property_readonly(
+          "noise", [](const Scenario& s) { return written(s)["noise"]; },
+          "the execution noise of simulate_batch, a dict in the scenario's units (speed m/s, aim_deg,\n"
+          "elevation_deg degrees, side, height ball radii)")
+      .def_readonly("settings", &Scenario::settings, "SimulationSettings (a copy)")
+      .def_property_readonly(
+          "parameters", [](const Scenario& s) { return s.settings.parameters; }, "settings.parameters")
+      .def("__eq__",
+           [](const Scenario& a, const py::object& b) -> py::object {
+             if (!py::isinstance<Scenario>(b)) return py::reinterpret_borrow<py::object>(Py_NotImplemented);
+             return py::bool_(cueball::scenario_to_json(a, -1) == cueball::scenario_to_json(b.cast<const Scenario&>(), -1));
+           })
+      .def("__repr__",
+           [](const Scenario& s) {
+             const std::optional<ShotStrike> c = cue_of(s);
+             const std::string cue = c ? repr_of("ShotStrike", kShotFields, shot_fields(*c)) : "None";
+             return "Scenario(table=" + py::repr(py::str(s.table.name)).cast<std::string>() +
+                    ", balls=" + std::to_string(s.balls.size()) + ", cue=" + cue + ")";
+           })
+      .def(py::pickle([](const Scenario& s) { return cueball::scenario_to_json(s, -1); }, &from_json));
+  // Scenarios are compared by value but never changed: hashable by their JSON.
+  scenario.def("__hash__", [](const Scenario& s) { return py::hash(py::str(cueball::scenario_to_json(s, -1))); });
+
+  m.def("default_scenario", &built_in, "Scenario.default(): the built-in 9-ball break.");
+  m.def("scenario_from_json", &from_json, "text"_a, "Scenario.from_json(text).");
+  m.def("scenario_from_document", &from_document, "text"_a,
+        "Scenario.from_document(text): a scenario or a result JSON's \"scenario\".");
+  m.def("scenario_to_json", &to_json, "scenario"_a, "indent"_a = 1, "scenario.to_json(indent).");
+}
+
+}  // namespace cueball_python

@@ -102,7 +102,7 @@ void check_flag(const char* flag, double value, double lo, double hi, const char
 }
 
 void add_parameter_flags(CLI::App& app, ParameterFlags& flags) {
-  app.add_option("--preset", flags.preset, "Named parameter set: snooker (Mathavan 2010) or pool (WPA ball)")
+  app.add_option("--preset", flags.preset, "Named parameter set: pool (WPA ball) or snooker (Mathavan 2010)")
       ->check(CLI::IsMember({"snooker", "pool"}))
       ->capture_default_str();
   const auto add = [&](const char* name, std::optional<double>& target, const ParameterRange& r) {

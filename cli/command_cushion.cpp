@@ -636,6 +636,7 @@ Command add_cushion_sweep_command(CLI::App& app) {
       ->check(CLI::IsMember({"fig8", "fig9", "fig10", "fig12", "grid"}))
       ->capture_default_str();
   add_cushion_flags(*sub, flags->cushion);
+  flags->parameters.preset = "snooker";  // the paper's ball: its figures
   add_parameter_flags(*sub, flags->parameters);
   return [flags](std::ostream& out, std::ostream& err) { run_sweep(*flags, out, err); };
 }
@@ -651,6 +652,7 @@ Command add_figures_command(CLI::App& app) {
   sub->add_option("--out", flags->out, "Directory for the images, data and gnuplot scripts")->capture_default_str();
   sub->add_option("--format", flags->format, "png or svg")->check(CLI::IsMember({"png", "svg"}))->capture_default_str();
   add_cushion_flags(*sub, flags->cushion);
+  flags->parameters.preset = "snooker";  // the paper's ball: its figures
   add_parameter_flags(*sub, flags->parameters);
   return [flags](std::ostream& out, std::ostream& err) { run_figures(*flags, out, err); };
 }

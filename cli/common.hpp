@@ -22,8 +22,12 @@ class UsageError : public std::runtime_error {
 };
 
 /// Flags common to every subcommand: --preset and one override per parameter.
+/// The preset defaults to pool, as the default table, rack and scenario and
+/// the Python module's params= (README "Units and defaults"); only the
+/// commands that redraw the cushion paper's figures (cushion-sweep, figures)
+/// default to its snooker ball.
 struct ParameterFlags {
-  std::string preset = "snooker";
+  std::string preset = "pool";
   std::optional<double> mass, radius, mu_s, mu_r, mu_sp, g;
   bool json = false;
 };

@@ -1,6 +1,9 @@
 """Type stubs of the extension module cueball (python/src/), with units.
 
-SI throughout: m, s, kg, rad. Table frame: x, y on the bed, z up. Vectors
+SI throughout: m, s, kg, rad; degrees and ball radii only in the scenario's
+units (ShotStrike, scenario JSON, simulate_many's actions, CueStrike.from_units).
+Every params= defaults to pool_parameters(), as the default table, rack and
+scenario. Table frame: x, y on the bed, z up. Vectors
 are tuples (x, y) or (wx, wy, wz); any sequence or NumPy array of the right
 length is accepted, and NumPy scalars wherever a number is. Checked against
 the module by python/tests/test_stubs.py (every public name) and by
@@ -8,7 +11,7 @@ the module by python/tests/test_stubs.py (every public name) and by
 """
 
 import os
-from typing import Any, Mapping, Sequence, TypedDict
+from typing import Any, Iterable, Mapping, Sequence, TypedDict
 
 import numpy as np
 from numpy.typing import NDArray
@@ -18,7 +21,7 @@ __version__: str
 _Float = float | np.floating[Any] | np.integer[Any]
 _Int = int | np.integer[Any]
 _Vec = Sequence[_Float] | NDArray[Any]
-_Scenario = None | str | os.PathLike[str] | Mapping[str, Any]
+_Scenario = None | Scenario | str | os.PathLike[str] | Mapping[str, Any]
 
 # ------------------------------------------------------------------ errors
 
@@ -69,10 +72,10 @@ class Parameters:
     def __init__(self, ball: BallParameters, cloth: ClothParameters) -> None: ...
 
 def snooker_parameters() -> Parameters:
-    """Snooker ball on a snooker cloth (the default of every params=)."""
+    """Snooker ball on a snooker cloth (Mathavan 2010)."""
 
 def pool_parameters() -> Parameters:
-    """WPA pool ball on a typical pool cloth."""
+    """WPA pool ball on a typical pool cloth (the default of every params=)."""
 
 def preset_parameters(name: str) -> Parameters:
     """'snooker' or 'pool'; InvalidArgument otherwise."""
@@ -233,6 +236,19 @@ class CueStrike:
         side_offset: _Float = 0.0,
         height_offset: _Float = 0.0,
     ) -> None: ...
+    @staticmethod
+    def from_units(
+        speed: _Float,
+        aim_deg: _Float = 0.0,
+        elevation_deg: _Float = 0.0,
+        side: _Float = 0.0,
+        height: _Float = 0.0,
+        *,
+        radius: _Float = 0.028575,
+    ) -> CueStrike:
+        """From the scenario's units (m/s, degrees, ball radii of a ball of radius m), as its reader converts."""
+    def in_units(self, *, radius: _Float = 0.028575) -> dict[str, float]:
+        """The scenario's units: {speed m/s, aim_deg, elevation_deg degrees, side, height ball radii}."""
 
 def strike_ball(
     strike: CueStrike, position: _Vec = (0.0, 0.0), params: Parameters = ..., cue: CueParameters = ...
@@ -320,6 +336,517 @@ def cushion_impact(
 RIGID_CUSHION_SPEED_LIMIT: float
 """m/s"""
 
+# ------------------------------------------------------------------ cushion fit
+
+class PaperIncidence:
+    """A ball arriving at a cushion (Mathavan 2010, section 3.1), as cushion_impact's arguments."""
+
+    speed: float
+    """V0 > 0, m/s"""
+    angle: float
+    """alpha, rad, (0, pi/2]; pi/2 is head-on"""
+    topspin: float
+    """w_T, rad/s; V0/R is rolling"""
+    sidespin: float
+    """w_S, rad/s about Z"""
+    def __init__(self, speed: _Float, angle: _Float, topspin: _Float, sidespin: _Float = 0.0) -> None: ...
+
+class HeadOnRebound:
+    """A head-on impact of a rolling ball without side spin."""
+
+    incoming_speed: float
+    """V0, m/s"""
+    rebound_speed: float
+    """measured, m/s"""
+    def __init__(self, incoming_speed: _Float, rebound_speed: _Float) -> None: ...
+
+class ObliqueRebound:
+    """Any impact: its incidence and the measured rebound."""
+
+    incidence: PaperIncidence
+    rebound_speed: float
+    """m/s"""
+    rebound_angle: float
+    """beta, rad from the cushion line"""
+    def __init__(self, incidence: PaperIncidence, rebound_speed: _Float, rebound_angle: _Float) -> None: ...
+
+class CushionFitData:
+    """Measured rebounds (assign new lists to change them)."""
+
+    head_on: list[HeadOnRebound]
+    oblique: list[ObliqueRebound]
+    def __init__(self, head_on: Sequence[HeadOnRebound] = ..., oblique: Sequence[ObliqueRebound] = ...) -> None: ...
+
+class CushionFitOptions:
+    """How to fit: solver 'exact' or 'paper', its steps, the grid step, the contact height (m; 0: 7R/5)."""
+
+    solver: str
+    paper_steps: int
+    grid_step: float
+    contact_height: float
+    """h, m; 0 means 7R/5"""
+    def __init__(
+        self, solver: str = "exact", paper_steps: _Int = 5000, grid_step: _Float = 0.01, contact_height: _Float = 0.0
+    ) -> None: ...
+
+class CushionFit:
+    """The fitted e_e and mu_w and how well the data determine them."""
+
+    @property
+    def restitution(self) -> float:
+        """e_e"""
+    @property
+    def friction(self) -> float:
+        """mu_w"""
+    @property
+    def residual(self) -> float:
+        """sum of squared errors, m^2/s^2"""
+    @property
+    def grid_restitution(self) -> float: ...
+    @property
+    def grid_friction(self) -> float: ...
+    @property
+    def grid_residual(self) -> float: ...
+    @property
+    def restitution_sigma(self) -> float:
+        """standard error (inf: undetermined)"""
+    @property
+    def friction_sigma(self) -> float:
+        """standard error (inf: undetermined)"""
+    @property
+    def correlation(self) -> float: ...
+    @property
+    def condition_number(self) -> float: ...
+    @property
+    def poorly_separated(self) -> bool:
+        """the data fix only one combination of e_e and mu_w"""
+    @property
+    def friction_upper_bound(self) -> float:
+        """tan(theta)"""
+    @property
+    def residuals(self) -> int: ...
+    @property
+    def impacts_solved(self) -> int: ...
+    @property
+    def beyond_rigid_cushion_limit(self) -> int: ...
+
+def fit_cushion(data: CushionFitData, params: Parameters = ..., options: CushionFitOptions = ...) -> CushionFit:
+    """Fits e_e and mu_w to measured rebounds (Mathavan 2010, section 3.5); releases the GIL."""
+
+# ------------------------------------------------------------------ ball-ball collision
+
+class BallCollisionParameters:
+    """mu(u) = friction + friction_excess * exp(-friction_decay * u), u the slip speed in m/s."""
+
+    restitution: float
+    """e, [0, 1]"""
+    friction: float
+    """[0, 1]"""
+    friction_excess: float
+    """[0, 1]"""
+    friction_decay: float
+    """s/m, [0, 100]"""
+    def __init__(
+        self, restitution: _Float, friction: _Float = 0.0, friction_excess: _Float = 0.0, friction_decay: _Float = 0.0
+    ) -> None: ...
+
+def ball_collision_alciatore() -> BallCollisionParameters:
+    """e = 0.95 with Alciatore's friction fit (the simulator's default)."""
+
+def ball_collision_frictionless(restitution: _Float) -> BallCollisionParameters:
+    """No friction: the impulse along the line of centres only."""
+
+def ball_friction(contact: BallCollisionParameters, slip_speed: _Float) -> float:
+    """mu at slip speed (m/s, >= 0)."""
+
+def balls_approaching(a: BallState, b: BallState) -> bool:
+    """(r_b - r_a) . (v_b - v_a) < 0."""
+
+class BallCollisionResult:
+    """The states just after the impact and the impulses on b (N s; on a the opposite)."""
+
+    @property
+    def a(self) -> BallState: ...
+    @property
+    def b(self) -> BallState: ...
+    @property
+    def normal_impulse(self) -> float:
+        """N s, along n = (r_b - r_a)/|r_b - r_a|"""
+    @property
+    def tangential_impulse(self) -> float:
+        """N s, along z x n"""
+    @property
+    def vertical_impulse(self) -> float:
+        """N s, taken up by the bed"""
+    @property
+    def friction(self) -> float: ...
+    @property
+    def slip_speed(self) -> float:
+        """m/s"""
+    @property
+    def gripped(self) -> bool: ...
+
+def resolve_ball_collision(
+    a: BallState, b: BallState, params: Parameters = ..., contact: BallCollisionParameters = ...
+) -> BallCollisionResult:
+    """Two identical touching balls colliding (Alciatore; Mathavan 2014); params.ball gives R and m."""
+
+def collide_balls(
+    a: BallState, b: BallState, params: Parameters = ..., contact: BallCollisionParameters = ...
+) -> tuple[BallState, BallState]:
+    """resolve_ball_collision's two states only."""
+
+# ------------------------------------------------------------------ tables
+
+class CushionSegment:
+    """A straight cushion nose, playing surface on its left; m."""
+
+    @property
+    def start(self) -> tuple[float, float]:
+        """(x, y), m"""
+    @property
+    def end(self) -> tuple[float, float]:
+        """(x, y), m"""
+    @property
+    def contact_height(self) -> float:
+        """h, m, in (R, 2R)"""
+    @property
+    def name(self) -> str: ...
+    @property
+    def inward_normal(self) -> tuple[float, float]:
+        """unit normal onto the playing surface"""
+    def __init__(self, start: _Vec, end: _Vec, contact_height: _Float, name: str = "") -> None: ...
+
+class JawArc:
+    """The rounded cushion tip at a pocket; m."""
+
+    @property
+    def centre(self) -> tuple[float, float]:
+        """(x, y), m"""
+    @property
+    def radius(self) -> float:
+        """m"""
+    @property
+    def contact_height(self) -> float:
+        """h, m"""
+    @property
+    def name(self) -> str: ...
+    def __init__(self, centre: _Vec, radius: _Float, contact_height: _Float, name: str = "") -> None: ...
+
+class Pocket:
+    """A pocket's capture circle; m."""
+
+    @property
+    def name(self) -> str: ...
+    @property
+    def centre(self) -> tuple[float, float]:
+        """(x, y), m"""
+    @property
+    def radius(self) -> float:
+        """m"""
+    def __init__(self, name: str, centre: _Vec, radius: _Float) -> None: ...
+
+class PocketSpec:
+    """One kind of pocket: m, except cut_angle_deg (degrees)."""
+
+    mouth: float
+    """m, lip to lip"""
+    cut_angle_deg: float
+    """degrees, [90, 170]"""
+    jaw_radius: float
+    """m"""
+    shelf: float
+    """m"""
+    def __init__(self, mouth: _Float, cut_angle_deg: _Float, jaw_radius: _Float, shelf: _Float = 0.0) -> None: ...
+
+class TableSpec:
+    """A rectangular table for build_table(); lengths in m."""
+
+    name: str
+    length: float
+    """m"""
+    width: float
+    """m"""
+    cushion_height: float
+    """h, m, in (R, 2R)"""
+    ball: BallParameters
+    has_pockets: bool
+    corner_pockets: PocketSpec
+    side_pockets: PocketSpec
+    has_diamonds: bool
+    diamond_offset: float
+    """m"""
+    def __init__(
+        self,
+        name: str,
+        length: _Float,
+        width: _Float,
+        cushion_height: _Float,
+        ball: BallParameters,
+        has_pockets: bool = True,
+        corner_pockets: PocketSpec = ...,
+        side_pockets: PocketSpec = ...,
+        has_diamonds: bool = True,
+        diamond_offset: _Float = 0.0,
+    ) -> None: ...
+
+class Table:
+    """A table's geometry, read-only and always valid; m. == compares it, pickled as its JSON."""
+
+    def __init__(
+        self,
+        length: _Float,
+        width: _Float,
+        cushions: Sequence[CushionSegment],
+        ball: BallParameters,
+        jaws: Sequence[JawArc] = ...,
+        pockets: Sequence[Pocket] = ...,
+        diamonds: Sequence[_Vec] = ...,
+        name: str = "custom",
+    ) -> None: ...
+    @staticmethod
+    def preset(name: str) -> Table:
+        """'pool_9ft', 'snooker_12ft' or 'carom_10ft'."""
+    @staticmethod
+    def from_spec(spec: TableSpec) -> Table:
+        """The geometry of a TableSpec."""
+    @staticmethod
+    def from_json(text: str) -> Table:
+        """A table from its JSON text."""
+    def to_json(self) -> str:
+        """The full geometry as JSON text."""
+    @property
+    def name(self) -> str: ...
+    @property
+    def length(self) -> float:
+        """m, along x"""
+    @property
+    def width(self) -> float:
+        """m, along y"""
+    @property
+    def ball(self) -> BallParameters: ...
+    @property
+    def cushions(self) -> list[CushionSegment]: ...
+    @property
+    def jaws(self) -> list[JawArc]: ...
+    @property
+    def pockets(self) -> list[Pocket]: ...
+    @property
+    def diamonds(self) -> list[tuple[float, float]]:
+        """m"""
+    def validate(self) -> None:
+        """Checks the geometry (always passes)."""
+    def ball_on_table(self, position: _Vec, radius: _Float | None = None) -> bool:
+        """A ball (radius m, default the table's) can be placed at position (x, y), m."""
+    def inside_playing_area(self, position: _Vec, margin: _Float = 0.0) -> bool:
+        """position (x, y), m, is inside the closed playing area or within margin (m) of it."""
+
+TABLE_PRESETS: tuple[str, ...]
+"""Names of preset_table(): 'pool_9ft', 'snooker_12ft', 'carom_10ft'."""
+
+def preset_table(name: str) -> Table:
+    """Table.preset(name)."""
+
+def pool_table_9ft() -> Table:
+    """9-ft pool table (WPA)."""
+
+def snooker_table_12ft() -> Table:
+    """Full-size snooker table (WPBSA)."""
+
+def carom_table_10ft() -> Table:
+    """UMB match carom table, no pockets."""
+
+def preset_table_spec(name: str) -> TableSpec:
+    """The TableSpec of a preset."""
+
+def build_table(spec: TableSpec) -> Table:
+    """Table.from_spec(spec)."""
+
+def table_from_json(text: str) -> Table:
+    """Table.from_json(text)."""
+
+def table_to_json(table: Table) -> str:
+    """table.to_json()."""
+
+# ------------------------------------------------------------------ racks
+
+class PlacedBall:
+    """A ball of a rack: id (0 = cue), name, position (x, y) m."""
+
+    id: int
+    name: str
+    @property
+    def position(self) -> tuple[float, float]:
+        """(x, y), m"""
+    @position.setter
+    def position(self, value: _Vec) -> None: ...
+    def __init__(self, id: _Int, name: str, position: _Vec) -> None: ...
+
+class RackOptions:
+    """gap_sigma (m, [0, 0.005]; 0 frozen) and the seed of the random gaps."""
+
+    gap_sigma: float
+    """m"""
+    seed: int
+    def __init__(self, gap_sigma: _Float = 0.0, seed: _Int = 0) -> None: ...
+
+def rack_nine_ball(table: Table, options: RackOptions = ...) -> list[PlacedBall]:
+    """10 balls: cue, 1-9 in a diamond (WPA)."""
+
+def rack_eight_ball(table: Table, options: RackOptions = ...) -> list[PlacedBall]:
+    """16 balls: cue, 1-15 in a triangle (WPA)."""
+
+def rack_snooker(table: Table, options: RackOptions = ...) -> list[PlacedBall]:
+    """22 balls: cue in the D, 15 reds, the colours on their spots (WPBSA)."""
+
+def foot_spot(table: Table) -> tuple[float, float]:
+    """(3L/4, W/2), m."""
+
+def head_string_x(table: Table) -> float:
+    """L/4, m."""
+
+class SnookerSpots:
+    """Snooker markings scaled to the table, m."""
+
+    @property
+    def baulk_line_x(self) -> float: ...
+    @property
+    def d_radius(self) -> float: ...
+    @property
+    def black(self) -> tuple[float, float]: ...
+    @property
+    def pink(self) -> tuple[float, float]: ...
+    @property
+    def blue(self) -> tuple[float, float]: ...
+    @property
+    def brown(self) -> tuple[float, float]: ...
+    @property
+    def yellow(self) -> tuple[float, float]: ...
+    @property
+    def green(self) -> tuple[float, float]: ...
+
+def snooker_spots(table: Table) -> SnookerSpots:
+    """The snooker markings of the table."""
+
+# ------------------------------------------------------------------ scenarios
+
+class SimulationBall:
+    """A ball placed for a shot: id, name ('' names it by its id), state before the strike."""
+
+    id: int
+    name: str
+    state: BallState
+    def __init__(
+        self,
+        id: _Int,
+        position: _Vec,
+        velocity: _Vec = (0.0, 0.0),
+        angular_velocity: _Vec = (0.0, 0.0, 0.0),
+        name: str = "",
+    ) -> None: ...
+
+class SimulationSettings:
+    """Ball and cloth, the cushion's e_e and mu_w, the ball-ball contact, the event limit."""
+
+    parameters: Parameters
+    cushion_restitution: float
+    """e_e"""
+    cushion_friction: float
+    """mu_w"""
+    ball_collision: BallCollisionParameters
+    max_events: int
+    def __init__(
+        self,
+        parameters: Parameters = ...,
+        cushion_restitution: _Float = 0.98,
+        cushion_friction: _Float = 0.14,
+        ball_collision: BallCollisionParameters = ...,
+        max_events: _Int = 100000,
+    ) -> None: ...
+
+class ShotStrike:
+    """A scenario's cue strike in the scenario's units: m/s, degrees, ball radii (its JSON "cue")."""
+
+    speed: float
+    """cue speed, m/s"""
+    aim_deg: float
+    """degrees anticlockwise from +x"""
+    elevation_deg: float
+    """degrees"""
+    side: float
+    """tip offset to the right, ball radii"""
+    height: float
+    """tip offset above the centre, ball radii"""
+    ball: int
+    """id of the ball struck"""
+    target: int | None
+    """id of the ball aimed at (instead of aim_deg)"""
+    def __init__(
+        self,
+        speed: _Float,
+        aim_deg: _Float = 0.0,
+        elevation_deg: _Float = 0.0,
+        side: _Float = 0.0,
+        height: _Float = 0.0,
+        ball: _Int = 0,
+        target: _Int | None = None,
+    ) -> None: ...
+
+class Scenario:
+    """A shot, read-only and always valid; == compares the full JSON; pickled as its JSON (bit-exact)."""
+
+    def __init__(
+        self,
+        table: Table | str,
+        balls: Iterable[SimulationBall | PlacedBall],
+        cue: ShotStrike | None = None,
+        *,
+        settings: SimulationSettings | None = None,
+        cue_parameters: CueParameters | None = None,
+        noise: Mapping[str, _Float] | None = None,
+    ) -> None: ...
+    @staticmethod
+    def default() -> Scenario:
+        """The built-in 9-ball break."""
+    @staticmethod
+    def from_json(text: str) -> Scenario:
+        """A scenario from its JSON text."""
+    @staticmethod
+    def from_document(text: str) -> Scenario:
+        """A scenario JSON or a result JSON's "scenario"."""
+    def to_json(self, indent: _Int = 1) -> str:
+        """The scenario in full (indent -1: one line)."""
+    def to_dict(self) -> dict[str, Any]:
+        """json.loads(to_json())."""
+    @property
+    def table(self) -> Table: ...
+    @property
+    def balls(self) -> list[SimulationBall]: ...
+    @property
+    def cue(self) -> ShotStrike | None:
+        """in the scenario's units"""
+    @property
+    def cue_parameters(self) -> CueParameters: ...
+    @property
+    def noise(self) -> dict[str, float]:
+        """speed m/s, aim_deg, elevation_deg degrees, side, height ball radii"""
+    @property
+    def settings(self) -> SimulationSettings: ...
+    @property
+    def parameters(self) -> Parameters: ...
+
+def default_scenario() -> Scenario:
+    """The built-in 9-ball break."""
+
+def scenario_from_json(text: str) -> Scenario:
+    """Scenario.from_json(text)."""
+
+def scenario_from_document(text: str) -> Scenario:
+    """Scenario.from_document(text)."""
+
+def scenario_to_json(scenario: Scenario, indent: _Int = 1) -> str:
+    """scenario.to_json(indent)."""
+
 # ------------------------------------------------------------------ whole shots
 
 EVENT_TYPES: tuple[str, ...]
@@ -403,6 +930,9 @@ class Result:
     @property
     def segments(self) -> list[SegmentArrays]:
         """per ball, in the scenario's order"""
+    @property
+    def scenario(self) -> Scenario:
+        """the Scenario that ran: simulate(result.scenario) reproduces this result bit for bit"""
     @property
     def pocket_names(self) -> list[str]:
         """the table's pockets, indexed by events['pocket'] and balls['pocket']"""

@@ -23,13 +23,13 @@ TEST(Cli, RollJsonHasThePhasesInSiUnits) {
   const CliRun r = run_cli({"roll", "--v0", "2", "--w0", "-40", "--json"});
   ASSERT_EQ(r.status, 0) << r.err;
   const auto j = nlohmann::json::parse(r.out);
-  const StraightShot shot = straight_shot(2.0, -40.0, 0.0, snooker_parameters());
+  const StraightShot shot = straight_shot(2.0, -40.0, 0.0, pool_parameters());
   EXPECT_DOUBLE_EQ(j.at("t1").get<double>(), shot.t1);
   EXPECT_DOUBLE_EQ(j.at("x1").get<double>(), shot.x1);
   EXPECT_DOUBLE_EQ(j.at("v1").get<double>(), shot.v1);
   EXPECT_DOUBLE_EQ(j.at("t2").get<double>(), shot.t2);
   EXPECT_DOUBLE_EQ(j.at("x2").get<double>(), shot.x2);
-  EXPECT_EQ(j.at("parameters").at("mass").get<double>(), 0.1406);
+  EXPECT_EQ(j.at("parameters").at("mass").get<double>(), 0.17);  // the pool preset by default
 }
 
 TEST(Cli, RollAtGivesTheFullState) {
@@ -49,7 +49,7 @@ TEST(Cli, ParameterOverridesApply) {
   ASSERT_EQ(r.status, 0) << r.err;
   const auto j = nlohmann::json::parse(r.out);
   EXPECT_EQ(j.at("parameters").at("mu_s").get<double>(), 0.5);
-  Parameters p = snooker_parameters();
+  Parameters p = pool_parameters();
   p.cloth.sliding_friction = 0.5;
   p.cloth.rolling_resistance = 0.02;
   p.cloth.gravity = 9.8;
@@ -65,7 +65,7 @@ TEST(Cli, TableOutputShowsUnits) {
 }
 
 TEST(Cli, PlanVariantsMatchTheLibrary) {
-  const Parameters p = snooker_parameters();
+  const Parameters p = pool_parameters();
   const ShotTarget target{0.0, 1.5, 0.2};
   const struct {
     std::vector<std::string> flags;

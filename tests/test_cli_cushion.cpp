@@ -42,7 +42,7 @@ TEST(CliCushion, JsonMatchesTheLibraryAndHasTheDocumentedKeys) {
                             "--json"});
   ASSERT_EQ(r.status, 0) << r.err;
   const auto j = nlohmann::json::parse(r.out);
-  const Parameters p = snooker_parameters();
+  const Parameters p = pool_parameters();
   const PaperIncidence in{1.2, 35 * kDeg, 0.5 * 1.2 / p.ball.radius, -1.2 / p.ball.radius};
   const CushionImpactResult expected = cushion_impact(incoming_ball(in), p, cushion_mathavan2010_paper_fit(p.ball));
   EXPECT_DOUBLE_EQ(j.at("speed").get<double>(), expected.rebound_speed);
@@ -77,7 +77,7 @@ TEST(CliCushion, ConstantsDefaultToThePaperFitForBothSolvers) {
 }
 
 TEST(CliCushion, SpinInRadiansPerSecondEqualsTheKForm) {
-  const double radius = snooker_parameters().ball.radius;
+  const double radius = pool_parameters().ball.radius;
   const std::string w = std::to_string(1.5 * 0.8 / radius);
   const CliRun a = run_cli({"cushion", "--v0", "0.8", "--alpha", "50", "--topspin", w, "--json"});
   const CliRun b = run_cli({"cushion", "--v0", "0.8", "--alpha", "50", "--topspin-k", "1.5", "--json"});
@@ -135,6 +135,16 @@ TEST(CliCushion, Fig8SweepHasOneAngleForEverySpeed) {
   }
 }
 
+TEST(CliCushion, SweepsRedrawThePapersFiguresWithItsSnookerBall) {
+  // Every other command defaults to the pool preset; the paper's figures keep the paper's ball.
+  const CliRun by_default = run_cli({"cushion-sweep", "--family", "fig9"});
+  const CliRun snooker = run_cli({"cushion-sweep", "--family", "fig9", "--preset", "snooker"});
+  const CliRun pool = run_cli({"cushion-sweep", "--family", "fig9", "--preset", "pool"});
+  ASSERT_EQ(by_default.status, 0) << by_default.err;
+  EXPECT_EQ(by_default.out, snooker.out);
+  EXPECT_NE(by_default.out, pool.out);
+}
+
 TEST(CliCushion, GridSweepCoversTheDocumentedGrid) {
   const CliRun r = run_cli({"cushion-sweep", "--family", "grid"});
   ASSERT_EQ(r.status, 0) << r.err;
@@ -175,7 +185,7 @@ namespace {
 // Synthetic measurements from known constants, written as the CSV the
 // command reads.
 std::filesystem::path write_fit_data(const std::string& name, bool oblique, double e, double mu_w) {
-  const Parameters p = snooker_parameters();
+  const Parameters p = pool_parameters();
   CushionParameters c = cushion_mathavan2010_paper_fit(p.ball);
   c.restitution = e;
   c.friction = mu_w;

@@ -252,7 +252,7 @@ void bind_scenario(py::module_& m) {
           "the cue strike in the scenario's units (ShotStrike: degrees, ball radii), or None")
       .def_readonly("cue_parameters", &Scenario::cue_parameters, "CueParameters (a copy)")
       .def_property_readonly(
-          "noise", [](const Scenario& s) { return written(s)["noise"]; },
+          "noise", [](const Scenario& s) -> py::object { return written(s)["noise"]; },
           "the execution noise of simulate_batch, a dict in the scenario's units (speed m/s, aim_deg,\n"
           "elevation_deg degrees, side, height ball radii)")
       .def_readonly("settings", &Scenario::settings, "SimulationSettings (a copy)")

@@ -230,10 +230,10 @@ class PlannerTest(unittest.TestCase):
         self.assertEqual(plans[3].v0, 1.5)
 
     def test_the_clis_plan(self):
-        # README: cueball plan --x1 0.3 --x2 1.5 --v2 0.2 (snooker preset).
+        # README: cueball plan --x1 0.3 --x2 1.5 --v2 0.2 (the pool preset, both defaults).
         plan = cueball.plan_shot_with_slide_end(x1=0.3, x2=1.5, v2=0.2)
-        self.assertAlmostEqual(plan.v0, 1.26009, delta=1e-5)
-        self.assertAlmostEqual(plan.w0, -42.2627, delta=1e-4)
+        self.assertAlmostEqual(plan.v0, 1.20526, delta=1e-5)
+        self.assertAlmostEqual(plan.w0, -41.1638, delta=1e-4)
         if CLI:
             cli = run_cli("plan", "--x1", "0.3", "--x2", "1.5", "--v2", "0.2")
             for key in ("v0", "w0", "t1", "x1", "v1", "t2"):
@@ -312,15 +312,16 @@ class CueStrikeTest(unittest.TestCase):
 
 class CushionImpactTest(unittest.TestCase):
     def test_the_readmes_impact(self):
-        # cueball cushion --v0 1 --alpha 45 --sidespin-k -1 (snooker ball, rolling in).
-        R = cueball.snooker_parameters().ball.radius
-        r = cueball.cushion_impact(1.0, math.radians(45), sidespin=-1.0 / R)
+        # cueball cushion --v0 1 --alpha 45 --sidespin-k -1 --preset snooker (the paper's ball, rolling in).
+        p = cueball.snooker_parameters()
+        R = p.ball.radius
+        r = cueball.cushion_impact(1.0, math.radians(45), sidespin=-1.0 / R, params=p)
         self.assertAlmostEqual(r.rebound_speed, 0.839646, delta=1e-6)
         self.assertAlmostEqual(math.degrees(r.rebound_angle), 54.3466, delta=1e-4)
         self.assertAlmostEqual(r.rebound_speed, math.hypot(*r.velocity), delta=1e-15)
         self.assertLess(r.velocity[1], 0.0)  # away from the cushion
         if CLI:
-            cli = run_cli("cushion", "--v0", "1", "--alpha", "45", "--sidespin-k", "-1")
+            cli = run_cli("cushion", "--v0", "1", "--alpha", "45", "--sidespin-k", "-1", "--preset", "snooker")
             self.assertAlmostEqual(r.rebound_speed, cli["speed"], delta=1e-12)
             self.assertAlmostEqual(math.degrees(r.rebound_angle), cli["angle"], delta=1e-9)
             for mine, theirs in zip(r.velocity[:2] + r.angular_velocity, cli["v"] + cli["w"]):
@@ -331,7 +332,7 @@ class CushionImpactTest(unittest.TestCase):
 
     def test_head_on_rolling_ball_stays_in_its_plane(self):
         # (cos(pi/2) is 6e-17 in doubles, hence the tolerance.)
-        r = cueball.cushion_impact(1.0, math.pi / 2)
+        r = cueball.cushion_impact(1.0, math.pi / 2, params=cueball.snooker_parameters())
         self.assertAlmostEqual(r.velocity[0], 0.0, delta=1e-15)
         self.assertAlmostEqual(r.angular_velocity[2], 0.0, delta=1e-12)
         self.assertAlmostEqual(math.degrees(r.rebound_angle), 90.0, delta=1e-12)

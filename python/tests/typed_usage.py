@@ -57,6 +57,39 @@ def main() -> None:
         assert field == "sample_rate"
     seconds: float = cueball._time_run_scenario(None, 1)
     assert seconds > 0.0
+    objects()
+
+
+def objects() -> None:
+    table: cueball.Table = cueball.Table.preset("pool_9ft")
+    normal: tuple[float, float] = table.cushions[0].inward_normal
+    names: list[str] = [c.name for c in table.cushions] + [p.name for p in table.pockets]
+    assert abs(normal[0] ** 2 + normal[1] ** 2 - 1.0) < 1e-12 and "bottom-left" in names
+    assert table.ball_on_table(np.array([1.0, 0.6])) and not table.inside_playing_area((5.0, 5.0))
+    spec: cueball.TableSpec = cueball.preset_table_spec("pool_9ft")
+    spec.length = np.float64(2.24)  # type: ignore[assignment]
+    small = cueball.build_table(spec)
+    assert small.length == 2.24 and cueball.Table.from_json(small.to_json()) == small
+    rack: list[cueball.PlacedBall] = cueball.rack_nine_ball(table, cueball.RackOptions(gap_sigma=0.001, seed=1))
+    spots: cueball.SnookerSpots = cueball.snooker_spots(cueball.snooker_table_12ft())
+    assert len(rack) == 10 and spots.blue[0] > 0.0 and cueball.foot_spot(table)[0] > cueball.head_string_x(table)
+    scenario = cueball.Scenario(table, rack, cueball.ShotStrike(np.float32(7.0), target=1),
+                                settings=cueball.SimulationSettings(max_events=50000))
+    result = cueball.simulate(scenario)
+    replay: cueball.Scenario = result.scenario
+    cue: cueball.ShotStrike | None = replay.cue
+    assert cue is not None and cue.target == 1 and cueball.simulate(replay).to_json() == result.to_json()
+    assert cueball.Scenario.from_json(scenario.to_json()) == scenario and scenario.parameters.ball.radius > 0.0
+    strike = cueball.CueStrike.from_units(3.0, aim_deg=10.0, side=0.2, radius=scenario.parameters.ball.radius)
+    units: dict[str, float] = strike.in_units(radius=scenario.parameters.ball.radius)
+    assert abs(units["side"] - 0.2) < 1e-12
+    a = cueball.BallState((0.0, 0.0), (1.0, 0.0))
+    b = cueball.BallState((2 * cueball.pool_parameters().ball.radius, 0.0))
+    after: cueball.BallCollisionResult = cueball.resolve_ball_collision(a, b, contact=cueball.ball_collision_frictionless(1.0))
+    assert after.b.velocity == (1.0, 0.0) and cueball.balls_approaching(a, b)
+    data = cueball.CushionFitData([cueball.HeadOnRebound(v, 0.9 * v) for v in (0.5, 1.0, 1.5)])
+    fit: cueball.CushionFit = cueball.fit_cushion(data, options=cueball.CushionFitOptions(grid_step=0.1))
+    assert fit.poorly_separated and 0.0 < fit.restitution <= 1.0
 
 
 if __name__ == "__main__":

@@ -5,8 +5,12 @@ namespace {
 
 constexpr const char* kModuleDoc = R"(cueball: physics of billiard balls (closed forms, no time steps).
 
-Units are SI throughout: m, s, kg, rad (degrees only where a name says so,
-as in a scenario's "aim_deg"). Table frame: x, y on the bed, x along the
+Units are SI throughout: m, s, kg, rad. The one exception is the scenario's
+units, the same in its JSON, its dicts, ShotStrike (a Scenario's cue) and
+simulate_many's actions: the cue's aim_deg and elevation_deg in degrees, its
+side and height tip offsets in ball radii. CueStrike is SI;
+CueStrike.from_units(..., radius=R) and strike.in_units(radius=R) convert as
+the scenario reader does. Table frame: x, y on the bed, x along the
 table, z up. A ball's position is its centre projected on the bed, its
 velocity (vx, vy) lies in the bed's plane, its angular velocity is
 (wx, wy, wz). Straight shots travel along +x; topspin w0 > 0 turns the ball
@@ -16,8 +20,15 @@ right english (tip to the right of centre, seen from behind the cue) gives
 wz > 0. mu_r follows paper 001's energy convention: a rolling ball
 decelerates at (5/7) mu_r g.
 
-Functions that need the ball and cloth take params=Parameters, default
-snooker_parameters() (as the CLI). Bad input raises cueball.InvalidArgument
+Defaults are the pool preset everywhere: functions that need the ball and
+cloth take params=Parameters, default pool_parameters() (as the CLI's
+--preset); the built-in scenario is the 9-ball break on the 9-ft pool table.
+Pass params=snooker_parameters() for the snooker ball and cloth.
+
+Tables, racks and scenarios are objects (Table, rack_nine_ball(), Scenario):
+read-only, always valid, picklable through their JSON; simulate() takes a
+Scenario wherever it takes a scenario dict, and result.scenario replays a
+result bit for bit. Bad input raises cueball.InvalidArgument
 (a ValueError naming the field), an impossible plan cueball.InfeasibleShot
 (ValueError), a simulation that cannot finish cueball.SimulationError
 (RuntimeError).)";

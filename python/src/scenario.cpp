@@ -245,17 +245,18 @@ void bind_scenario(py::module_& m) {
                   "A scenario JSON, or a result JSON (Result.to_json()) whose \"scenario\" is read: a replay.")
       .def("to_json", &to_json, "indent"_a = 1, "The scenario in full, every value explicit; from_json of it simulates bit for bit alike.")
       .def("to_dict", &written, "json.loads(to_json()).")
-      .def_readonly("table", &Scenario::table, "the Table (a copy)")
-      .def_readonly("balls", &Scenario::balls, "list of SimulationBall as placed, before the strike (copies)")
+      .def_property_readonly("table", [](const Scenario& s) { return s.table; }, "the Table (a copy)")
+      .def_property_readonly(
+          "balls", [](const Scenario& s) { return s.balls; }, "list of SimulationBall as placed, before the strike (copies)")
       .def_property_readonly(
           "cue", &cue_of,
           "the cue strike in the scenario's units (ShotStrike: degrees, ball radii), or None")
-      .def_readonly("cue_parameters", &Scenario::cue_parameters, "CueParameters (a copy)")
+      .def_property_readonly("cue_parameters", [](const Scenario& s) { return s.cue_parameters; }, "CueParameters (a copy)")
       .def_property_readonly(
           "noise", [](const Scenario& s) -> py::object { return written(s)["noise"]; },
           "the execution noise of simulate_batch, a dict in the scenario's units (speed m/s, aim_deg,\n"
           "elevation_deg degrees, side, height ball radii)")
-      .def_readonly("settings", &Scenario::settings, "SimulationSettings (a copy)")
+      .def_property_readonly("settings", [](const Scenario& s) { return s.settings; }, "SimulationSettings (a copy)")
       .def_property_readonly(
           "parameters", [](const Scenario& s) { return s.settings.parameters; }, "settings.parameters")
       .def("__eq__",

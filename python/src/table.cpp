@@ -210,10 +210,11 @@ void bind_table(py::module_& m) {
       .def_readonly("name", &Table::name)
       .def_readonly("length", &Table::length, "m, along x, cushion nose to nose")
       .def_readonly("width", &Table::width, "m, along y")
-      .def_readonly("ball", &Table::ball, "the balls played on this table (a copy)")
-      .def_readonly("cushions", &Table::cushions, "list of CushionSegment, the boundary in order (copies)")
-      .def_readonly("jaws", &Table::jaws, "list of JawArc (copies)")
-      .def_readonly("pockets", &Table::pockets, "list of Pocket (copies)")
+      .def_property_readonly("ball", [](const Table& t) { return t.ball; }, "the balls played on this table (a copy)")
+      .def_property_readonly(
+          "cushions", [](const Table& t) { return t.cushions; }, "list of CushionSegment, the boundary in order (copies)")
+      .def_property_readonly("jaws", [](const Table& t) { return t.jaws; }, "list of JawArc (copies)")
+      .def_property_readonly("pockets", [](const Table& t) { return t.pockets; }, "list of Pocket (copies)")
       .def_property_readonly("diamonds", [](const Table& t) { return points(t.diamonds); },
                              "list of (x, y), m: the sights, for drawing")
       .def("validate", [](const Table& t) { cueball::validate(t); },

@@ -293,6 +293,22 @@ class ScenarioTest(unittest.TestCase):
         self.assertEqual(cut.cue_parameters, cueball.CueParameters(0.5, 0.8))
         self.assertEqual(cut.to_dict()["cue"]["mass"], 0.5)
 
+    def test_what_a_scenario_or_table_gives_out_are_copies(self):
+        s = cueball.default_scenario()
+        text = s.to_json()
+        s.settings.max_events = 5
+        s.settings.parameters.ball.mass = 1.0
+        s.balls[0].id = 99
+        s.table.ball.radius = 0.05
+        s.cue_parameters.mass = 1.5
+        self.assertEqual(s.to_json(), text)
+        t = cueball.pool_table_9ft()
+        t.ball.mass = 1.0
+        t.cushions[0].name  # read-only parts
+        self.assertEqual(t, cueball.pool_table_9ft())
+        with self.assertRaises(AttributeError):
+            t.cushions[0].name = "x"  # type: ignore[misc]
+
     def test_a_rolling_ball_stops_where_the_closed_form_says(self):
         p = cueball.pool_parameters()
         v, x0 = 0.5, 0.3

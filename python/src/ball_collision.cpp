@@ -1,6 +1,9 @@
 // include/cueball/ball_collision.hpp: the collision of two balls.
 #include "bindings.hpp"
 
+#include <string>
+#include <utility>
+
 #include "cueball/ball_collision.hpp"
 #include "cueball/errors.hpp"
 
@@ -16,15 +19,12 @@ void check_collision(const BallState& a, const BallState& b, const cueball::Para
                      const BallCollisionParameters& contact) {
   cueball::validate(p);
   cueball::validate(contact);
-  try {
-    cueball::validate(a);
-  } catch (const cueball::InvalidArgument& e) {
-    throw cueball::InvalidArgument("a." + e.field(), std::string("a: ") + e.what());
-  }
-  try {
-    cueball::validate(b);
-  } catch (const cueball::InvalidArgument& e) {
-    throw cueball::InvalidArgument("b." + e.field(), std::string("b: ") + e.what());
+  for (const auto& [name, state] : {std::pair{"a", &a}, std::pair{"b", &b}}) {
+    try {
+      cueball::validate(*state);
+    } catch (const cueball::InvalidArgument& e) {
+      throw cueball::InvalidArgument(std::string(name) + "." + e.field(), std::string(name) + ": " + e.what());
+    }
   }
 }
 

@@ -67,7 +67,7 @@ def objects() -> None:
     assert abs(normal[0] ** 2 + normal[1] ** 2 - 1.0) < 1e-12 and "bottom-left" in names
     assert table.ball_on_table(np.array([1.0, 0.6])) and not table.inside_playing_area((5.0, 5.0))
     spec: cueball.TableSpec = cueball.preset_table_spec("pool_9ft")
-    spec.length = np.float64(2.24)  # type: ignore[assignment]
+    spec.length = 2.24
     small = cueball.build_table(spec)
     assert small.length == 2.24 and cueball.Table.from_json(small.to_json()) == small
     rack: list[cueball.PlacedBall] = cueball.rack_nine_ball(table, cueball.RackOptions(gap_sigma=0.001, seed=1))

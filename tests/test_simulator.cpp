@@ -84,6 +84,19 @@ int stress_shots() {
   return env ? std::max(1, std::atoi(env)) : 200;
 }
 
+TEST(Simulator, SettingsDefaultToThePoolPreset) {
+  // One default everywhere (README "Units and defaults"): the pool preset.
+  const SimulationSettings s;
+  const Parameters pool = pool_parameters();
+  EXPECT_EQ(s.parameters.ball.mass, pool.ball.mass);
+  EXPECT_EQ(s.parameters.ball.radius, pool.ball.radius);
+  EXPECT_EQ(s.parameters.cloth.sliding_friction, pool.cloth.sliding_friction);
+  EXPECT_EQ(s.parameters.cloth.rolling_resistance, pool.cloth.rolling_resistance);
+  EXPECT_EQ(s.parameters.cloth.spin_friction, pool.cloth.spin_friction);
+  EXPECT_EQ(s.parameters.cloth.gravity, pool.cloth.gravity);
+  EXPECT_EQ(default_scenario().settings.parameters.ball.radius, pool.ball.radius);
+}
+
 TEST(Simulator, RandomBreaksStayPhysicalAtEveryEvent) {
   std::mt19937_64 rng(9);
   std::uniform_real_distribution<double> speed(1.0, 11.0), aim(-2.0, 2.0), offset(-0.45, 0.45);

@@ -50,7 +50,9 @@ struct SimulationBall {
 };
 
 struct SimulationSettings {
-  Parameters parameters;                    ///< ball and cloth
+  /// Ball and cloth: the pool preset by default, as the default table, rack
+  /// and scenario, the CLI and the Python module (README "Units and defaults").
+  Parameters parameters = pool_parameters();
   /// e_e and mu_w of the Mathavan model: the authors' fit (0.98, 0.14). The
   /// exact solver agrees with the Euler scheme they fitted with to 1e-3 m/s,
   /// so their constants hold for it too (test_cushion_impact).

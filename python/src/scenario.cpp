@@ -173,7 +173,7 @@ void bind_scenario(py::module_& m) {
   settings_cls
       .def(py::init([](const cueball::Parameters& p, double e, double mu, const cueball::BallCollisionParameters& c,
                        int max_events) { return SimulationSettings{p, e, mu, c, max_events}; }),
-           py::arg_v("parameters", cueball::pool_parameters(), "pool_parameters()"),
+           py::arg_v("parameters", defaults.parameters, "pool_parameters()"),
            "cushion_restitution"_a = defaults.cushion_restitution, "cushion_friction"_a = defaults.cushion_friction,
            py::arg_v("ball_collision", defaults.ball_collision, "ball_collision_alciatore()"),
            "max_events"_a = defaults.max_events)

@@ -420,7 +420,7 @@ class DefaultsTest(unittest.TestCase):
         pool = cueball.pool_parameters()
         self.assertEqual(cueball.default_scenario().parameters, pool)
         self.assertEqual(cueball.default_scenario().table.ball, pool.ball)
-        self.assertEqual(cueball.SimulationSettings().parameters, pool)
+        self.assertEqual(cueball.SimulationSettings().parameters, pool)  # C++'s SimulationSettings{} too
         self.assertEqual(repr(cueball.straight_shot(1.5)), repr(cueball.straight_shot(1.5, params=pool)))
         self.assertEqual(cueball.plan_natural_roll_shot(x2=1.5, v2=0.2).v0,
                          cueball.plan_natural_roll_shot(x2=1.5, v2=0.2, params=pool).v0)

@@ -24,7 +24,7 @@ snooker_parameters() (as the CLI). Bad input raises cueball.InvalidArgument
 
 }  // namespace
 
-PYBIND11_MODULE(cueball, m) {
+PYBIND11_MODULE(_cueball, m) {
   using namespace cueball_python;
   m.doc() = kModuleDoc;
   m.attr("__version__") = CUEBALL_VERSION;

@@ -16,6 +16,7 @@ if [[ "$mode" == test ]]; then
   packages+=(clang-14 libclang-rt-14-dev llvm-14)  # libFuzzer (libclang_rt.fuzzer) and readable traces
   packages+=(chromium)                             # the viewer's end-to-end tests
   packages+=(python3-numpy python3-mypy)           # the Python module's tests: Result's arrays, mypy on the stubs
+  packages+=(python3-distributed)                  # cueball.dask's test: a LocalCluster of 2 worker processes
   command -v npm >/dev/null || packages+=(nodejs npm)
 fi
 missing=()

@@ -77,6 +77,6 @@ class CMakeBuild(build_ext):
 
 setup(
     version=project_version(),
-    ext_modules=[Extension("cueball", sources=[])],
+    ext_modules=[Extension("cueball._cueball", sources=[])],
     cmdclass={"build_ext": CMakeBuild},
 )

@@ -108,7 +108,7 @@ class OutcomeCsv {
     write();
   }
 
-  void add(int shot, const ShotOutcome& o) {
+  void add(long long shot, const ShotOutcome& o) {
     line_.clear();
     number(shot);
     flag(o.kind == ShotOutcome::Kind::miscue);
@@ -143,7 +143,7 @@ class OutcomeCsv {
     if (!file_.write(line_.data(), static_cast<std::streamsize>(line_.size()))) fail();
   }
   void flag(bool b) { line_ += b ? "1," : "0,"; }
-  void number(int v) {
+  void number(long long v) {
     line_ += std::to_string(v);
     line_ += ',';
   }
@@ -299,6 +299,7 @@ struct ManyFlags {
   std::string outcomes;
   int threads = 1;
   long long seed = 0;
+  long long first_shot = 0;
   bool noise = false;
   bool json = false;
 };
@@ -306,6 +307,8 @@ struct ManyFlags {
 void run_many(const ManyFlags& f, std::ostream& out, std::ostream& err) {
   check_flag("--threads", f.threads, 1, kMaxBatchThreads, "worker threads");
   check_flag("--seed", static_cast<double>(f.seed), 0, 9.0e15, "random seed");
+  check_flag("--first-shot", static_cast<double>(f.first_shot), 0, static_cast<double>(kMaxFirstShot),
+             "index of the first data row in the whole study");
   const Scenario s = load_scenario(f.scenario);
   std::size_t shots = 0;
   const std::vector<double> numbers =
@@ -329,17 +332,22 @@ void run_many(const ManyFlags& f, std::ostream& out, std::ostream& err) {
   }
   ManyResult r;
   try {
-    r = simulate_many(s, actions, layouts, {f.threads, static_cast<std::uint64_t>(f.seed), f.noise});
+    ManyOptions options{f.threads, static_cast<std::uint64_t>(f.seed), f.noise};
+    options.first_shot = static_cast<std::uint64_t>(f.first_shot);
+    r = simulate_many(s, actions, layouts, options);
   } catch (const InvalidArgument& e) {
-    // actions[k] is data row k (line k + 2) of the file.
+    // actions[first_shot + k] is data row k (line k + 2) of the file.
     const std::string& field = e.field();
-    if (field.rfind("actions[", 0) == 0) throw UsageError("--actions (data row k is actions[k]): " + std::string(e.what()));
-    if (field.rfind("layouts[", 0) == 0) throw UsageError("--layouts (data row k is layouts[k]): " + std::string(e.what()));
+    const std::string row = f.first_shot == 0 ? "k" : std::to_string(f.first_shot) + " + k";
+    if (field.rfind("actions[", 0) == 0)
+      throw UsageError("--actions (data row k is actions[" + row + "]): " + std::string(e.what()));
+    if (field.rfind("layouts[", 0) == 0)
+      throw UsageError("--layouts (data row k is layouts[" + row + "]): " + std::string(e.what()));
     throw;
   }
   if (!f.outcomes.empty()) {
     OutcomeCsv csv(f.outcomes, s);
-    for (int k = 0; k < r.shots; ++k) csv.add(k, r.outcome(k));
+    for (int k = 0; k < r.shots; ++k) csv.add(static_cast<long long>(f.first_shot) + k, r.outcome(k));
     csv.close();
   }
   int miscues = 0, failures = 0;
@@ -392,13 +400,17 @@ Command add_many_command(CLI::App& app) {
       "ball radii: the scenario's \"cue\" units), one row per shot, struck on the scenario's cue ball.\n"
       "--layouts CSV: header x_ID,y_ID for every ball in the scenario's order (m), one row per action.\n"
       "--noise adds the scenario's execution noise (seeded per shot by --seed, as batch does).\n"
-      "--outcomes writes every shot's outcome as CSV in batch --outcomes' format. At most 1e6 shots.");
+      "--outcomes writes every shot's outcome as CSV in batch --outcomes' format. At most 1e6 shots.\n"
+      "--first-shot K: the file's rows are shots K, K+1, ... of a bigger study split into files (their\n"
+      "noise and their rows' numbers in --outcomes and in errors): the parts' outcomes are the whole's.");
   sub->add_option("scenario", flags->scenario, "Scenario JSON file (default: the built-in 9-ball break)");
   sub->add_option("--actions", flags->actions, "CSV of the shots' cue actions")->required();
   sub->add_option("--layouts", flags->layouts, "CSV of the shots' ball positions");
   sub->add_option("--outcomes", flags->outcomes, "Write each shot's outcome to this CSV file (one row per shot)");
   sub->add_option("--threads", flags->threads, "Worker threads")->capture_default_str();
   sub->add_option("--seed", flags->seed, "Random seed of the noise")->capture_default_str();
+  sub->add_option("--first-shot", flags->first_shot, "Shot number of the first data row in the whole study")
+      ->capture_default_str();
   sub->add_flag("--noise", flags->noise, "Perturb each action with the scenario's execution noise");
   sub->add_flag("--json", flags->json, "Print one JSON object");
   return [flags](std::ostream& out, std::ostream& err) { run_many(*flags, out, err); };

@@ -42,13 +42,15 @@ def clean_env():
 # Run by the installed module's interpreter, in the scratch directory (so that
 # nothing is imported from the source or build tree): prints what it found.
 PROBE = r"""
-import json, sys
-import cueball
+import json, pathlib, sys
+import cueball, cueball.dask
 result = cueball.simulate(sys.argv[1])
 doc = result.to_dict()
 pockets = {b["name"]: b["pocket"] for b in doc["balls"]}
+package = pathlib.Path(cueball.__file__).parent
 print(json.dumps({"file": cueball.__file__, "version": cueball.__version__,
-                  "events": len(doc["events"]), "pockets": pockets}))
+                  "events": len(doc["events"]), "pockets": pockets,
+                  "typed": sorted(p.name for p in package.iterdir() if p.suffix in (".pyi", ".typed"))}))
 """
 
 
@@ -67,6 +69,8 @@ def check_probe(found, root, version, what):
         sys.exit(f"FAIL {what}: cueball.__version__ {found['version']!r}, expected {version!r}")
     if found["events"] < 1 or found["pockets"].get("1") != "top-right":
         sys.exit(f"FAIL {what}: the cut shot gave {found}")
+    if found["typed"] != ["_cueball.pyi", "py.typed"]:
+        sys.exit(f"FAIL {what}: the package's type information is {found['typed']}, not _cueball.pyi and py.typed")
 
 
 def main():

@@ -154,13 +154,13 @@ struct BatchContext {
 };
 
 // The standard normals of shot k of a batch seeded `seed`.
-std::array<double, 5> shot_normals(std::uint64_t seed, int shot) {
-  return standard_normals(splitmix64(seed ^ splitmix64(static_cast<std::uint64_t>(shot))));
+std::array<double, 5> shot_normals(std::uint64_t seed, std::uint64_t shot) {
+  return standard_normals(splitmix64(seed ^ splitmix64(shot)));
 }
 
 void play_shot(const BatchContext& c, int shot, ShotRecord& out) {
   const Scenario& s = c.scenario;
-  const CueStrike noisy = with_noise(s.cue->strike, s.noise, shot_normals(c.seed, shot));
+  const CueStrike noisy = with_noise(s.cue->strike, s.noise, shot_normals(c.seed, static_cast<std::uint64_t>(shot)));
   const LimitedStrike limited = reflect_into_limits(noisy);
   out.speed_reflected = limited.speed_reflected;
   out.elevation_reflected = limited.elevation_reflected;
@@ -442,13 +442,13 @@ ShotOutcome ManyResult::outcome(int shot) const {
 
 namespace {
 
-std::string action_field(std::size_t k, const char* what) { return "actions[" + std::to_string(k) + "]." + what; }
+std::string action_field(std::uint64_t k, const char* what) { return "actions[" + std::to_string(k) + "]." + what; }
 
-std::string layout_field(std::size_t k, std::size_t j) {
+std::string layout_field(std::uint64_t k, std::size_t j) {
   return "layouts[" + std::to_string(k) + "][" + std::to_string(j) + "]";
 }
 
-void check_action(std::size_t k, const ShotAction& a, const BallParameters& ball) {
+void check_action(std::uint64_t k, const ShotAction& a, const BallParameters& ball) {
   const auto in = [&](const char* name, double v, double lo, double hi, const char* meaning) {
     if (!(std::isfinite(v) && v >= lo && v <= hi))
       throw InvalidArgument(action_field(k, name), v, "[" + format_number(lo) + ", " + format_number(hi) + "]", meaning);
@@ -465,7 +465,7 @@ void check_action(std::size_t k, const ShotAction& a, const BallParameters& ball
                           "sqrt(side^2 + height^2), ball radii; beyond it the tip slips (a miscue)");
 }
 
-void check_layout(const Table& table, std::span<const double> layout, std::size_t k, double radius) {
+void check_layout(const Table& table, std::span<const double> layout, std::uint64_t k, double radius) {
   const std::size_t n = layout.size() / 2;
   for (std::size_t j = 0; j < n; ++j) {
     const Vec2 p{layout[2 * j], layout[2 * j + 1]};
@@ -494,6 +494,9 @@ ManyResult simulate_many(const Scenario& s, std::span<const ShotAction> actions,
   if (options.threads < 1 || options.threads > kMaxBatchThreads)
     throw InvalidArgument("threads", static_cast<double>(options.threads),
                           "[1, " + std::to_string(kMaxBatchThreads) + "]", "worker threads");
+  if (options.first_shot > kMaxFirstShot)
+    throw InvalidArgument("first_shot", static_cast<double>(options.first_shot), "[0, 2^53]",
+                          "index of actions[0] in the whole study");
   validate_simulation_input(s.table, s.balls, s.settings);  // once; each shot then runs unchecked
   if (options.noise) validate(s.noise);
   const BallParameters& ball = s.settings.parameters.ball;
@@ -505,14 +508,14 @@ ManyResult simulate_many(const Scenario& s, std::span<const ShotAction> actions,
   if (cue == n)
     throw InvalidArgument(s.cue ? "cue.ball" : "balls",
                           "the scenario has no ball with id " + std::to_string(cue_id) + " to strike");
-  for (std::size_t k = 0; k < shots; ++k) check_action(k, actions[k], ball);
+  for (std::size_t k = 0; k < shots; ++k) check_action(options.first_shot + k, actions[k], ball);
   if (!layouts.empty() && layouts.size() != shots * n * 2)
     throw InvalidArgument("layouts", static_cast<double>(layouts.size()),
                           std::to_string(shots * n * 2) + " (shots " + std::to_string(shots) + " x balls " +
                               std::to_string(n) + " x 2) or 0",
                           "number of coordinates");
   for (std::size_t k = 0; k < shots && !layouts.empty(); ++k)
-    check_layout(s.table, layouts.subspan(k * n * 2, n * 2), k, ball.radius);
+    check_layout(s.table, layouts.subspan(k * n * 2, n * 2), options.first_shot + k, ball.radius);
 
   ManyResult out;
   out.shots = static_cast<int>(shots);
@@ -552,7 +555,7 @@ ManyResult simulate_many(const Scenario& s, std::span<const ShotAction> actions,
     const auto k = static_cast<std::size_t>(shot);
     CueStrike strike = to_strike(actions[k], ball.radius);
     if (options.noise) {
-      const LimitedStrike limited = reflect_into_limits(with_noise(strike, s.noise, shot_normals(options.seed, shot)));
+      const LimitedStrike limited = reflect_into_limits(with_noise(strike, s.noise, shot_normals(options.seed, options.first_shot + k)));
       strike = limited.strike;
       record.speed_reflected = limited.speed_reflected;
       record.elevation_reflected = limited.elevation_reflected;

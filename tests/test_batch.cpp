@@ -472,6 +472,42 @@ TEST(ManyOutcomes, BitIdenticalWithOneTwoAndFourThreads) {
   }
 }
 
+TEST(ManyOutcomes, ChunksWithTheirFirstShotAreTheWholeStudy) {
+  Scenario s = default_scenario();
+  s.noise.height_offset = 0.3 * s.settings.parameters.ball.radius;  // some miscues
+  const std::vector<ShotAction> actions = varied_actions(130);
+  const ManyResult whole = simulate_many(s, actions, {}, {2, 4, true});
+  // Rows 0-49, 50-76 and 77-129 run apart, each told where it starts.
+  const std::vector<std::pair<std::size_t, std::size_t>> chunks{{0, 50}, {50, 77}, {77, 130}};
+  for (const auto& [first, last] : chunks) {
+    const std::span<const ShotAction> part(actions.data() + first, last - first);
+    ManyOptions o{1, 4, true};
+    o.first_shot = first;
+    const ManyResult chunk = simulate_many(s, part, {}, o);
+    for (std::size_t k = first; k < last; ++k)
+      expect_same_outcome(chunk.outcome(static_cast<int>(k - first)), whole.outcome(static_cast<int>(k)), std::to_string(k));
+  }
+  // Without its offset, a later chunk draws the first chunk's noise: not the same shots.
+  const ManyResult unshifted = simulate_many(s, std::span<const ShotAction>(actions.data() + 77, 53), {}, {1, 4, true});
+  const auto row = static_cast<std::size_t>(whole.balls) * 2;  // the cue ball's x in row k is at k * row
+  int differ = 0;
+  for (std::size_t k = 0; k < 53; ++k) differ += unshifted.final_position[k * row] != whole.final_position[(77 + k) * row];
+  EXPECT_GT(differ, 0);
+  // Errors name the row of the whole study.
+  std::vector<ShotAction> bad(actions.begin() + 50, actions.begin() + 77);
+  bad[3].speed = 0.0;
+  ManyOptions o{1, 4, true};
+  o.first_shot = 50;
+  try {
+    simulate_many(s, bad, {}, o);
+    ADD_FAILURE() << "accepted a zero speed";
+  } catch (const InvalidArgument& e) {
+    EXPECT_EQ(std::string(e.field()), "actions[53].speed");
+  }
+  o.first_shot = kMaxFirstShot + 1;
+  EXPECT_THROW(simulate_many(s, actions, {}, o), InvalidArgument);
+}
+
 TEST(ManyOutcomes, NoisyCopiesOfOneActionAreTheBatchsShots) {
   // An aimed (not targeted) strike: the action is exactly the scenario's.
   const Scenario s = scenario_from_json(R"({"table": "pool_9ft",

@@ -272,6 +272,38 @@ TEST(CliMany, ActionsAndLayoutsFromCsvGiveTheLibrarysOutcomes) {
   EXPECT_EQ(m.cushions_before_contact[3], 1);
 }
 
+TEST(CliMany, FilesSplitWithTheirFirstShotGiveTheWholesOutcomes) {
+  TempDir dir;
+  const std::string scenario = dir.write("cut.json", kCutShot);
+  const std::string header = "speed,aim_deg,elevation_deg,side,height\n";
+  const std::string rows[] = {"2.5,13.587,0,0,-0.2\n", "2.0,-90,0,0,0\n", "1.0,90,5,0.1,0.1\n", "3.0,45,0,0.2,0\n"};
+  const std::string whole = dir.write("whole.csv", header + rows[0] + rows[1] + rows[2] + rows[3]);
+  const std::string first = dir.write("first.csv", header + rows[0]);
+  const std::string rest = dir.write("rest.csv", header + rows[1] + rows[2] + rows[3]);
+  const std::string w = dir.path("w.csv"), a = dir.path("a.csv"), b = dir.path("b.csv");
+  const auto many = [&](const std::string& actions, const std::string& outcomes, const char* first_shot) {
+    return run_cli({"many", scenario, "--actions", actions, "--outcomes", outcomes, "--noise", "--seed", "6",
+                    "--first-shot", first_shot});
+  };
+  ASSERT_EQ(many(whole, w, "0").status, 0);
+  ASSERT_EQ(many(first, a, "0").status, 0);
+  ASSERT_EQ(many(rest, b, "1").status, 0);
+  const std::string parts = read_text(a) + read_text(b).substr(read_text(b).find('\n') + 1);  // b's header dropped
+  EXPECT_EQ(parts, read_text(w));
+  // Unshifted, the rest draws other noise (the whole's first rows').
+  const std::string c = dir.path("c.csv");
+  ASSERT_EQ(many(rest, c, "0").status, 0);
+  EXPECT_NE(read_csv(read_text(c))[1], read_csv(read_text(w))[2]);
+  // A bad row is named in the whole study's numbering.
+  const std::string bad = dir.write("bad.csv", header + rows[1] + "0,0,0,0,0\n");
+  const CliRun r = many(bad, c, "10");
+  EXPECT_EQ(r.status, 2);
+  EXPECT_NE(r.err.find("--actions (data row k is actions[10 + k]): actions[11].speed"), std::string::npos) << r.err;
+  const CliRun negative = many(whole, c, "-1");
+  EXPECT_EQ(negative.status, 2);
+  EXPECT_NE(negative.err.find("--first-shot"), std::string::npos) << negative.err;
+}
+
 TEST(CliMany, BadFilesAndActionsAreOneLineNamingTheRow) {
   TempDir dir;
   const std::string bad_speed = dir.write("a.csv", "speed,aim_deg,elevation_deg,side,height\n2,0,0,0,0\n0,1,0,0,0\n");

@@ -177,17 +177,26 @@ CueStrike to_strike(const ShotAction& action, double radius);
 
 /// Most shots in one simulate_many call. The result holds 12 bytes per shot
 /// and 29 per shot and ball (1 + 4 + 16 + 4 + 4): 1e6 shots of a 10-ball
-/// 9-ball rack are 302 MB, of a 22-ball snooker frame 650 MB. Split bigger studies into chunks (shot k's noise depends
-/// on seed and k: pass a seed per chunk).
+/// 9-ball rack are 302 MB, of a 22-ball snooker frame 650 MB. Split bigger
+/// studies into chunks, each with its ManyOptions::first_shot: the rows are
+/// those of one run of the whole study.
 inline constexpr int kMaxManyShots = 1'000'000;
+
+/// Largest ManyOptions::first_shot (2^53: every index is exact as a double).
+inline constexpr std::uint64_t kMaxFirstShot = std::uint64_t{1} << 53;
 
 struct ManyOptions {
   int threads = 1;          ///< [1, kMaxBatchThreads]
-  std::uint64_t seed = 0;   ///< noise of shot k drawn from (seed, k) as in simulate_batch
+  std::uint64_t seed = 0;   ///< noise of shot k drawn from (seed, first_shot + k) as in simulate_batch
   /// Perturb each action with the scenario's execution noise (reflected into
   /// the limits; a tip offset beyond the miscue limit is a miscue, not
   /// simulated), exactly as simulate_batch perturbs its one strike.
   bool noise = false;
+  /// Where actions[0] stands in a study split into chunks, [0, kMaxFirstShot]:
+  /// shot k is shot first_shot + k of the study, for its noise and in error
+  /// messages ("actions[first_shot + k].speed"). A chunk run with its offset
+  /// gives exactly the rows the whole study run at once would.
+  std::uint64_t first_shot = 0;
 };
 
 /// Every shot's outcome; `shots` = N rows, `balls` = the scenario's balls,

@@ -35,7 +35,7 @@ result bit for bit. Bad input raises cueball.InvalidArgument
 
 }  // namespace
 
-PYBIND11_MODULE(cueball, m) {
+PYBIND11_MODULE(_cueball, m) {
   using namespace cueball_python;
   m.doc() = kModuleDoc;
   m.attr("__version__") = CUEBALL_VERSION;

@@ -57,7 +57,7 @@ void bind_simulate_many(py::module_& m) {
   m.def(
       "simulate_many",
       [](const py::object& scenario, const py::object& actions, const py::object& layouts, long long threads,
-         std::uint64_t seed, bool noise) {
+         std::uint64_t seed, bool noise, long long first_shot) {
         const py::array_t<double> a =
             float_array(actions, "actions", {5}, "an (N, 5) array of cue speed (m/s), aim (deg), elevation (deg), side and height (ball radii)");
         std::vector<cueball::ShotAction> shots(static_cast<std::size_t>(a.shape(0)));
@@ -71,12 +71,17 @@ void bind_simulate_many(py::module_& m) {
         if (threads < 1 || threads > cueball::kMaxBatchThreads)
           throw cueball::InvalidArgument("threads", static_cast<double>(threads),
                                          "[1, " + std::to_string(cueball::kMaxBatchThreads) + "]", "worker threads");
+        if (first_shot < 0 || static_cast<std::uint64_t>(first_shot) > cueball::kMaxFirstShot)
+          throw cueball::InvalidArgument("first_shot", static_cast<double>(first_shot), "[0, 2^53]",
+                                         "index of actions[0] in the whole study");
+        cueball::ManyOptions options{static_cast<int>(threads), seed, noise};
+        options.first_shot = static_cast<std::uint64_t>(first_shot);
         const ScenarioInput input = scenario_input(scenario);
         auto result = std::make_unique<cueball::ManyResult>();
         {
           py::gil_scoped_release release;
           const std::shared_ptr<const cueball::Scenario> s = load_scenario(input);
-          *result = cueball::simulate_many(*s, shots, positions, {static_cast<int>(threads), seed, noise});
+          *result = cueball::simulate_many(*s, shots, positions, options);
         }
         const cueball::ManyResult& r = *result;
         const py::capsule owner(result.release(), [](void* p) { delete static_cast<cueball::ManyResult*>(p); });
@@ -99,14 +104,15 @@ void bind_simulate_many(py::module_& m) {
         return out;
       },
       "scenario"_a, "actions"_a, "layouts"_a = py::none(), "threads"_a = 1, "seed"_a = 0,
-      "noise"_a = false,
+      "noise"_a = false, "first_shot"_a = 0,
       "Simulates N different shots of the scenario (None: the built-in break) in one call, on `threads` threads (the GIL\n"
       "released): `actions` is an (N, 5) array of cue speed (m/s), aim (deg), elevation (deg),\n"
       "side and height tip offsets (ball radii), the units of the scenario's \"cue\"; the ball\n"
       "struck is the scenario's cue ball. `layouts`, optional, is an (N, n_balls, 2) array of\n"
       "every scenario ball's position (m), in the scenario's order. With `noise`, each shot gets\n"
-      "the scenario's execution noise, drawn from (seed, shot index). Deterministic whatever\n"
-      "`threads`. Returns a dict of read-only NumPy arrays, rows by shot and columns by ball\n"
+      "the scenario's execution noise, drawn from (seed, first_shot + row). `first_shot` places\n"
+      "the rows in a bigger study split into chunks (cueball.dask): a chunk gives exactly the rows\n"
+      "of one run of the whole, and errors name the whole's row. Deterministic whatever `threads`. Returns a dict of read-only NumPy arrays, rows by shot and columns by ball\n"
       "(`ids`): pocketed (N, n) bool, pocket (N, n) index or -1, final_position (N, n, 2),\n"
       "first_contact (N,) id of the first ball the cue ball touches or -1, cushions_before_contact\n"
       "and cushions (N, n) cushion contacts before the cue ball's first ball contact and in all,\n"

@@ -1,4 +1,4 @@
-"""python/cueball.pyi against the built module: the same public names, the same
+"""python/cueball/_cueball.pyi against the built extension module: the same public names, the same
 class members, the same parameter names; and the typed program that
 `mypy --strict` checks against the stubs (ctest python_stubs) runs."""
 
@@ -10,8 +10,9 @@ import sys
 import unittest
 
 import cueball
+from cueball import _cueball
 
-STUB = pathlib.Path(__file__).resolve().parents[1] / "cueball.pyi"
+STUB = pathlib.Path(__file__).resolve().parents[1] / "cueball" / "_cueball.pyi"
 # Names only for type checkers: the dicts' TypedDicts and the private aliases.
 STUB_ONLY = {"EventArrays", "BallArrays", "SegmentArrays", "StateArrays", "ManyOutcomes", "_Float", "_Int", "_Vec", "_Scenario"}
 
@@ -53,16 +54,25 @@ def public(names):
 class StubTest(unittest.TestCase):
     def test_every_name_of_the_module_is_in_the_stub_and_back(self):
         stub = defined_names(stub_tree().body)
-        module = public(dir(cueball))
-        self.assertEqual(sorted(module - set(stub)), [], "in the module, missing from cueball.pyi")
-        self.assertEqual(sorted(set(stub) - module - STUB_ONLY - {"__version__"}), [], "in cueball.pyi, not in the module")
+        module = public(dir(_cueball))
+        self.assertEqual(sorted(module - set(stub)), [], "in the module, missing from _cueball.pyi")
+        self.assertEqual(sorted(set(stub) - module - STUB_ONLY - {"__version__"}), [], "in _cueball.pyi, not in the module")
         self.assertIn("__version__", stub)
         self.assertIsInstance(cueball.__version__, str)
 
+    def test_the_package_is_the_extension_and_its_python_layer(self):
+        for name in sorted(public(dir(_cueball))):
+            self.assertIs(getattr(cueball, name), getattr(_cueball, name), name)
+        self.assertIs(cueball._time_run_scenario, _cueball._time_run_scenario)
+        self.assertEqual(cueball.__version__, _cueball.__version__)
+        package = pathlib.Path(cueball.__file__).parent
+        for name in ("py.typed", "_cueball.pyi", "dask.py"):
+            self.assertTrue((package / name).is_file(), name)
+
     def test_class_members_and_parameters_agree(self):
         stub = defined_names(stub_tree().body)
-        for name in sorted(public(dir(cueball))):
-            obj = getattr(cueball, name)
+        for name in sorted(public(dir(_cueball))):
+            obj = getattr(_cueball, name)
             node = stub[name]
             with self.subTest(name=name):
                 if inspect.isclass(obj):

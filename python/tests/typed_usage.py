@@ -1,5 +1,5 @@
 """The module's API as a typed program: checked by `mypy --strict` against
-python/cueball.pyi (ctest python_stubs) and run by test_stubs.py, so the
+python/cueball/_cueball.pyi (ctest python_stubs) and run by test_stubs.py, so the
 stubs and the module cannot drift apart unnoticed."""
 
 import math
@@ -9,6 +9,7 @@ import numpy as np
 from numpy.typing import NDArray
 
 import cueball
+import cueball.dask
 
 CUT_SHOT = pathlib.Path(__file__).resolve().parents[2] / "docs" / "example-cut-shot.json"
 
@@ -50,6 +51,8 @@ def main() -> None:
     many: cueball.ManyOutcomes = cueball.simulate_many(None, np.array([[3.0, 0.0, 0.0, 0.0, 0.0]]), threads=1)
     pocketed: NDArray[np.bool_] = many["pocketed"]
     assert pocketed.shape == (1, 10) and many["first_contact"][0] == 1
+    bounds: list[tuple[int, int]] = cueball.dask.chunk_bounds(10, 4)
+    assert bounds == [(0, 4), (4, 8), (8, 10)]
     try:
         cueball.simulate(sample_rate=-1.0)
     except cueball.InvalidArgument as e:

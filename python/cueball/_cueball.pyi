@@ -1,4 +1,5 @@
-"""Type stubs of the extension module cueball (python/src/), with units.
+"""Type stubs of the extension module cueball._cueball (python/src/), with units;
+the package cueball re-exports all of it.
 
 SI throughout: m, s, kg, rad; degrees and ball radii only in the scenario's
 units (ShotStrike, scenario JSON, simulate_many's actions, CueStrike.from_units).
@@ -979,9 +980,11 @@ def simulate_many(
     threads: _Int = 1,
     seed: _Int = 0,
     noise: bool = False,
+    first_shot: _Int = 0,
 ) -> ManyOutcomes:
     """N different shots in one call: actions (N, 5) of cue speed m/s, aim deg, elevation deg,
-    side and height ball radii; layouts (N, n_balls, 2) m, optional. Releases the GIL."""
+    side and height ball radii; layouts (N, n_balls, 2) m, optional. Releases the GIL.
+    first_shot: row of actions[0] in a study split into chunks (its noise, its errors' names)."""
 
 def _time_run_scenario(scenario: _Scenario = None, repetitions: _Int = 100) -> float:
     """Benchmark hook: seconds per run of the library's run_scenario(), timed in C++."""

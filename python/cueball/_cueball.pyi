@@ -937,6 +937,12 @@ class Result:
     @property
     def pocket_names(self) -> list[str]:
         """the table's pockets, indexed by events['pocket'] and balls['pocket']"""
+    @property
+    def cushion_names(self) -> list[str]:
+        """the table's cushions, indexed by events['cushion'] (the result JSON's cushion_name)"""
+    @property
+    def jaw_names(self) -> list[str]:
+        """the table's jaws, indexed by events['jaw'] (the result JSON's jaw_name)"""
     def state_at(self, times: _Float | Sequence[_Float] | NDArray[Any]) -> StateArrays:
         """Every ball at each time (s, finite, >= 0; a number or 1-D); releases the GIL."""
     def sample(self, rate: _Float) -> StateArrays:

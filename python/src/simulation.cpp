@@ -286,6 +286,23 @@ void bind_simulation(py::module_& m) {
             return names;
           },
           "the table's pocket names, indexed by events['pocket'] and balls['pocket']")
+      .def_property_readonly(
+          "cushion_names",
+          [](const Result& r) {
+            py::list names;
+            for (std::size_t i = 0; i < r.scenario->table.cushions.size(); ++i)
+              names.append(cueball::cushion_name(r.scenario->table, i));
+            return names;
+          },
+          "the table's cushion names (as the result JSON's events give them), indexed by events['cushion']")
+      .def_property_readonly(
+          "jaw_names",
+          [](const Result& r) {
+            py::list names;
+            for (std::size_t j = 0; j < r.scenario->table.jaws.size(); ++j) names.append(cueball::jaw_name(r.scenario->table, j));
+            return names;
+          },
+          "the table's jaw names (as the result JSON's events give them), indexed by events['jaw']")
       .def(
           "state_at", [](const Result& r, const py::object& times) { return states_dict(r, checked_times(times)); },
           "times"_a,

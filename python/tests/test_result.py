@@ -86,6 +86,9 @@ class ResultTest(unittest.TestCase):
                 self.assertEqual(ev["jaw"][i], e.get("jaw", -1))
                 pocket = ev["pocket"][i]
                 self.assertEqual(r.pocket_names[pocket] if pocket >= 0 else None, e.get("pocket"))
+                cushion, jaw = ev["cushion"][i], ev["jaw"][i]
+                self.assertEqual(r.cushion_names[cushion] if cushion >= 0 else None, e.get("cushion_name"))
+                self.assertEqual(r.jaw_names[jaw] if jaw >= 0 else None, e.get("jaw_name"))
         kinds = {cueball.EVENT_TYPES[t] for t in self.result.events["type"]}
         self.assertTrue({"cue_strike", "ball_ball", "ball_cushion"} <= kinds, kinds)
         self.assertIn("ball_pocket", {cueball.EVENT_TYPES[t] for t in self.cut.events["type"]})

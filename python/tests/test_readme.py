@@ -12,6 +12,7 @@ import os
 import pathlib
 import re
 import unittest
+import warnings
 
 ROOT = pathlib.Path(__file__).resolve().parents[2]
 READMES = [ROOT / "python" / "README.md", ROOT / "README.md"]
@@ -47,7 +48,9 @@ class ReadmeSessionTest(unittest.TestCase):
                 self.assertGreater(len(test.examples), 0, f"{name}: a pycon block without >>> examples")
                 runner = doctest.DocTestRunner(optionflags=OPTIONS)
                 report: list[str] = []
-                runner.run(test, out=report.append, clear_globs=False)
+                with warnings.catch_warnings():  # tornado's DeprecationWarnings, from inside distributed
+                    warnings.simplefilter("ignore", DeprecationWarning)
+                    runner.run(test, out=report.append, clear_globs=False)
                 with self.subTest(block=name):
                     self.assertEqual(runner.failures, 0, "".join(report))
                 names = test.globs

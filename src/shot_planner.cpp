@@ -73,7 +73,6 @@ struct Candidate {
   double cut_deg = 0.0;
   double cue_path = 0.0;    // m
   double object_path = 0.0; // m
-  double elevation_deg = 0.0;
   double ease = 0.0;        // order of the search: larger first
 };
 
@@ -232,6 +231,25 @@ class Planner {
   int runs_ = 0;
 };
 
+// The tip heights tried: the request's, or centre ball, then draw, then follow.
+std::vector<double> tip_heights(const PlanRequest& q) {
+  if (q.height) return {*q.height};
+  return {0.0, -0.3, 0.3};
+}
+
+// The lowest elevation, in 2 degree steps from level up to
+// kMaxPlanElevationDeg, at which the cue clears the balls and the rail.
+std::optional<double> clearing_elevation(const Scenario& s, std::size_t cue, double aim_deg, double side,
+                                         double height) {
+  for (int k = 0; 2.0 * k <= kMaxPlanElevationDeg; ++k) {
+    const ShotAction probe{1.0, aim_deg, 2.0 * k, side, height};
+    if (!cue_obstructed(s.table, s.balls, s.balls[cue].id, to_strike(probe, s.settings.parameters.ball.radius),
+                        s.settings.parameters.ball))
+      return 2.0 * k;
+  }
+  return std::nullopt;
+}
+
 // Candidates of one kind for one pocket, with the reasons others were dropped.
 void geometric_candidates(const Scenario& s, const PlanRequest& q, std::size_t cue, std::size_t target,
                           std::size_t pocket, ShotKind kind, std::vector<Candidate>& out,
@@ -284,15 +302,10 @@ void geometric_candidates(const Scenario& s, const PlanRequest& q, std::size_t c
     c.object_path = 0.0;
     for (std::size_t i = 0; i + 1 < legs.size(); ++i) c.object_path += norm(legs[i + 1] - legs[i]);
     c.last_leg = (legs.back() - legs[legs.size() - 2]) / norm(legs.back() - legs[legs.size() - 2]);
-    // The cue must reach the ball: level if it can, else raised in 2 degree steps.
+    // The cue must reach the ball (at some tip height tried).
     bool clear = false;
-    for (double e = 0.0; e <= kMaxPlanElevationDeg + 1e-9 && !clear; e += 2.0) {
-      const ShotAction probe{1.0, c.aim_deg, e, q.side, q.height};
-      if (!cue_obstructed(table, s.balls, s.balls[cue].id, to_strike(probe, R), s.settings.parameters.ball)) {
-        clear = true;
-        c.elevation_deg = e;
-      }
-    }
+    for (double height : tip_heights(q))
+      clear = clear || clearing_elevation(s, cue, c.aim_deg, q.side, height).has_value();
     if (!clear) {
       rejected.push_back(what + ": the cue is obstructed at every elevation up to " +
                          format_number(kMaxPlanElevationDeg) + " deg");
@@ -439,9 +452,13 @@ ShotPlanResult plan_shot(const Scenario& table_state, const PlanRequest& q) {
                           "[" + std::to_string(kMinPlanSimulations) + ", " + std::to_string(kMaxPlanSimulations) + "]",
                           "engine runs the plan may use");
   require_in_range("side", q.side, -kMiscueOffsetFraction, kMiscueOffsetFraction, "tip offset to the right, ball radii");
-  require_in_range("height", q.height, -kMiscueOffsetFraction, kMiscueOffsetFraction, "tip offset above the centre, ball radii");
-  if (std::hypot(q.side, q.height) > kMiscueOffsetFraction * (1.0 + 1e-12))
-    throw InvalidArgument("tip_offset", std::hypot(q.side, q.height), "[0, 0.5]", "sqrt(side^2 + height^2), ball radii");
+  const double given_height = q.height.value_or(0.0);
+  require_in_range("height", given_height, -kMiscueOffsetFraction, kMiscueOffsetFraction, "tip offset above the centre, ball radii");
+  // Draw and follow (+-0.3) are tried with a centre-ball side of at most 0.4.
+  const double most_height = q.height ? std::abs(given_height) : 0.3;
+  if (std::hypot(q.side, most_height) > kMiscueOffsetFraction * (1.0 + 1e-12))
+    throw InvalidArgument("side", q.side, "a tip offset sqrt(side^2 + height^2) <= 0.5 (height " + format_number(most_height) + ")",
+                          "tip offset to the right, ball radii");
   validate(q.noise);
 
   ShotPlanResult result;
@@ -466,15 +483,9 @@ ShotPlanResult plan_shot(const Scenario& table_state, const PlanRequest& q) {
   const Parameters& par = s.settings.parameters;
   const double roll = par.cloth.rolling_resistance * par.cloth.gravity;
   std::vector<PlannedShot> feasible;
-  for (const Candidate& c : candidates) {
-    const std::string what = std::string(to_string(c.kind)) +
-                             (c.kind == ShotKind::bank ? " off " + cushion_name(s.table, c.cushion) : std::string()) +
-                             " into " + s.table.pockets[c.pocket].name;
-    if (planner.runs() > 0 && planner.runs() + kCandidateRuns > search_budget) {
-      result.rejected.push_back(what + ": not searched (the simulation budget is spent)");
-      continue;
-    }
-    const int runs_before = planner.runs();
+  // One candidate at one tip height: the aim solved, the windows found, the
+  // speed chosen; nullopt and `why` when it does not pot.
+  const auto search = [&](const Candidate& c, double height, std::string& why) -> std::optional<PlannedShot> {
     // First speed: the object ball arriving at about kArrivalSpeed, rolling
     // (5/7 of its speed kept after sliding), 95 % of the cue ball's speed
     // along the line of centres passed on, a bank losing a quarter.
@@ -482,9 +493,14 @@ ShotPlanResult plan_shot(const Scenario& table_state, const PlanRequest& q) {
                             (c.kind == ShotKind::bank ? 0.75 : 1.0);
     const double v_cue = v_object / (0.95 * std::cos(c.cut_deg * kDegree));
     const double v0 = 1.2 * std::sqrt(v_cue * v_cue + 2.0 * roll * c.cue_path);
-    const double cue_speed_of = level_cue_speed(v0, q.height * R, ball, s.cue_parameters);
-    ShotAction a{std::clamp(cue_speed_of / std::cos(c.elevation_deg * kDegree), 0.3, 10.0), c.aim_deg, c.elevation_deg,
-                 q.side, q.height};
+    const double cue_speed_of = level_cue_speed(v0, height * R, ball, s.cue_parameters);
+    const std::optional<double> elevation = clearing_elevation(s, cue, c.aim_deg, q.side, height);
+    if (!elevation) {
+      why = "the cue is obstructed at every elevation up to " + format_number(kMaxPlanElevationDeg) + " deg";
+      return std::nullopt;
+    }
+    ShotAction a{std::clamp(cue_speed_of / std::cos(*elevation * kDegree), 0.3, 10.0), c.aim_deg, *elevation, q.side,
+                 height};
     std::optional<double> aim;
     for (int tries = 0; tries < 4 && !aim; ++tries) {
       bool short_of_pocket = false;
@@ -493,8 +509,8 @@ ShotPlanResult plan_shot(const Scenario& table_state, const PlanRequest& q) {
       if (!aim) a.speed = std::min(kMaxCueSpeed, a.speed * 1.6);
     }
     if (!aim) {
-      result.rejected.push_back(what + ": no aim pots it on the exact simulation");
-      continue;
+      why = "no aim pots it on the exact simulation";
+      return std::nullopt;
     }
     a.aim_deg = *aim;
     const auto set_speed = [](ShotAction& x, double v) { x.speed = v; };
@@ -510,8 +526,8 @@ ShotPlanResult plan_shot(const Scenario& table_state, const PlanRequest& q) {
       bool short_of_pocket = false;
       aim = planner.solve_aim(a, c, short_of_pocket, 8);
       if (!aim) {
-        result.rejected.push_back(what + ": no aim pots it at the chosen speed");
-        continue;
+        why = "no aim pots it at the chosen speed";
+        return std::nullopt;
       }
       a.aim_deg = *aim;
     }
@@ -530,13 +546,13 @@ ShotPlanResult plan_shot(const Scenario& table_state, const PlanRequest& q) {
                          planner.window_edge(a, c, a.speed, +1.0, 0.5, kSpeedWindowTol, kMaxCueSpeed, set_speed)};
     const CueStrike strike = to_strike(a, R);
     if (cue_obstructed(s.table, s.balls, cue_id, strike, ball)) {
-      result.rejected.push_back(what + ": the cue is obstructed at the corrected aim");
-      continue;
+      why = "the cue is obstructed at the corrected aim";
+      return std::nullopt;
     }
     const Trial final_trial = planner.play(a, c.pocket, c.last_leg);
     if (!final_trial.success) {
-      result.rejected.push_back(what + ": the corrected strike does not pot it");
-      continue;
+      why = "the corrected strike does not pot it";
+      return std::nullopt;
     }
     shot.strike = a;
     const BallState after = strike_ball(strike, s.balls[cue].state.position, ball, s.cue_parameters);
@@ -547,8 +563,31 @@ ShotPlanResult plan_shot(const Scenario& table_state, const PlanRequest& q) {
     shot.robot.cue_speed = level_cue_speed(shot.ball_speed, shot.robot.tip_height, ball, s.cue_parameters);
     for (const BallTrajectory& b : final_trial.result.balls)
       shot.predicted.push_back({b.id, b.final_state.position, b.pocketed, b.pocketed ? b.pocket : -1});
-    shot.simulations = planner.runs() - runs_before;
-    feasible.push_back(std::move(shot));
+    return shot;
+  };
+  // Centre ball first; a scratch or a miss there tries draw, then follow.
+  const std::vector<double> heights = tip_heights(q);
+  for (const Candidate& c : candidates) {
+    const std::string what = std::string(to_string(c.kind)) +
+                             (c.kind == ShotKind::bank ? " off " + cushion_name(s.table, c.cushion) : std::string()) +
+                             " into " + s.table.pockets[c.pocket].name;
+    if (planner.runs() > 0 && planner.runs() + kCandidateRuns > search_budget) {
+      result.rejected.push_back(what + ": not searched (the simulation budget is spent)");
+      continue;
+    }
+    const int runs_before = planner.runs();
+    std::string why;
+    std::optional<PlannedShot> shot;
+    for (double height : heights) {
+      shot = search(c, height, why);
+      if (shot || (planner.runs() > 0 && planner.runs() + kCandidateRuns > search_budget)) break;
+    }
+    if (!shot) {
+      result.rejected.push_back(what + ": " + why);
+      continue;
+    }
+    shot->simulations = planner.runs() - runs_before;
+    feasible.push_back(std::move(*shot));
   }
   result.simulations = planner.runs();
   if (feasible.empty()) {

@@ -38,9 +38,12 @@
 // cue ball's first contact is the target and the cue ball is not pocketed
 // (a scratch); a miscue or an event-limit failure is a failure.
 //
-// The strike is centre ball (side 0, height 0 unless the request says
-// otherwise), level unless the cue must be raised to clear a ball or the
-// rail. Deterministic: the same scenario, request and seed give the same
+// The strike is centre ball unless the request gives the tip offsets (a
+// centre-ball shot that misses or scratches, a straight-in's cue ball
+// following the object ball in, is tried again with draw, then follow), level
+// unless the cue must be raised to clear a ball or the rail (the butt of a
+// level cue is below the rail's height, so it comes out at 2 degrees
+// wherever the cue crosses the rail). Deterministic: the same scenario, request and seed give the same
 // plan bit for bit, and the engine runs are capped by `simulations`.
 //
 // Cue obstruction (cue_obstructed()). The cue is a straight cylinder of
@@ -122,8 +125,10 @@ struct PlanRequest {
   CueStrikeNoise noise = tournament_noise();  ///< m/s, rad, rad, m, m
   std::uint64_t seed = 0;
   int simulations = 4000;                ///< engine runs at most, [kMinPlanSimulations, kMaxPlanSimulations]
-  double side = 0.0;                     ///< tip offsets of the strike, ball radii (as the scenario's "cue")
-  double height = 0.0;
+  double side = 0.0;                     ///< tip offset to the right, ball radii (as the scenario's "cue")
+  /// Tip offset above the centre, ball radii. None: centre ball, and where
+  /// that misses or scratches, draw (-0.3), then follow (+0.3).
+  std::optional<double> height;
 };
 
 /// A ball where the noise-free shot leaves it.

@@ -102,8 +102,9 @@ void run_plan_shot(const PlanShotFlags& f, std::ostream& out, std::ostream& err)
   try {
     plan = plan_shot(s, q);
   } catch (const InvalidArgument& e) {
-    if (e.field() == "target") throw UsageError(std::string("--ball: ") + e.what());
-    if (e.field() == "pocket") throw UsageError(std::string("--pocket: ") + e.what());
+    // The library's "target = 4 ..." is the flag's "--ball = 4 ...".
+    const std::string message = e.what();
+    if (e.field() == "target" && message.rfind("target", 0) == 0) throw UsageError("--ball" + message.substr(6));
     throw;
   }
   if (!f.scenario_out.empty())

@@ -591,10 +591,24 @@ ShotPlanResult plan_shot(const Scenario& table_state, const PlanRequest& q) {
   }
   result.simulations = planner.runs();
   if (feasible.empty()) {
-    std::string why;
+    // A summary by reason first (the message is cut in the middle when long), then each.
+    std::string why, summary;
     for (const std::string& r : result.rejected) why += (why.empty() ? "" : "; ") + r;
+    const auto count = [&](const char* reason, const char* said) {
+      std::size_t n = 0;
+      for (const std::string& r : result.rejected) n += r.find(reason) != std::string::npos ? 1u : 0u;
+      if (n > 0) summary += (summary.empty() ? "" : ", ") + std::to_string(n) + " " + said;
+    };
+    count("blocked", "blocked by a ball");
+    count("deg > ", "cut too thin");
+    count("bank point", "bank point off the cushion");
+    count("the cushion at", "bank too shallow");
+    count("obstructed", "cue obstructed");
+    count("exact simulation", "no potting aim on the exact simulation");
     if (why.empty()) why = "no candidate of the requested kinds";
-    throw NoFeasibleShot("no feasible shot pots ball " + std::to_string(q.target) + ": " + why);
+    throw NoFeasibleShot("no feasible shot pots ball " + std::to_string(q.target) + " (" +
+                         std::to_string(result.rejected.size()) + " candidates" +
+                         (summary.empty() ? "" : ": " + summary) + "): " + why);
   }
 
   // 4. Noise: every feasible candidate screened (common noise draws), the

@@ -23,11 +23,16 @@
 //      target's signed lateral miss of P (its closest approach to P, measured
 //      across the intended last leg) is driven to zero by the secant method,
 //      so cut- and spin-induced throw, the cloth's curve and the cushion's
-//      rebound are in the answer. The pot window in aim (the range that
-//      still pots, the rest held) and in speed are then found by bisection
-//      from the solved strike, each edge to kAimWindowTolDeg / kSpeedWindowTol.
-//      The speed is chosen inside the speed window (enough margin above the
-//      slowest pot to absorb the speed noise, at most the window's middle).
+//      rebound are in the answer. The speed window (cue speeds that still
+//      pot, the rest held) is found by bisection from there, each edge to
+//      kSpeedWindowTol, and the speed chosen in it: the first guess (the
+//      object ball reaching the pocket at about 1 m/s), but at least
+//      max(0.3 m/s, a quarter of the slowest pot) + 3 sigma above the
+//      slowest pot and at most the window's middle; the aim is solved again
+//      at that speed. The aim window is then found the same way (edges to
+//      kAimWindowTolDeg) and the aim played is its middle, the aim that
+//      takes the most aim noise either way; the speed window reported is
+//      the one at that aim.
 //   4. The success probability is estimated from noisy copies of the strike
 //      (simulate_many with the request's CueStrikeNoise, batch.hpp): every
 //      feasible candidate is screened with a few shots, the best one by the

@@ -86,14 +86,18 @@ struct Trial {
   SimulationResult result;
 };
 
+// Thrown by Planner::play when the noise-free search has used its share.
+struct BudgetSpent {};
+
 class Planner {
  public:
-  Planner(const Scenario& s, std::size_t cue, std::size_t target)
-      : s_(s), cue_(cue), target_(target), R_(s.settings.parameters.ball.radius) {}
+  Planner(const Scenario& s, std::size_t cue, std::size_t target, int most_runs)
+      : s_(s), cue_(cue), target_(target), R_(s.settings.parameters.ball.radius), most_runs_(most_runs) {}
 
   int runs() const { return runs_; }
 
   Trial play(const ShotAction& a, std::size_t pocket, Vec2 last_leg) {
+    if (runs_ >= most_runs_) throw BudgetSpent{};
     ++runs_;
     Trial t;
     std::vector<SimulationBall> balls = s_.balls;
@@ -228,6 +232,7 @@ class Planner {
   const Scenario& s_;
   std::size_t cue_, target_;
   double R_;
+  int most_runs_;
   int runs_ = 0;
 };
 
@@ -478,8 +483,10 @@ ShotPlanResult plan_shot(const Scenario& table_state, const PlanRequest& q) {
                    [](const Candidate& a, const Candidate& b) { return a.ease > b.ease; });
 
   // 3. The exact simulation: aim corrected, windows, speed chosen.
-  Planner planner(s, cue, target);
+  // At most half the budget on the search (a candidate started before then
+  // may go on to three quarters), the rest for the noise.
   const int search_budget = q.simulations / 2;
+  Planner planner(s, cue, target, q.simulations * 3 / 4);
   const Parameters& par = s.settings.parameters;
   const double roll = par.cloth.rolling_resistance * par.cloth.gravity;
   std::vector<PlannedShot> feasible;
@@ -579,7 +586,12 @@ ShotPlanResult plan_shot(const Scenario& table_state, const PlanRequest& q) {
     std::string why;
     std::optional<PlannedShot> shot;
     for (double height : heights) {
-      shot = search(c, height, why);
+      try {
+        shot = search(c, height, why);
+      } catch (const BudgetSpent&) {
+        why = "not finished (the simulation budget is spent)";
+        break;
+      }
       if (shot || (planner.runs() > 0 && planner.runs() + kCandidateRuns > search_budget)) break;
     }
     if (!shot) {

@@ -5,7 +5,9 @@
 
 #include <nlohmann/json.hpp>
 
+#include <sstream>
 #include <string>
+#include <vector>
 
 #include "cli_runner.hpp"
 #include "temp_dir.hpp"
@@ -103,6 +105,33 @@ TEST(CliPlanShot, ScenarioOutReplaysThePlanBitForBit) {
   }
   // The written cue is the plan's.
   EXPECT_EQ(result["cue_strike"]["given"], plan["cue"]);
+
+  // And its noise: `batch` with the plan's seed draws the final estimate's
+  // shots, so its outcomes give the same success count.
+  const int shots = plan["noisy_shots"].get<int>();
+  const std::string outcomes = dir.path("outcomes.csv");
+  const CliRun batch = run_cli({"batch", planned, "--shots", std::to_string(shots), "--seed", "0", "--outcomes", outcomes});
+  ASSERT_EQ(batch.status, 0) << batch.err;
+  std::istringstream csv(test::read_text(outcomes));
+  std::string line;
+  std::getline(csv, line);  // header: shot,miscue,failure,..,first_contact, then 6 columns per ball (0, 1, 9)
+  int rows = 0, hits = 0;
+  const std::size_t pocket = [&] {
+    for (std::size_t k = 0; k < result["table"]["pockets"].size(); ++k)
+      if (result["table"]["pockets"][k]["name"] == plan["pocket"]) return k;
+    return std::size_t{99};
+  }();
+  while (std::getline(csv, line)) {
+    std::vector<std::string> cell;
+    std::istringstream cells(line);
+    for (std::string c; std::getline(cells, c, ',');) cell.push_back(c);
+    ASSERT_EQ(cell.size(), 7u + 18u);
+    ++rows;
+    hits += cell[1] == "0" && cell[2] == "0" && cell[6] == "1" && cell[7] == "0" && cell[13] == "1" &&
+            cell[14] == std::to_string(pocket);
+  }
+  EXPECT_EQ(rows, shots);
+  EXPECT_EQ(static_cast<double>(hits) / shots, plan["success_probability"].get<double>());
 }
 
 TEST(CliPlanShot, BadInputExits2NamingTheFlag) {

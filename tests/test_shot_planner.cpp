@@ -152,20 +152,31 @@ TEST(ShotPlanner, ABlockedDirectLineIsNeverChosen) {
   EXPECT_TRUE(said);
 }
 
-TEST(ShotPlanner, ABlockedDirectLineIsSolvedAsABankThatPots) {
-  // The 1 ball above the middle of the table, the bottom-side pocket its
-  // target; ball 2 on the direct line. Off the top rail it is open.
-  const Scenario table = layout({});
-  const Vec2 object{1.0, 0.9};
-  const Vec2 pocket = pocket_centre(table, "bottom-side");
-  const Scenario s = layout({{0, {0.8, 0.45}}, {1, object}, {2, object + 0.25 * (pocket - object)}});
+TEST(ShotPlanner, EveryDirectLineBlockedIsSolvedAsABankThatPots) {
+  // Balls 2, 3 and 4 around the 1 (a layout found by a random search): the
+  // direct shots into bottom-left, top-side and top-left are blocked (the
+  // cue ball's path by ball 2, the object ball's by ball 4), the other three
+  // pockets are behind the 1. Off the top rail into the bottom-side pocket
+  // it is open.
+  const Scenario s = layout({{0, {1.985, 0.281}}, {1, {1.683, 0.623}}, {2, {1.805, 0.603}}, {3, {1.586, 0.527}},
+                             {4, {1.608, 0.677}}});
   PlanRequest q;
   q.target = 1;
-  q.pocket = 1;  // bottom-side
+  q.kinds = {ShotKind::direct};
+  try {
+    plan_shot(s, q);
+    ADD_FAILURE() << "expected every direct shot to be infeasible";
+  } catch (const NoFeasibleShot& e) {
+    const std::string why = e.what();
+    EXPECT_NE(why.find("3 blocked by a ball, 3 cut too thin"), std::string::npos) << why;
+  }
+  q.kinds = {ShotKind::direct, ShotKind::bank};
   const ShotPlanResult plan = plan_shot(s, q);
   EXPECT_EQ(plan.shot.kind, ShotKind::bank);
   EXPECT_EQ(plan.shot.pocket_name, "bottom-side");
-  EXPECT_FALSE(plan.shot.cushion.empty());
+  EXPECT_EQ(plan.shot.cushion, "top rail, right of the side pocket");
+  EXPECT_GT(plan.shot.success_probability, 0.5);
+  for (const PlannedShot& a : plan.alternatives) EXPECT_EQ(a.kind, ShotKind::bank);
   expect_pots(s, plan, q);
   // The object ball really went off a cushion first.
   const SimulationResult r = replay(s, plan, q);

@@ -77,7 +77,8 @@ void run_plan_shot(const PlanShotFlags& f, std::ostream& out, std::ostream& err)
   q.simulations = static_cast<int>(f.simulations);
   if (f.noise == "none") q.noise = CueStrikeNoise{};
   else if (f.noise == "tournament") q.noise = tournament_noise();
-  else throw UsageError("--noise = " + quote_input(f.noise) + " is not known; allowed: tournament, none");
+  else if (f.noise == "scenario") q.noise = s.noise;
+  else throw UsageError("--noise = " + quote_input(f.noise) + " is not known; allowed: tournament, none, scenario");
   if (f.pocket != "any") {
     std::string names;
     for (std::size_t k = 0; k < s.table.pockets.size(); ++k) {
@@ -163,7 +164,8 @@ Command add_plan_shot_command(CLI::App& app) {
   sub->add_option("--pocket", flags->pocket, "Pocket name (e.g. top-right), or any")->capture_default_str();
   sub->add_option("--kinds", flags->kinds, "Kinds of shot to consider: direct, bank (comma-separated)")
       ->capture_default_str();
-  sub->add_option("--noise", flags->noise, "Execution noise: tournament or none")->capture_default_str();
+  sub->add_option("--noise", flags->noise, "Execution noise: tournament, none, or scenario (the scenario's \"noise\")")
+      ->capture_default_str();
   sub->add_option("--seed", flags->seed, "Random seed of the noisy estimates")->capture_default_str();
   sub->add_option("--simulations", flags->simulations, "Engine runs the plan may use, [500, 1e6]")
       ->capture_default_str();

@@ -70,6 +70,10 @@ TEST(CliPlanShot, JsonHasTheDocumentedKeys) {
     for (const char* key : {"cue", "kind", "pocket", "success_probability", "aim_window_deg", "speed_window", "robot"})
       EXPECT_TRUE(a.contains(key)) << key;
   }
+  // The scenario's own noise (here none: every noisy shot is the nominal one).
+  const CliRun own = run_cli({"plan-shot", scenario, "--ball", "1", "--noise", "scenario", "--json"});
+  ASSERT_EQ(own.status, 0) << own.err;
+  EXPECT_EQ(nlohmann::json::parse(own.out)["success_probability"].get<double>(), 1.0);
   // The text form says the same in a few lines.
   const CliRun text = run_cli({"plan-shot", scenario, "--ball", "1", "--seed", "3"});
   ASSERT_EQ(text.status, 0) << text.err;

@@ -35,28 +35,30 @@
 //      the one at that aim.
 //   4. The success probability is estimated from noisy copies of the strike
 //      (simulate_many with the request's CueStrikeNoise, batch.hpp): every
-//      feasible candidate is screened with a few shots, the best one by the
-//      screen is then measured with fresh shots (a separate noise stream, so
-//      its estimate carries no selection bias), standard error
-//      sqrt(p (1 - p) / N).
+//      feasible candidate (at most 12) is screened with up to 64 shots on common
+//      noise draws, and the best one by the screen is then measured with the
+//      rest of the budget on fresh draws (the noise stream simulate_batch
+//      draws for the request's seed, so its estimate carries no selection
+//      bias), standard error sqrt(p (1 - p) / N).
 // A shot succeeds only when the target drops in the intended pocket, the
 // cue ball's first contact is the target and the cue ball is not pocketed
 // (a scratch); a miscue or an event-limit failure is a failure.
 //
-// The strike is centre ball unless the request gives the tip offsets (a
-// centre-ball shot that misses or scratches, a straight-in's cue ball
-// following the object ball in, is tried again with draw, then follow), level
-// unless the cue must be raised to clear a ball or the rail (the butt of a
-// level cue is below the rail's height, so it comes out at 2 degrees
-// wherever the cue crosses the rail). Deterministic: the same scenario, request and seed give the same
-// plan bit for bit, and the engine runs are capped by `simulations`.
+// The strike is centre ball unless the request gives the tip height; a
+// centre-ball strike that misses or scratches (a straight-in's cue ball
+// following the object ball in) is tried again with draw, then follow. It is
+// level unless the cue must be raised to clear a ball or the rail; the butt
+// of a level cue is below the rail, so most strikes come out at 2 degrees.
+// Deterministic: the same scenario, request and seed give the same plan bit
+// for bit, and the engine runs never exceed `simulations`.
 //
 // Cue obstruction (cue_obstructed()). The cue is a straight cylinder of
 // radius kCueTipRadius and length kCueLength along the strike's axis behind
 // the contact point, butt raised by the elevation. It is obstructed when it
-// passes within R + its radius of another ball's centre (3D), or where its
-// axis leaves the playing area (inside_playing_area, table.hpp) its lower
-// edge is below the rail height, taken as the highest cushion nose height h
+// passes within R + its radius of another ball's centre (3D), or where it
+// first reaches the rail (its axis outside the playing area, inside_playing_area
+// of table.hpp, or within its radius in plan of a cushion's nose; sampled
+// every 2 mm) its lower edge is below the rail height, taken as the highest cushion nose height h
 // of the table (the cushion's top rises behind the nose, so this is a lower
 // bound on the real rail). Sources: the same model as pooltool's CueAvoid
 // (a cue of tip radius ~7 mm, cushions at their height) and FastFiz's

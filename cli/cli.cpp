@@ -17,6 +17,7 @@
 
 #include "common.hpp"
 #include "cueball/errors.hpp"
+#include "cueball/shot_planner.hpp"
 
 namespace cueball::cli {
 
@@ -38,6 +39,12 @@ std::string format_value(double v) {
 }
 
 }  // namespace
+
+std::string fixed(double v, int decimals) {
+  char buf[48];
+  std::snprintf(buf, sizeof buf, "%.*f", decimals, v == 0.0 ? 0.0 : v);
+  return buf;
+}
 
 std::string flag_for_field(const std::string& field) {
   std::string flag = "--";
@@ -160,6 +167,7 @@ int run(int argc, const char* const* argv, std::ostream& out, std::ostream& err)
   add("simulate", add_simulate_command(app));
   add("batch", add_batch_command(app));
   add("many", add_many_command(app));
+  add("plan-shot", add_plan_shot_command(app));
   add("view", add_view_command(app));
 
   // Every option that takes a value: an empty value (--v0 "") is an error,
@@ -230,6 +238,10 @@ int run(int argc, const char* const* argv, std::ostream& out, std::ostream& err)
   } catch (const InfeasibleShot& e) {
     err << "cueball: error: " << one_line(e.what()) << '\n';
     return 2;
+  } catch (const NoFeasibleShot& e) {
+    // A well-formed request with no answer (plan-shot): status 3.
+    err << "cueball: " << one_line(e.what()) << '\n';
+    return 3;
   } catch (const std::exception& e) {
     err << "cueball: internal error: " << one_line(e.what()) << '\n';
     return 1;

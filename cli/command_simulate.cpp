@@ -25,11 +25,6 @@ Scenario load_scenario(const std::string& path) {
                       : scenario_from_json(read_text_file(path, "the scenario file", kMaxScenarioBytes));
 }
 
-std::string fixed(double v, int decimals = 3) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.*f", decimals, v == 0.0 ? 0.0 : v);
-  return buf;
-}
 
 // ------------------------------------------------------------------ simulate
 

@@ -53,6 +53,9 @@ std::string read_text_file(const std::string& path, const std::string& what, std
 /// Writes (replaces) the file; throws UsageError "FLAG PATH: cannot write WHAT".
 void write_text_file(const std::string& path, std::string_view text, const std::string& flag, const std::string& what);
 
+/// v with `decimals` digits after the point ("%.*f"), -0 shown as 0.
+std::string fixed(double v, int decimals = 3);
+
 /// The CLI flag that sets a library field ("mu_s" -> "--mu-s").
 std::string flag_for_field(const std::string& field);
 
@@ -71,6 +74,7 @@ Command add_fit_cushion_command(CLI::App& app);
 Command add_simulate_command(CLI::App& app);
 Command add_batch_command(CLI::App& app);
 Command add_many_command(CLI::App& app);
+Command add_plan_shot_command(CLI::App& app);
 Command add_view_command(CLI::App& app);
 
 /// Prints the report, then its warnings on stderr.

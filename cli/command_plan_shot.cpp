@@ -1,0 +1,177 @@
+// cueball plan-shot: which strike pots this ball, and how sure is it
+// (shot_planner.hpp).
+#include <cmath>
+#include <cstdio>
+#include <memory>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "common.hpp"
+#include "cueball/errors.hpp"
+#include "cueball/scenario.hpp"
+#include "cueball/shot_planner.hpp"
+
+namespace cueball::cli {
+
+namespace {
+
+struct PlanShotFlags {
+  std::string scenario;
+  int ball = -1;
+  std::string pocket = "any";
+  std::string kinds = "direct,bank";
+  std::string noise = "tournament";
+  long long seed = 0;
+  double simulations = 4000;  // a number, so that 1e9 gets the range error
+  std::string scenario_out;
+  bool json = false;
+};
+
+
+nlohmann::ordered_json shot_json(const Scenario& s, int cue_ball, const PlannedShot& shot, const CueStrikeNoise& noise) {
+  const nlohmann::ordered_json scenario = nlohmann::ordered_json::parse(scenario_to_json(scenario_with_shot(s, cue_ball, shot, noise)));
+  nlohmann::ordered_json j;
+  j["cue"] = scenario["cue"];
+  j["kind"] = to_string(shot.kind);
+  j["pocket"] = shot.pocket_name;
+  if (shot.kind == ShotKind::bank) j["cushion"] = shot.cushion;
+  j["success_probability"] = shot.success_probability;
+  j["success_standard_error"] = shot.success_standard_error;
+  j["noisy_shots"] = shot.noisy_shots;
+  j["aim_window_deg"] = {shot.aim_window_deg[0], shot.aim_window_deg[1]};
+  j["speed_window"] = {shot.speed_window[0], shot.speed_window[1]};
+  j["robot"] = {{"tip_height", shot.robot.tip_height}, {"cue_speed", shot.robot.cue_speed}};
+  j["ball_speed"] = shot.ball_speed;
+  j["geometric_aim_deg"] = shot.geometric_aim_deg;
+  j["cut_deg"] = shot.cut_deg;
+  nlohmann::ordered_json predicted = nlohmann::ordered_json::array();
+  for (const PredictedBall& b : shot.predicted) {
+    nlohmann::ordered_json p{{"id", b.id}, {"position", {b.position.x, b.position.y}}, {"pocketed", b.pocketed}};
+    p["pocket"] = b.pocketed ? nlohmann::ordered_json(s.table.pockets[static_cast<std::size_t>(b.pocket)].name)
+                             : nlohmann::ordered_json(nullptr);
+    predicted.push_back(p);
+  }
+  j["predicted"] = predicted;
+  j["simulations"] = shot.simulations;
+  return j;
+}
+
+std::string describe(const PlannedShot& shot) {
+  return std::string(to_string(shot.kind)) + (shot.kind == ShotKind::bank ? " off the " + shot.cushion : std::string()) +
+         " into " + shot.pocket_name;
+}
+
+void run_plan_shot(const PlanShotFlags& f, std::ostream& out, std::ostream& err) {
+  check_flag("--seed", static_cast<double>(f.seed), 0, 9.0e15, "random seed");
+  check_flag("--simulations", f.simulations, kMinPlanSimulations, kMaxPlanSimulations,
+             "engine runs the plan may use");
+  if (f.simulations != std::floor(f.simulations))
+    throw UsageError("--simulations = " + format_number(f.simulations) + " is not a whole number");
+  const Scenario s = f.scenario.empty()
+                         ? default_scenario()
+                         : scenario_from_document(read_text_file(f.scenario, "the scenario file", kMaxScenarioBytes));
+  PlanRequest q;
+  q.target = f.ball;
+  q.seed = static_cast<std::uint64_t>(f.seed);
+  q.simulations = static_cast<int>(f.simulations);
+  if (f.noise == "none") q.noise = CueStrikeNoise{};
+  else if (f.noise == "tournament") q.noise = tournament_noise();
+  else if (f.noise == "scenario") q.noise = s.noise;
+  else throw UsageError("--noise = " + quote_input(f.noise) + " is not known; allowed: tournament, none, scenario");
+  if (f.pocket != "any") {
+    std::string names;
+    for (std::size_t k = 0; k < s.table.pockets.size(); ++k) {
+      names += (names.empty() ? "" : ", ") + s.table.pockets[k].name;
+      if (s.table.pockets[k].name == f.pocket) q.pocket = static_cast<int>(k);
+    }
+    if (!q.pocket)
+      throw UsageError("--pocket = " + quote_input(f.pocket) + " is not a pocket of " + s.table.name +
+                       "; allowed: any" + (names.empty() ? "" : ", " + names));
+  }
+  q.kinds.clear();
+  std::stringstream kinds(f.kinds);
+  for (std::string kind; std::getline(kinds, kind, ',');) {
+    if (kind == "direct") q.kinds.push_back(ShotKind::direct);
+    else if (kind == "bank") q.kinds.push_back(ShotKind::bank);
+    else throw UsageError("--kinds = " + quote_input(f.kinds) + ": " + quote_input(kind) +
+                          " is not a kind; allowed: a comma-separated list of direct, bank");
+  }
+  if (q.kinds.empty()) throw UsageError("--kinds = " + quote_input(f.kinds) + " names no kind; allowed: direct, bank");
+
+  ShotPlanResult plan;
+  try {
+    plan = plan_shot(s, q);
+  } catch (const InvalidArgument& e) {
+    // The library's "target = 4 ..." is the flag's "--ball = 4 ...".
+    const std::string message = e.what();
+    if (e.field() == "target" && message.rfind("target", 0) == 0) throw UsageError("--ball" + message.substr(6));
+    throw;
+  }
+  if (!f.scenario_out.empty())
+    write_text_file(f.scenario_out, scenario_to_json(scenario_with_shot(s, plan.cue_ball, plan.shot, q.noise)) + '\n',
+                    "--scenario-out", "the scenario file");
+  if (f.json) {
+    nlohmann::ordered_json j = shot_json(s, plan.cue_ball, plan.shot, q.noise);
+    j["simulations"] = plan.simulations;
+    j["seconds"] = plan.seconds;
+    nlohmann::ordered_json alternatives = nlohmann::ordered_json::array();
+    for (const PlannedShot& a : plan.alternatives) alternatives.push_back(shot_json(s, plan.cue_ball, a, q.noise));
+    j["alternatives"] = alternatives;
+    j["rejected"] = plan.rejected;
+    out << j.dump(2) << '\n';
+    return;
+  }
+  const PlannedShot& b = plan.shot;
+  const ShotAction& a = b.strike;
+  out << "plan-shot: ball " << f.ball << ", " << describe(b) << ": P(success) = " << fixed(b.success_probability, 3)
+      << " +- " << fixed(b.success_standard_error, 3) << " (" << b.noisy_shots << " noisy shots, " << f.noise
+      << " noise, seed " << f.seed << ")\n";
+  out << "  strike     speed " << fixed(a.speed, 3) << " m/s, aim " << fixed(a.aim_deg, 3) << " deg, elevation "
+      << fixed(a.elevation_deg, 1) << " deg, side " << fixed(a.side, 2) << ", height " << fixed(a.height, 2)
+      << " (cue ball " << fixed(b.ball_speed, 3) << " m/s)\n";
+  out << "  geometry   aim " << fixed(b.geometric_aim_deg, 3) << " deg (cut " << fixed(b.cut_deg, 1)
+      << " deg); the exact simulation moves it by " << fixed(a.aim_deg - b.geometric_aim_deg, 3) << " deg\n";
+  out << "  windows    aim [" << fixed(b.aim_window_deg[0], 3) << ", " << fixed(b.aim_window_deg[1], 3)
+      << "] deg, speed [" << fixed(b.speed_window[0], 2) << ", " << fixed(b.speed_window[1], 2) << "] m/s\n";
+  out << "  robot      level cue: tip height " << fixed(b.robot.tip_height * 1000.0, 1) << " mm, cue speed "
+      << fixed(b.robot.cue_speed, 3) << " m/s\n";
+  out << "  cost       " << plan.simulations << " simulations, " << fixed(plan.seconds, 3) << " s\n";
+  for (const PlannedShot& alt : plan.alternatives)
+    out << "  also       " << describe(alt) << ": P = " << fixed(alt.success_probability, 3) << " +- "
+        << fixed(alt.success_standard_error, 3) << " (" << alt.noisy_shots << " shots), aim "
+        << fixed(alt.strike.aim_deg, 3) << " deg, speed " << fixed(alt.strike.speed, 3) << " m/s\n";
+  if (!f.scenario_out.empty()) out << "  scenario written to " << f.scenario_out << " (cueball simulate replays it)\n";
+  (void)err;
+}
+
+}  // namespace
+
+Command add_plan_shot_command(CLI::App& app) {
+  auto flags = std::make_shared<PlanShotFlags>();
+  CLI::App* sub = app.add_subcommand(
+      "plan-shot",
+      "Plans the strike that pots ball --ball: ghost-ball (direct) and mirror-point (one-cushion bank)\n"
+      "geometry for a first aim, blocked paths and an obstructed cue skipped, the aim then corrected\n"
+      "on the exact simulation (throw, the cloth, the cushion), the aim and speed windows that still\n"
+      "pot found, and the success probability estimated from noisy simulations (--noise tournament:\n"
+      "sigma 0.125 deg aim, 0.1 deg elevation, 0.075 m/s speed, 0.5 mm tip). A pot needs the ball in\n"
+      "the intended pocket, the cue ball touching it first and not pocketed. The scenario's own cue\n"
+      "strike is ignored. --scenario-out writes the scenario with the planned cue (cueball simulate\n"
+      "replays it). Exit status 3 when no shot is feasible.");
+  sub->add_option("scenario", flags->scenario, "Scenario JSON file (default: the built-in 9-ball break)");
+  sub->add_option("--ball", flags->ball, "Id of the ball to pot")->required();
+  sub->add_option("--pocket", flags->pocket, "Pocket name (e.g. top-right), or any")->capture_default_str();
+  sub->add_option("--kinds", flags->kinds, "Kinds of shot to consider: direct, bank (comma-separated)")
+      ->capture_default_str();
+  sub->add_option("--noise", flags->noise, "Execution noise: tournament, none, or scenario (the scenario's \"noise\")")
+      ->capture_default_str();
+  sub->add_option("--seed", flags->seed, "Random seed of the noisy estimates")->capture_default_str();
+  sub->add_option("--simulations", flags->simulations, "Engine runs the plan may use, [500, 1e6]")
+      ->capture_default_str();
+  sub->add_option("--scenario-out", flags->scenario_out, "Write the scenario with the planned cue to this file");
+  sub->add_flag("--json", flags->json, "Print one JSON object");
+  return [flags](std::ostream& out, std::ostream& err) { run_plan_shot(*flags, out, err); };
+}
+
+}  // namespace cueball::cli

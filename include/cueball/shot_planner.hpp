@@ -1,0 +1,200 @@
+// The robot's 2D question on a real table: which strike pots this ball in
+// that pocket, and how sure is it? (issue 13, first slice: direct shots and
+// one-cushion banks of the object ball.)
+//
+// Method, per candidate (a pocket and a kind):
+//   1. Geometry gives the first aim. Direct: the ghost ball G = O - 2R u, u
+//      the unit vector from the object ball O to the pocket's capture centre
+//      P; the cue ball is aimed at G (ghost-ball aiming: D. G. Alciatore,
+//      "The Illustrated Principles of Pool and Billiards", 2004).
+//      Bank off one cushion: P is mirrored in the line the object ball's
+//      centre follows along that cushion (the nose line moved in by the
+//      contact distance sqrt(h (2R - h)), table.hpp), and the object ball
+//      is sent at the mirror point P' (the mirror system of bank shots,
+//      ibid.); the real rebound (Mathavan 2010) is not a mirror, which step
+//      3 fixes.
+//   2. Candidates whose straight paths are blocked are skipped: another
+//      ball's centre within 2R of the cue ball's path C -> G or of the object
+//      ball's path O -> P (O -> X -> P for a bank, X on the cushion), the
+//      swept-circle test. So is a candidate whose cut exceeds kMaxCutDeg,
+//      whose bank point is not on the cushion, or whose cue is obstructed
+//      at every elevation up to kMaxPlanElevationDeg (cue_obstructed()).
+//   3. The aim is corrected on the exact simulation (noise-free): the
+//      target's signed lateral miss of P (its closest approach to P, measured
+//      across the intended last leg) is driven to zero by the secant method,
+//      so cut- and spin-induced throw, the cloth's curve and the cushion's
+//      rebound are in the answer. The speed window (cue speeds that still
+//      pot, the rest held) is found by bisection from there, each edge to
+//      kSpeedWindowTol, and the speed chosen in it: the first guess (the
+//      object ball reaching the pocket at about 1 m/s), but at least
+//      max(0.3 m/s, a quarter of the slowest pot) + 3 sigma above the
+//      slowest pot and at most the window's middle; the aim is solved again
+//      at that speed. The aim window is then found the same way (edges to
+//      kAimWindowTolDeg) and the aim played is its middle, the aim that
+//      takes the most aim noise either way; the speed window reported is
+//      the one at that aim.
+//   4. The success probability is estimated from noisy copies of the strike
+//      (simulate_many with the request's CueStrikeNoise, batch.hpp): every
+//      feasible candidate (at most 12) is screened with up to 64 shots on common
+//      noise draws, and the best one by the screen is then measured with the
+//      rest of the budget on fresh draws (the noise stream simulate_batch
+//      draws for the request's seed, so its estimate carries no selection
+//      bias), standard error sqrt(p (1 - p) / N).
+// A shot succeeds only when the target drops in the intended pocket, the
+// cue ball's first contact is the target and the cue ball is not pocketed
+// (a scratch); a miscue or an event-limit failure is a failure.
+//
+// The strike is centre ball unless the request gives the tip height; a
+// centre-ball strike that misses or scratches (a straight-in's cue ball
+// following the object ball in) is tried again with draw, then follow. It is
+// level unless the cue must be raised to clear a ball or the rail; the butt
+// of a level cue is below the rail, so most strikes come out at 2 degrees.
+// Deterministic: the same scenario, request and seed give the same plan bit
+// for bit, and the engine runs never exceed `simulations`.
+//
+// Cue obstruction (cue_obstructed()). The cue is a straight cylinder of
+// radius kCueTipRadius and length kCueLength along the strike's axis behind
+// the contact point, butt raised by the elevation. It is obstructed when it
+// passes within R + its radius of another ball's centre (3D), or where it
+// first reaches the rail (its axis outside the playing area, inside_playing_area
+// of table.hpp, or within its radius in plan of a cushion's nose; sampled
+// every 2 mm) its lower edge is below the rail height, taken as the highest cushion nose height h
+// of the table (the cushion's top rises behind the nose, so this is a lower
+// bound on the real rail). Sources: the same model as pooltool's CueAvoid
+// (a cue of tip radius ~7 mm, cushions at their height) and FastFiz's
+// cue-stick collision check (isPhysicallyPossible; the engine of the
+// computational-pool tournaments, Leckie & Greenspan). Cue dimensions: a
+// 58 in (1.47 m) cue with a 13 mm tip, the usual pool cue.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "cueball/batch.hpp"
+#include "cueball/scenario.hpp"
+
+namespace cueball {
+
+/// No shot of the requested kinds can pot the ball (every pocket blocked,
+/// the cue obstructed, no aim pots on the exact simulation, ...). what() is
+/// one line saying why, for each candidate.
+class NoFeasibleShot : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+enum class ShotKind { direct, bank };
+
+/// "direct" or "bank".
+const char* to_string(ShotKind kind);
+
+/// The computational-pool tournaments' execution noise (Archibald, Altman,
+/// Greenspan & Shoham, "Computational Pool: A New Challenge for Game Theory
+/// Pragmatics", AI Magazine 31(4), 2010; issue 13): sigma 0.5 mm on both tip
+/// offsets, 0.1 deg elevation, 0.125 deg aim, 0.075 m/s speed.
+CueStrikeNoise tournament_noise();
+
+/// Cue length, m (58 in).
+inline constexpr double kCueLength = 1.4732;
+/// Cue tip radius, m (13 mm tip).
+inline constexpr double kCueTipRadius = 0.0065;
+/// Largest cut angle a candidate may need, degrees (thinner cuts are skipped).
+inline constexpr double kMaxCutDeg = 80.0;
+/// Highest elevation the planner raises the cue to, to clear an obstruction, degrees.
+inline constexpr double kMaxPlanElevationDeg = 30.0;
+/// Precision of the aim window's edges, degrees, and of the speed window's, m/s.
+inline constexpr double kAimWindowTolDeg = 0.002;
+inline constexpr double kSpeedWindowTol = 0.01;
+/// Accepted `simulations` budgets.
+inline constexpr int kMinPlanSimulations = 500;
+inline constexpr int kMaxPlanSimulations = 1'000'000;
+
+/// True when the cue, aligned for `strike` (radians, metres) on the ball
+/// with id `cue_ball`, passes through another of `balls` or below the rail
+/// (header comment). Throws InvalidArgument("cue_ball") when no ball has
+/// that id.
+bool cue_obstructed(const Table& table, const std::vector<SimulationBall>& balls, int cue_ball, const CueStrike& strike,
+                    const BallParameters& ball);
+
+/// The rail height cue_obstructed() uses: the highest nose contact height
+/// of the table's cushions and jaws, m.
+double rail_height(const Table& table);
+
+struct PlanRequest {
+  std::optional<int> cue_ball;           ///< id; default: the scenario's cue ball, else 0
+  int target = 1;                        ///< id of the ball to pot
+  std::optional<int> pocket;             ///< index into table.pockets; none: any pocket
+  std::vector<ShotKind> kinds{ShotKind::direct, ShotKind::bank};
+  CueStrikeNoise noise = tournament_noise();  ///< m/s, rad, rad, m, m
+  std::uint64_t seed = 0;
+  int simulations = 4000;                ///< engine runs at most, [kMinPlanSimulations, kMaxPlanSimulations]
+  double side = 0.0;                     ///< tip offset to the right, ball radii (as the scenario's "cue")
+  /// Tip offset above the centre, ball radii. None: centre ball, and where
+  /// that misses or scratches, draw (-0.3), then follow (+0.3).
+  std::optional<double> height;
+};
+
+/// A ball where the noise-free shot leaves it.
+struct PredictedBall {
+  int id = 0;
+  Vec2 position;      ///< final position (a pocketed ball: where it was captured), m
+  bool pocketed = false;
+  int pocket = -1;    ///< index into table.pockets
+};
+
+/// The robot's form of the strike (paper 001 relations, cue_strike.hpp): the
+/// level cue's tip height and cue speed that give the cue ball the same
+/// speed and topspin just after the strike as the planned strike does.
+struct RobotForm {
+  double tip_height = 0.0;  ///< b, m (level_cue_tip_height)
+  double cue_speed = 0.0;   ///< V, m/s (level_cue_speed)
+};
+
+struct PlannedShot {
+  ShotKind kind = ShotKind::direct;
+  int pocket = -1;                  ///< index into table.pockets
+  std::string pocket_name;
+  std::string cushion;              ///< bank: the cushion's name; direct: empty
+  ShotAction strike;                ///< in the scenario's "cue" units: cue speed m/s, aim_deg, elevation_deg, side, height
+  double geometric_aim_deg = 0.0;   ///< the first guess from geometry (ghost ball, mirror point)
+  double cut_deg = 0.0;             ///< cut angle at the object ball (geometry), degrees
+  double ball_speed = 0.0;          ///< cue ball speed just after the strike, m/s
+  RobotForm robot;
+  double success_probability = 0.0; ///< under the request's noise
+  double success_standard_error = 0.0;
+  int noisy_shots = 0;              ///< N of the estimate
+  std::array<double, 2> aim_window_deg{};  ///< aims that pot, the rest held, noise-free
+  std::array<double, 2> speed_window{};    ///< cue speeds that pot, the rest held, noise-free, m/s
+  std::vector<PredictedBall> predicted;    ///< every ball's end, noise-free, in the scenario's order
+  int simulations = 0;              ///< engine runs spent on this candidate
+};
+
+struct ShotPlanResult {
+  PlannedShot shot;                       ///< the recommended one
+  std::vector<PlannedShot> alternatives;  ///< the other feasible candidates, best first (by screened probability)
+  std::vector<std::string> rejected;      ///< each skipped candidate and why
+  int cue_ball = 0;                       ///< id of the struck ball
+  int simulations = 0;                    ///< engine runs in all (<= the request's budget)
+  double seconds = 0.0;                   ///< wall-clock time of the plan
+};
+
+/// Plans the shot (header comment). The scenario's own "cue" strike is
+/// ignored (its cue mass and tip restitution are used). Throws
+/// InvalidArgument naming the field for bad input ("cue_ball", "target",
+/// "pocket", "kinds", "simulations", "side", "height", "sigma ...", the
+/// scenario as the simulator checks it) and NoFeasibleShot when no
+/// candidate pots.
+ShotPlanResult plan_shot(const Scenario& table_state, const PlanRequest& request);
+
+/// The scenario with the planned strike as its "cue" (aim in degrees, offsets
+/// in ball radii, as given) and the request's noise as its "noise":
+/// run_scenario() of it plays the planned shot noise-free, bit for bit as
+/// the planner simulated it.
+Scenario scenario_with_shot(const Scenario& table_state, int cue_ball, const PlannedShot& shot,
+                            const CueStrikeNoise& noise);
+
+}  // namespace cueball

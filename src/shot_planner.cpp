@@ -1,0 +1,685 @@
+// The shot planner: ghost-ball and mirror geometry, corrected on the exact
+// simulation, scored under execution noise; see shot_planner.hpp.
+//
+// Sources: ghost-ball aiming and the mirror system of banks (D. G. Alciatore,
+// "The Illustrated Principles of Pool and Billiards", 2004); the secant
+// method with a bisection fallback once the root is bracketed (the safeguard
+// of Dekker's method: R. P. Brent, "Algorithms for Minimization without
+// Derivatives", 1973, ch. 4); the tournament noise of Archibald et al. 2010.
+#include "cueball/shot_planner.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <limits>
+#include <numbers>
+#include <string>
+#include <utility>
+
+#include "cueball/errors.hpp"
+
+namespace cueball {
+
+namespace {
+
+constexpr double kDegree = std::numbers::pi / 180.0;
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+
+// Shots of the noisy screen of each candidate (one batch block) and the
+// most candidates screened.
+constexpr int kScreenShots = kBatchBlockShots;
+constexpr std::size_t kMaxScreened = 12;
+// Engine runs one candidate's noise-free search may take.
+constexpr int kCandidateRuns = 120;
+// Where the screen's noise stream starts (the final estimate's starts at 0,
+// so `cueball batch` of the written scenario with the same seed draws the
+// final estimate's noise).
+constexpr std::uint64_t kScreenFirstShot = std::uint64_t{1} << 40;
+// Arrival speed of the object ball at the pocket that the first speed aims at, m/s.
+constexpr double kArrivalSpeed = 1.0;
+// The target's miss of the pocket's centre the aim is solved to, m.
+constexpr double kLateralTol = 0.5e-3;
+
+double distance_to_path(Vec2 p, Vec2 a, Vec2 b) {
+  const Vec2 ab = b - a;
+  const double len2 = dot(ab, ab);
+  const double t = len2 > 0.0 ? std::clamp(dot(p - a, ab) / len2, 0.0, 1.0) : 0.0;
+  return norm(p - (a + t * ab));
+}
+
+double distance_to_path(Vec3 p, Vec3 a, Vec3 b) {
+  const Vec3 ab = b - a;
+  const double len2 = dot(ab, ab);
+  const double t = len2 > 0.0 ? std::clamp(dot(p - a, ab) / len2, 0.0, 1.0) : 0.0;
+  return norm(p - (a + t * ab));
+}
+
+double angle_deg(Vec2 v) { return std::atan2(v.y, v.x) / kDegree; }
+
+std::size_t index_of(const std::vector<SimulationBall>& balls, int id) {
+  for (std::size_t i = 0; i < balls.size(); ++i)
+    if (balls[i].id == id) return i;
+  return balls.size();
+}
+
+// One candidate as geometry describes it.
+struct Candidate {
+  ShotKind kind = ShotKind::direct;
+  std::size_t pocket = 0;
+  std::size_t cushion = 0;  // bank only
+  Vec2 ghost;               // cue ball centre at contact
+  Vec2 last_leg;            // unit direction of the object ball's last leg into the pocket
+  double aim_deg = 0.0;
+  double cut_deg = 0.0;
+  double cue_path = 0.0;    // m
+  double object_path = 0.0; // m
+  double ease = 0.0;        // order of the search: larger first
+};
+
+// A noise-free engine run and what the planner reads from it.
+struct Trial {
+  bool simulated = false;
+  bool success = false;
+  bool touched = false;     // the cue ball's first contact is the target
+  bool short_of_pocket = false;
+  double lateral = kNaN;    // signed miss of the pocket centre across the last leg, m
+  SimulationResult result;
+};
+
+// Thrown by Planner::play when the noise-free search has used its share.
+struct BudgetSpent {};
+
+class Planner {
+ public:
+  Planner(const Scenario& s, std::size_t cue, std::size_t target, int most_runs)
+      : s_(s), cue_(cue), target_(target), R_(s.settings.parameters.ball.radius), most_runs_(most_runs) {}
+
+  int runs() const { return runs_; }
+
+  Trial play(const ShotAction& a, std::size_t pocket, Vec2 last_leg) {
+    if (runs_ >= most_runs_) throw BudgetSpent{};
+    ++runs_;
+    Trial t;
+    std::vector<SimulationBall> balls = s_.balls;
+    balls[cue_].state = strike_ball(to_strike(a, R_), balls[cue_].state.position, s_.settings.parameters.ball,
+                                    s_.cue_parameters);
+    try {
+      t.result = simulate_unchecked(s_.table, balls, s_.settings);
+    } catch (const SimulationError&) {
+      return t;
+    }
+    t.simulated = true;
+    ShotOutcome o;
+    outcome_from_result(t.result, s_.balls[cue_].id, o);
+    t.touched = o.first_contact == s_.balls[target_].id;
+    t.success = t.touched && o.pocket[target_] == static_cast<int>(pocket) && !o.pocketed[cue_];
+    if (!t.touched) return t;
+    // The target's closest approach to the pocket's centre, over its exact
+    // trajectory: each segment sampled, the best sample refined by golden
+    // section (the distance is smooth within a segment).
+    const Vec2 p = s_.table.pockets[pocket].centre;
+    const BallTrajectory& b = t.result.balls[target_];
+    const Parameters& par = s_.settings.parameters;
+    double best = std::numeric_limits<double>::infinity();
+    Vec2 q{};
+    for (std::size_t k = 0; k < b.segments.size(); ++k) {
+      const double t0 = b.segments[k].start_time;
+      const double t1 = k + 1 < b.segments.size() ? b.segments[k + 1].start_time
+                        : b.pocketed              ? b.pocket_time
+                                                  : t.result.end_time;
+      const double span = std::max(0.0, t1 - t0);
+      const auto at = [&](double dt) { return evolve(b.segments[k].state, dt, par).position; };
+      constexpr int kSamples = 24;
+      int best_i = -1;
+      double seg_best = std::numeric_limits<double>::infinity();
+      for (int i = 0; i <= kSamples; ++i) {
+        const double d = norm(at(span * i / kSamples) - p);
+        if (d < seg_best) seg_best = d, best_i = i;
+      }
+      double lo = span * std::max(0, best_i - 1) / kSamples, hi = span * std::min(kSamples, best_i + 1) / kSamples;
+      const double g = (std::sqrt(5.0) - 1.0) / 2.0;
+      for (int it = 0; it < 30 && hi - lo > 1e-7; ++it) {
+        const double m1 = hi - g * (hi - lo), m2 = lo + g * (hi - lo);
+        if (norm(at(m1) - p) < norm(at(m2) - p)) hi = m2;
+        else lo = m1;
+      }
+      Vec2 x = at(0.5 * (lo + hi));
+      if (norm(x - p) > seg_best) x = at(span * best_i / kSamples);
+      if (norm(x - p) < best) best = norm(x - p), q = x;
+    }
+    t.lateral = cross(last_leg, q - p);
+    const Vec2 end = b.final_state.position;
+    t.short_of_pocket = !b.pocketed && norm(end - q) < 1e-3 && dot(last_leg, q - p) < -s_.table.pockets[pocket].radius;
+    return t;
+  }
+
+  // The aim that sends the target through the pocket's centre at this
+  // speed (|lateral miss| < kLateralTol), from a.aim_deg: the secant method,
+  // bisection once the root is bracketed and the secant step leaves the
+  // bracket. It must pot; when `limit` runs do not converge, the potting aim
+  // with the smallest miss; nullopt when none potted.
+  std::optional<double> solve_aim(ShotAction a, const Candidate& c, bool& short_of_pocket, int limit) {
+    short_of_pocket = false;
+    std::optional<double> best;
+    double best_miss = std::numeric_limits<double>::infinity();
+    const auto run = [&](double x, double& f) {
+      a.aim_deg = x;
+      const Trial t = play(a, c.pocket, c.last_leg);
+      short_of_pocket = t.short_of_pocket;
+      f = t.lateral;
+      if (t.success && std::abs(f) < best_miss) best = x, best_miss = std::abs(f);
+      return t.success && std::abs(f) < kLateralTol;
+    };
+    double x0 = a.aim_deg, f0 = kNaN;
+    if (run(x0, f0)) return x0;
+    if (short_of_pocket || !std::isfinite(f0)) return best;
+    double x1 = x0 + 0.05, f1 = kNaN;
+    bool bracketed = false;
+    double lo = 0.0, flo = 0.0, hi = 0.0;  // f(lo) and f(hi) of opposite signs
+    for (int i = 0; i < limit; ++i) {
+      if (run(x1, f1)) return x1;
+      if (short_of_pocket) return best;
+      if (!std::isfinite(f1)) {  // missed the target: back towards the last good aim
+        x1 = 0.5 * (x0 + x1);
+        continue;
+      }
+      if (!bracketed && std::signbit(f0) != std::signbit(f1)) {
+        bracketed = true;
+        lo = x0, flo = f0, hi = x1;
+      } else if (bracketed) {
+        if (std::signbit(f1) == std::signbit(flo)) lo = x1, flo = f1;
+        else hi = x1;
+      }
+      double next = f1 != f0 ? x1 - f1 * (x1 - x0) / (f1 - f0) : x1 + 0.05;
+      next = std::clamp(next, x1 - 3.0, x1 + 3.0);
+      if (bracketed && !(next > std::min(lo, hi) && next < std::max(lo, hi))) next = 0.5 * (lo + hi);
+      x0 = x1, f0 = f1, x1 = next;
+    }
+    return best;
+  }
+
+  // The last value from `inside` (pots) towards `direction` that still pots:
+  // steps doubling from `step` until one misses (or `limit` is passed, which
+  // is then the edge), then bisection to `tol`. `set` writes the value into
+  // the action.
+  template <class Set>
+  double window_edge(ShotAction a, const Candidate& c, double inside, double direction, double step, double tol,
+                     double limit, Set set) {
+    double in = inside, out = kNaN;
+    for (int i = 0; i < 8; ++i) {
+      double x = in + direction * step;
+      if ((x - limit) * direction >= 0.0) x = limit;
+      set(a, x);
+      if (!play(a, c.pocket, c.last_leg).success) {
+        out = x;
+        break;
+      }
+      in = x;
+      if (x == limit) return limit;
+      step *= 2.0;
+    }
+    if (!std::isfinite(out)) return in;
+    while (std::abs(out - in) > tol) {
+      const double mid = 0.5 * (in + out);
+      set(a, mid);
+      if (play(a, c.pocket, c.last_leg).success) in = mid;
+      else out = mid;
+    }
+    return in;
+  }
+
+ private:
+  const Scenario& s_;
+  std::size_t cue_, target_;
+  double R_;
+  int most_runs_;
+  int runs_ = 0;
+};
+
+// The tip heights tried: the request's, or centre ball, then draw, then follow.
+std::vector<double> tip_heights(const PlanRequest& q) {
+  if (q.height) return {*q.height};
+  return {0.0, -0.3, 0.3};
+}
+
+// The lowest elevation, in 2 degree steps from level up to
+// kMaxPlanElevationDeg, at which the cue clears the balls and the rail.
+std::optional<double> clearing_elevation(const Scenario& s, std::size_t cue, double aim_deg, double side,
+                                         double height) {
+  for (int k = 0; 2.0 * k <= kMaxPlanElevationDeg; ++k) {
+    const ShotAction probe{1.0, aim_deg, 2.0 * k, side, height};
+    if (!cue_obstructed(s.table, s.balls, s.balls[cue].id, to_strike(probe, s.settings.parameters.ball.radius),
+                        s.settings.parameters.ball))
+      return 2.0 * k;
+  }
+  return std::nullopt;
+}
+
+// Candidates of one kind for one pocket, with the reasons others were dropped.
+void geometric_candidates(const Scenario& s, const PlanRequest& q, std::size_t cue, std::size_t target,
+                          std::size_t pocket, ShotKind kind, std::vector<Candidate>& out,
+                          std::vector<std::string>& rejected) {
+  const Table& table = s.table;
+  const double R = s.settings.parameters.ball.radius;
+  const Vec2 C = s.balls[cue].state.position;
+  const Vec2 O = s.balls[target].state.position;
+  const Vec2 P = table.pockets[pocket].centre;
+  const std::string pocket_name = table.pockets[pocket].name;
+  // The first ball (other than the cue ball and the target) whose centre is
+  // within 2R of the path a -> b, or "".
+  const auto blocker = [&](Vec2 a, Vec2 b) -> std::string {
+    for (std::size_t i = 0; i < s.balls.size(); ++i) {
+      if (i == cue || i == target) continue;
+      if (distance_to_path(s.balls[i].state.position, a, b) < 2.0 * R) return "ball " + std::to_string(s.balls[i].id);
+    }
+    return {};
+  };
+  // Legs of the object ball: O -> P, or O -> X -> P.
+  const auto consider = [&](Candidate c, const std::string& what, const std::vector<Vec2>& legs) {
+    const Vec2 first = (legs[1] - legs[0]) / norm(legs[1] - legs[0]);
+    c.ghost = O - 2.0 * R * first;
+    const Vec2 to_ghost = c.ghost - C;
+    const double cue_path = norm(to_ghost);
+    if (cue_path < 1e-9) {
+      rejected.push_back(what + ": the cue ball is on the ghost ball");
+      return;
+    }
+    const Vec2 w = to_ghost / cue_path;
+    c.cut_deg = std::acos(std::clamp(dot(w, first), -1.0, 1.0)) / kDegree;
+    if (c.cut_deg > kMaxCutDeg) {
+      rejected.push_back(what + ": cut " + format_number(std::round(c.cut_deg * 10) / 10) + " deg > " +
+                         format_number(kMaxCutDeg) + " deg");
+      return;
+    }
+    if (const std::string b = blocker(C, c.ghost); !b.empty()) {
+      rejected.push_back(what + ": the cue ball's path is blocked by " + b);
+      return;
+    }
+    for (std::size_t i = 0; i + 1 < legs.size(); ++i) {
+      const std::string b = blocker(legs[i], legs[i + 1]);
+      if (!b.empty()) {
+        rejected.push_back(what + ": the object ball's path is blocked by " + b);
+        return;
+      }
+    }
+    c.aim_deg = angle_deg(w);
+    c.cue_path = cue_path;
+    c.object_path = 0.0;
+    for (std::size_t i = 0; i + 1 < legs.size(); ++i) c.object_path += norm(legs[i + 1] - legs[i]);
+    c.last_leg = (legs.back() - legs[legs.size() - 2]) / norm(legs.back() - legs[legs.size() - 2]);
+    // The cue must reach the ball (at some tip height tried).
+    bool clear = false;
+    for (double height : tip_heights(q))
+      clear = clear || clearing_elevation(s, cue, c.aim_deg, q.side, height).has_value();
+    if (!clear) {
+      rejected.push_back(what + ": the cue is obstructed at every elevation up to " +
+                         format_number(kMaxPlanElevationDeg) + " deg");
+      return;
+    }
+    c.ease = std::cos(c.cut_deg * kDegree) / (c.cue_path + c.object_path) * (c.kind == ShotKind::bank ? 0.5 : 1.0);
+    out.push_back(c);
+  };
+
+  Candidate base;
+  base.kind = kind;
+  base.pocket = pocket;
+  if (kind == ShotKind::direct) {
+    consider(base, "direct into " + pocket_name, {O, P});
+    return;
+  }
+  for (std::size_t k = 0; k < table.cushions.size(); ++k) {
+    const CushionSegment& seg = table.cushions[k];
+    const Vec2 along = seg.end - seg.start;
+    const double len = norm(along);
+    if (len < 8.0 * R) continue;  // pocket facings and short pieces
+    const std::string what = "bank off " + cushion_name(table, k) + " into " + pocket_name;
+    const Vec2 n = inward_normal(seg);
+    const double dc = cushion_contact_distance(seg.contact_height, R);
+    const auto sd = [&](Vec2 x) { return dot(x - seg.start, n) - dc; };
+    const double sp = sd(P), so = sd(O);
+    if (sp < 4.0 * R || so <= 0.0) continue;  // the pocket is on this cushion's rail
+    const Vec2 mirror = P - 2.0 * sp * n;
+    const double t = so / (so + sp);
+    const Vec2 X = O + t * (mirror - O);
+    const double foot = dot(X - seg.start, along) / len;
+    if (foot < 3.0 * R || foot > len - 3.0 * R) {
+      rejected.push_back(what + ": the bank point is not on the cushion");
+      continue;
+    }
+    const double incidence = std::acos(std::clamp(dot((O - X) / norm(O - X), n), -1.0, 1.0)) / kDegree;
+    if (incidence > 75.0) {
+      rejected.push_back(what + ": the object ball would meet the cushion at " +
+                         format_number(std::round(incidence)) + " deg from its normal (> 75)");
+      continue;
+    }
+    Candidate c = base;
+    c.cushion = k;
+    consider(c, what, {O, X, P});
+  }
+}
+
+}  // namespace
+
+const char* to_string(ShotKind kind) { return kind == ShotKind::direct ? "direct" : "bank"; }
+
+CueStrikeNoise tournament_noise() {
+  CueStrikeNoise n;
+  n.speed = 0.075;
+  n.aim = 0.125 * kDegree;
+  n.elevation = 0.1 * kDegree;
+  n.side_offset = 0.0005;
+  n.height_offset = 0.0005;
+  return n;
+}
+
+double rail_height(const Table& table) {
+  double h = 0.0;
+  for (const CushionSegment& c : table.cushions) h = std::max(h, c.contact_height);
+  for (const JawArc& j : table.jaws) h = std::max(h, j.contact_height);
+  return h;
+}
+
+bool cue_obstructed(const Table& table, const std::vector<SimulationBall>& balls, int cue_ball, const CueStrike& strike,
+                    const BallParameters& ball) {
+  const std::size_t cue = index_of(balls, cue_ball);
+  if (cue == balls.size())
+    throw InvalidArgument("cue_ball", "cue_ball = " + std::to_string(cue_ball) + " is not the id of a ball on the table");
+  const double R = ball.radius;
+  const Vec2 c2 = balls[cue].state.position;
+  // The cue frame (C1) of cue_strike.hpp and the contact point (C2).
+  const Vec3 u{std::cos(strike.aim), std::sin(strike.aim), 0.0};
+  const Vec3 side{u.y, -u.x, 0.0};
+  const double ce = std::cos(strike.elevation), se = std::sin(strike.elevation);
+  const Vec3 d{ce * u.x, ce * u.y, -se};
+  const Vec3 up{se * u.x, se * u.y, ce};
+  const double a = strike.side_offset, b = strike.height_offset;
+  const double c = std::sqrt(std::max(0.0, R * R - a * a - b * b));
+  const Vec3 tip = Vec3{c2.x, c2.y, R} + a * side + b * up - c * d;
+  const Vec3 butt = tip - kCueLength * d;
+  for (std::size_t i = 0; i < balls.size(); ++i) {
+    if (i == cue) continue;
+    const Vec2 p = balls[i].state.position;
+    if (distance_to_path(Vec3{p.x, p.y, R}, tip, butt) < R + kCueTipRadius) return true;
+  }
+  // The rail: the first point (2 mm steps) where the cue is over it, within
+  // its radius in plan of a cushion's nose or outside the playing area; the
+  // cue only rises behind it.
+  const double rail = rail_height(table);
+  const double drop = kCueTipRadius / ce;  // the lower edge below the axis
+  constexpr double kStep = 0.002;
+  for (double s = 0.0; s <= kCueLength; s += kStep) {
+    const Vec3 x = tip - s * d;
+    const Vec2 p{x.x, x.y};
+    bool over_rail = !inside_playing_area(table, p);
+    for (std::size_t k = 0; k < table.cushions.size() && !over_rail; ++k)
+      over_rail = distance_to_segment(table.cushions[k], p) < kCueTipRadius;
+    if (over_rail) return x.z - drop < rail;
+  }
+  return false;
+}
+
+Scenario scenario_with_shot(const Scenario& table_state, int cue_ball, const PlannedShot& shot,
+                            const CueStrikeNoise& noise) {
+  Scenario s = table_state;
+  ShotStrike cue;
+  cue.ball = cue_ball;
+  cue.strike = to_strike(shot.strike, s.settings.parameters.ball.radius);
+  cue.given = CueStrikeInUnits{shot.strike.aim_deg, shot.strike.elevation_deg, shot.strike.side, shot.strike.height};
+  s.cue = cue;
+  s.noise = noise;
+  return s;
+}
+
+ShotPlanResult plan_shot(const Scenario& table_state, const PlanRequest& q) {
+  const auto start = std::chrono::steady_clock::now();
+  const Scenario& s = table_state;
+  validate_simulation_input(s.table, s.balls, s.settings);
+  std::string ids;
+  for (const SimulationBall& b : s.balls) ids += (ids.empty() ? "" : ", ") + std::to_string(b.id);
+  const int cue_id = q.cue_ball ? *q.cue_ball : s.cue ? s.cue->ball : 0;
+  const std::size_t cue = index_of(s.balls, cue_id);
+  if (cue == s.balls.size())
+    throw InvalidArgument("cue_ball", "cue_ball = " + std::to_string(cue_id) +
+                                          " is not the id of a ball on the table; allowed: " + ids);
+  const std::size_t target = index_of(s.balls, q.target);
+  if (target == s.balls.size())
+    throw InvalidArgument("target", "target = " + std::to_string(q.target) +
+                                        " is not the id of a ball on the table; allowed: " + ids);
+  if (target == cue)
+    throw InvalidArgument("target", "target = " + std::to_string(q.target) + " is the cue ball; choose another ball");
+  if (s.table.pockets.empty()) throw InvalidArgument("pocket", "the table has no pockets");
+  if (q.pocket && (*q.pocket < 0 || static_cast<std::size_t>(*q.pocket) >= s.table.pockets.size()))
+    throw InvalidArgument("pocket", static_cast<double>(*q.pocket),
+                          "[0, " + std::to_string(s.table.pockets.size() - 1) + "]", "index into the table's pockets");
+  if (q.kinds.empty()) throw InvalidArgument("kinds", "kinds is empty; give direct, bank or both");
+  if (q.simulations < kMinPlanSimulations || q.simulations > kMaxPlanSimulations)
+    throw InvalidArgument("simulations", static_cast<double>(q.simulations),
+                          "[" + std::to_string(kMinPlanSimulations) + ", " + std::to_string(kMaxPlanSimulations) + "]",
+                          "engine runs the plan may use");
+  require_in_range("side", q.side, -kMiscueOffsetFraction, kMiscueOffsetFraction, "tip offset to the right, ball radii");
+  const double given_height = q.height.value_or(0.0);
+  require_in_range("height", given_height, -kMiscueOffsetFraction, kMiscueOffsetFraction, "tip offset above the centre, ball radii");
+  // Draw and follow (+-0.3) are tried with a centre-ball side of at most 0.4.
+  const double most_height = q.height ? std::abs(given_height) : 0.3;
+  if (std::hypot(q.side, most_height) > kMiscueOffsetFraction * (1.0 + 1e-12))
+    throw InvalidArgument("side", q.side, "a tip offset sqrt(side^2 + height^2) <= 0.5 (height " + format_number(most_height) + ")",
+                          "tip offset to the right, ball radii");
+  validate(q.noise);
+
+  ShotPlanResult result;
+  result.cue_ball = cue_id;
+  const double R = s.settings.parameters.ball.radius;
+  const BallParameters& ball = s.settings.parameters.ball;
+
+  // 1-2. Geometry: candidates in order of ease.
+  std::vector<Candidate> candidates;
+  for (std::size_t k = 0; k < s.table.pockets.size(); ++k) {
+    if (q.pocket && static_cast<std::size_t>(*q.pocket) != k) continue;
+    for (ShotKind kind : {ShotKind::direct, ShotKind::bank})
+      if (std::find(q.kinds.begin(), q.kinds.end(), kind) != q.kinds.end())
+        geometric_candidates(s, q, cue, target, k, kind, candidates, result.rejected);
+  }
+  std::stable_sort(candidates.begin(), candidates.end(),
+                   [](const Candidate& a, const Candidate& b) { return a.ease > b.ease; });
+
+  // 3. The exact simulation: aim corrected, windows, speed chosen.
+  // At most half the budget on the search (a candidate started before then
+  // may go on to three quarters), the rest for the noise.
+  const int search_budget = q.simulations / 2;
+  Planner planner(s, cue, target, q.simulations * 3 / 4);
+  const Parameters& par = s.settings.parameters;
+  const double roll = par.cloth.rolling_resistance * par.cloth.gravity;
+  std::vector<PlannedShot> feasible;
+  // One candidate at one tip height: the aim solved, the windows found, the
+  // speed chosen; nullopt and `why` when it does not pot.
+  const auto search = [&](const Candidate& c, double height, std::string& why) -> std::optional<PlannedShot> {
+    // First speed: the object ball arriving at about kArrivalSpeed, rolling
+    // (5/7 of its speed kept after sliding), 95 % of the cue ball's speed
+    // along the line of centres passed on, a bank losing a quarter.
+    const double v_object = 1.4 * std::sqrt(kArrivalSpeed * kArrivalSpeed + 2.0 * roll * c.object_path) /
+                            (c.kind == ShotKind::bank ? 0.75 : 1.0);
+    const double v_cue = v_object / (0.95 * std::cos(c.cut_deg * kDegree));
+    const double v0 = 1.2 * std::sqrt(v_cue * v_cue + 2.0 * roll * c.cue_path);
+    const double cue_speed_of = level_cue_speed(v0, height * R, ball, s.cue_parameters);
+    const std::optional<double> elevation = clearing_elevation(s, cue, c.aim_deg, q.side, height);
+    if (!elevation) {
+      why = "the cue is obstructed at every elevation up to " + format_number(kMaxPlanElevationDeg) + " deg";
+      return std::nullopt;
+    }
+    ShotAction a{std::clamp(cue_speed_of / std::cos(*elevation * kDegree), 0.3, 10.0), c.aim_deg, *elevation, q.side,
+                 height};
+    std::optional<double> aim;
+    for (int tries = 0; tries < 4 && !aim; ++tries) {
+      bool short_of_pocket = false;
+      aim = planner.solve_aim(a, c, short_of_pocket, 12);
+      if (!aim && !short_of_pocket) break;
+      if (!aim) a.speed = std::min(kMaxCueSpeed, a.speed * 1.6);
+    }
+    if (!aim) {
+      why = "no aim pots it on the exact simulation";
+      return std::nullopt;
+    }
+    a.aim_deg = *aim;
+    const auto set_speed = [](ShotAction& x, double v) { x.speed = v; };
+    const auto set_aim = [](ShotAction& x, double v) { x.aim_deg = v; };
+    const double slowest = planner.window_edge(a, c, a.speed, -1.0, 0.25, kSpeedWindowTol, 0.05, set_speed);
+    const double fastest = planner.window_edge(a, c, a.speed, +1.0, 0.5, kSpeedWindowTol, kMaxCueSpeed, set_speed);
+    // Speed: a margin above the slowest pot (speed noise and the roll-off
+    // near the pocket), at most the window's middle.
+    const double margin = std::max(0.3, 0.25 * slowest) + 3.0 * q.noise.speed;
+    const double chosen = std::min(std::max(a.speed, slowest + margin), 0.5 * (slowest + fastest));
+    if (chosen != a.speed) {
+      a.speed = chosen;
+      bool short_of_pocket = false;
+      aim = planner.solve_aim(a, c, short_of_pocket, 8);
+      if (!aim) {
+        why = "no aim pots it at the chosen speed";
+        return std::nullopt;
+      }
+      a.aim_deg = *aim;
+    }
+    PlannedShot shot;
+    shot.kind = c.kind;
+    shot.pocket = static_cast<int>(c.pocket);
+    shot.pocket_name = s.table.pockets[c.pocket].name;
+    if (c.kind == ShotKind::bank) shot.cushion = cushion_name(s.table, c.cushion);
+    shot.geometric_aim_deg = c.aim_deg;
+    shot.cut_deg = c.cut_deg;
+    shot.aim_window_deg = {planner.window_edge(a, c, a.aim_deg, -1.0, 0.1, kAimWindowTolDeg, a.aim_deg - 20.0, set_aim),
+                           planner.window_edge(a, c, a.aim_deg, +1.0, 0.1, kAimWindowTolDeg, a.aim_deg + 20.0, set_aim)};
+    // The window's middle: the most aim noise it can take either way.
+    a.aim_deg = 0.5 * (shot.aim_window_deg[0] + shot.aim_window_deg[1]);
+    shot.speed_window = {planner.window_edge(a, c, a.speed, -1.0, 0.25, kSpeedWindowTol, 0.05, set_speed),
+                         planner.window_edge(a, c, a.speed, +1.0, 0.5, kSpeedWindowTol, kMaxCueSpeed, set_speed)};
+    const CueStrike strike = to_strike(a, R);
+    if (cue_obstructed(s.table, s.balls, cue_id, strike, ball)) {
+      why = "the cue is obstructed at the corrected aim";
+      return std::nullopt;
+    }
+    const Trial final_trial = planner.play(a, c.pocket, c.last_leg);
+    if (!final_trial.success) {
+      why = "the corrected strike does not pot it";
+      return std::nullopt;
+    }
+    shot.strike = a;
+    const BallState after = strike_ball(strike, s.balls[cue].state.position, ball, s.cue_parameters);
+    shot.ball_speed = norm(after.velocity);
+    const Vec2 aim_dir{std::cos(strike.aim), std::sin(strike.aim)};
+    const double topspin = dot(Vec2{after.angular_velocity.x, after.angular_velocity.y}, perp(aim_dir));
+    shot.robot.tip_height = level_cue_tip_height(shot.ball_speed, topspin, ball);
+    shot.robot.cue_speed = level_cue_speed(shot.ball_speed, shot.robot.tip_height, ball, s.cue_parameters);
+    for (const BallTrajectory& b : final_trial.result.balls)
+      shot.predicted.push_back({b.id, b.final_state.position, b.pocketed, b.pocketed ? b.pocket : -1});
+    return shot;
+  };
+  // Centre ball first; a scratch or a miss there tries draw, then follow.
+  const std::vector<double> heights = tip_heights(q);
+  for (const Candidate& c : candidates) {
+    const std::string what = std::string(to_string(c.kind)) +
+                             (c.kind == ShotKind::bank ? " off " + cushion_name(s.table, c.cushion) : std::string()) +
+                             " into " + s.table.pockets[c.pocket].name;
+    if (planner.runs() > 0 && planner.runs() + kCandidateRuns > search_budget) {
+      result.rejected.push_back(what + ": not searched (the simulation budget is spent)");
+      continue;
+    }
+    const int runs_before = planner.runs();
+    std::string why;
+    std::optional<PlannedShot> shot;
+    for (double height : heights) {
+      try {
+        shot = search(c, height, why);
+      } catch (const BudgetSpent&) {
+        why = "not finished (the simulation budget is spent)";
+        break;
+      }
+      if (shot || (planner.runs() > 0 && planner.runs() + kCandidateRuns > search_budget)) break;
+    }
+    if (!shot) {
+      result.rejected.push_back(what + ": " + why);
+      continue;
+    }
+    shot->simulations = planner.runs() - runs_before;
+    feasible.push_back(std::move(*shot));
+  }
+  result.simulations = planner.runs();
+  if (feasible.empty()) {
+    // A summary by reason first (the message is cut in the middle when long), then each.
+    std::string why, summary;
+    for (const std::string& r : result.rejected) why += (why.empty() ? "" : "; ") + r;
+    const auto count = [&](const char* reason, const char* said) {
+      std::size_t n = 0;
+      for (const std::string& r : result.rejected) n += r.find(reason) != std::string::npos ? 1u : 0u;
+      if (n > 0) summary += (summary.empty() ? "" : ", ") + std::to_string(n) + " " + said;
+    };
+    count("blocked", "blocked by a ball");
+    count("deg > ", "cut too thin");
+    count("bank point", "bank point off the cushion");
+    count("the cushion at", "bank too shallow");
+    count("obstructed", "cue obstructed");
+    count("exact simulation", "no potting aim on the exact simulation");
+    if (why.empty()) why = "no candidate of the requested kinds";
+    throw NoFeasibleShot("no feasible shot pots ball " + std::to_string(q.target) + " (" +
+                         std::to_string(result.rejected.size()) + " candidates" +
+                         (summary.empty() ? "" : ": " + summary) + "): " + why);
+  }
+
+  // 4. Noise: every feasible candidate screened (common noise draws), the
+  // best measured again on fresh draws.
+  Scenario noisy = s;
+  noisy.cue = ShotStrike{};  // simulate_many strikes cue.ball with each action
+  noisy.cue->ball = cue_id;
+  noisy.noise = q.noise;
+  const auto successes = [&](const PlannedShot& shot, int shots, std::uint64_t first_shot) {
+    const std::vector<ShotAction> actions(static_cast<std::size_t>(shots), shot.strike);
+    ManyOptions options;
+    options.seed = q.seed;
+    options.noise = true;
+    options.first_shot = first_shot;
+    const ManyResult m = simulate_many(noisy, actions, {}, options);
+    const auto n = static_cast<std::size_t>(m.balls);
+    int hits = 0;
+    for (std::size_t k = 0; k < static_cast<std::size_t>(m.shots); ++k)
+      hits += !m.miscue[k] && !m.failure[k] && m.first_contact[k] == q.target &&
+                      m.pocket[k * n + target] == shot.pocket && !m.pocketed[k * n + cue]
+                  ? 1
+                  : 0;
+    return hits;
+  };
+  const auto estimate = [](PlannedShot& shot, int hits, int shots) {
+    shot.noisy_shots = shots;
+    shot.success_probability = static_cast<double>(hits) / shots;
+    const double p = shot.success_probability;
+    shot.success_standard_error = std::sqrt(p * (1.0 - p) / shots);
+  };
+  if (feasible.size() > kMaxScreened) {
+    for (std::size_t i = kMaxScreened; i < feasible.size(); ++i)
+      result.rejected.push_back(std::string(to_string(feasible[i].kind)) + " into " + feasible[i].pocket_name +
+                                ": not screened (more than " + std::to_string(kMaxScreened) + " feasible)");
+    feasible.resize(kMaxScreened);
+  }
+  const int remaining = q.simulations - result.simulations;
+  const int screen = feasible.size() > 1 ? std::min(kScreenShots, remaining / (2 * static_cast<int>(feasible.size()))) : 0;
+  if (screen > 0) {
+    for (PlannedShot& shot : feasible) {
+      estimate(shot, successes(shot, screen, kScreenFirstShot), screen);
+      shot.simulations += screen;
+      result.simulations += screen;
+    }
+    // Best first: the screened probability, then the wider aim window.
+    std::stable_sort(feasible.begin(), feasible.end(), [](const PlannedShot& a, const PlannedShot& b) {
+      if (a.success_probability != b.success_probability) return a.success_probability > b.success_probability;
+      return a.aim_window_deg[1] - a.aim_window_deg[0] > b.aim_window_deg[1] - b.aim_window_deg[0];
+    });
+  }
+  const int final_shots = std::max(1, q.simulations - result.simulations);
+  PlannedShot& best = feasible.front();
+  estimate(best, successes(best, final_shots, 0), final_shots);
+  best.simulations += final_shots;
+  result.simulations += final_shots;
+  result.shot = std::move(best);
+  for (std::size_t i = 1; i < feasible.size(); ++i) result.alternatives.push_back(std::move(feasible[i]));
+  result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return result;
+}
+
+}  // namespace cueball

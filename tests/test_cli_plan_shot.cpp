@@ -1,0 +1,166 @@
+// Tests of `cueball plan-shot` (cli/command_plan_shot.cpp): the JSON's keys,
+// the replay of --scenario-out by `simulate`, bad input (exit 2, one line
+// naming the flag) and an infeasible layout (exit 3).
+#include <gtest/gtest.h>
+
+#include <nlohmann/json.hpp>
+
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "cli_runner.hpp"
+#include "temp_dir.hpp"
+
+namespace cueball {
+namespace {
+
+using test::CliRun;
+using test::count_lines;
+using test::expect_usage_error;
+using test::run_cli;
+using test::TempDir;
+
+// The 1 ball 0.5 m from the top-right pocket, cut about 20 degrees, and the 9
+// out of the way.
+constexpr const char* kCutShot = R"({
+  "table": "pool_9ft",
+  "balls": [
+    {"id": 0, "name": "cue", "position": [1.55, 0.70]},
+    {"id": 1, "name": "1", "position": [2.214, 0.944]},
+    {"id": 9, "name": "9", "position": [0.8, 1.0]}
+  ]
+})";
+
+// The 1 ball boxed in by six balls frozen around it.
+constexpr const char* kBoxedIn = R"({
+  "table": "pool_9ft",
+  "balls": [
+    {"id": 0, "position": [0.6, 0.6]},
+    {"id": 1, "position": [1.6, 0.6]},
+    {"id": 2, "position": [1.658, 0.6]},
+    {"id": 3, "position": [1.542, 0.6]},
+    {"id": 4, "position": [1.629, 0.6503]},
+    {"id": 5, "position": [1.571, 0.6503]},
+    {"id": 6, "position": [1.629, 0.5497]},
+    {"id": 7, "position": [1.571, 0.5497]}
+  ]
+})";
+
+TEST(CliPlanShot, JsonHasTheDocumentedKeys) {
+  const TempDir dir;
+  const std::string scenario = dir.write("cut.json", kCutShot);
+  const CliRun r = run_cli({"plan-shot", scenario, "--ball", "1", "--seed", "3", "--json"});
+  ASSERT_EQ(r.status, 0) << r.err;
+  const nlohmann::json j = nlohmann::json::parse(r.out);
+  for (const char* key : {"cue", "kind", "pocket", "success_probability", "success_standard_error", "aim_window_deg",
+                          "speed_window", "robot", "simulations", "seconds", "alternatives"})
+    EXPECT_TRUE(j.contains(key)) << key;
+  for (const char* key : {"speed", "aim_deg", "elevation_deg", "side", "height", "ball"}) EXPECT_TRUE(j["cue"].contains(key)) << key;
+  EXPECT_TRUE(j["robot"].contains("tip_height"));
+  EXPECT_TRUE(j["robot"].contains("cue_speed"));
+  EXPECT_EQ(j["aim_window_deg"].size(), 2u);
+  EXPECT_EQ(j["speed_window"].size(), 2u);
+  EXPECT_LE(j["aim_window_deg"][0].get<double>(), j["cue"]["aim_deg"].get<double>());
+  EXPECT_GE(j["aim_window_deg"][1].get<double>(), j["cue"]["aim_deg"].get<double>());
+  EXPECT_EQ(j["kind"], "direct");
+  EXPECT_EQ(j["pocket"], "top-right");
+  EXPECT_LE(j["simulations"].get<int>(), 4000);
+  for (const auto& a : j["alternatives"]) {
+    for (const char* key : {"cue", "kind", "pocket", "success_probability", "aim_window_deg", "speed_window", "robot"})
+      EXPECT_TRUE(a.contains(key)) << key;
+  }
+  // The scenario's own noise (here none: every noisy shot is the nominal one).
+  const CliRun own = run_cli({"plan-shot", scenario, "--ball", "1", "--noise", "scenario", "--json"});
+  ASSERT_EQ(own.status, 0) << own.err;
+  EXPECT_EQ(nlohmann::json::parse(own.out)["success_probability"].get<double>(), 1.0);
+  // The text form says the same in a few lines.
+  const CliRun text = run_cli({"plan-shot", scenario, "--ball", "1", "--seed", "3"});
+  ASSERT_EQ(text.status, 0) << text.err;
+  EXPECT_NE(text.out.find("direct into top-right"), std::string::npos) << text.out;
+}
+
+TEST(CliPlanShot, ScenarioOutReplaysThePlanBitForBit) {
+  const TempDir dir;
+  const std::string scenario = dir.write("cut.json", kCutShot);
+  const std::string planned = dir.path("planned.json");
+  const CliRun r = run_cli({"plan-shot", scenario, "--ball", "1", "--scenario-out", planned, "--json"});
+  ASSERT_EQ(r.status, 0) << r.err;
+  const nlohmann::json plan = nlohmann::json::parse(r.out);
+  const CliRun sim = run_cli({"simulate", planned, "--json"});
+  ASSERT_EQ(sim.status, 0) << sim.err;
+  const nlohmann::json result = nlohmann::json::parse(sim.out);
+  ASSERT_EQ(result["balls"].size(), plan["predicted"].size());
+  for (std::size_t i = 0; i < result["balls"].size(); ++i) {
+    const auto& b = result["balls"][i];
+    const auto& p = plan["predicted"][i];
+    EXPECT_EQ(b["id"], p["id"]);
+    EXPECT_EQ(b["pocketed"], p["pocketed"]);
+    EXPECT_EQ(b["pocket"], p["pocket"]);
+    EXPECT_EQ(b["position"][0].get<double>(), p["position"][0].get<double>());
+    EXPECT_EQ(b["position"][1].get<double>(), p["position"][1].get<double>());
+    if (b["id"] == 1) {
+      EXPECT_TRUE(b["pocketed"].get<bool>());
+      EXPECT_EQ(b["pocket"], plan["pocket"]);
+    }
+    if (b["id"] == 0) {
+      EXPECT_FALSE(b["pocketed"].get<bool>());
+    }
+  }
+  // The written cue is the plan's.
+  EXPECT_EQ(result["cue_strike"]["given"], plan["cue"]);
+
+  // And its noise: `batch` with the plan's seed draws the final estimate's
+  // shots, so its outcomes give the same success count.
+  const int shots = plan["noisy_shots"].get<int>();
+  const std::string outcomes = dir.path("outcomes.csv");
+  const CliRun batch = run_cli({"batch", planned, "--shots", std::to_string(shots), "--seed", "0", "--outcomes", outcomes});
+  ASSERT_EQ(batch.status, 0) << batch.err;
+  std::istringstream csv(test::read_text(outcomes));
+  std::string line;
+  std::getline(csv, line);  // header: shot,miscue,failure,..,first_contact, then 6 columns per ball (0, 1, 9)
+  int rows = 0, hits = 0;
+  const std::size_t pocket = [&] {
+    for (std::size_t k = 0; k < result["table"]["pockets"].size(); ++k)
+      if (result["table"]["pockets"][k]["name"] == plan["pocket"]) return k;
+    return std::size_t{99};
+  }();
+  while (std::getline(csv, line)) {
+    std::vector<std::string> cell;
+    std::istringstream cells(line);
+    for (std::string c; std::getline(cells, c, ',');) cell.push_back(c);
+    ASSERT_EQ(cell.size(), 7u + 18u);
+    ++rows;
+    hits += cell[1] == "0" && cell[2] == "0" && cell[6] == "1" && cell[7] == "0" && cell[13] == "1" &&
+            cell[14] == std::to_string(pocket);
+  }
+  EXPECT_EQ(rows, shots);
+  EXPECT_EQ(static_cast<double>(hits) / shots, plan["success_probability"].get<double>());
+}
+
+TEST(CliPlanShot, BadInputExits2NamingTheFlag) {
+  const TempDir dir;
+  const std::string scenario = dir.write("cut.json", kCutShot);
+  expect_usage_error({"plan-shot", scenario, "--ball", "4"}, "--ball");
+  expect_usage_error({"plan-shot", scenario, "--ball", "0"}, "--ball");
+  expect_usage_error({"plan-shot", scenario, "--ball", "1", "--pocket", "middle"}, "--pocket");
+  expect_usage_error({"plan-shot", scenario, "--ball", "1", "--kinds", "direct,kick"}, "--kinds");
+  expect_usage_error({"plan-shot", scenario, "--ball", "1", "--noise", "loud"}, "--noise");
+  expect_usage_error({"plan-shot", scenario, "--ball", "1", "--simulations", "10"}, "--simulations");
+  expect_usage_error({"plan-shot", scenario, "--ball", "1", "--seed", "-1"}, "--seed");
+  expect_usage_error({"plan-shot", scenario}, "--ball");
+}
+
+TEST(CliPlanShot, AnInfeasibleLayoutExits3WithOneLine) {
+  const TempDir dir;
+  const std::string scenario = dir.write("boxed.json", kBoxedIn);
+  const CliRun r = run_cli({"plan-shot", scenario, "--ball", "1"});
+  EXPECT_EQ(r.status, 3) << r.err;
+  EXPECT_EQ(count_lines(r.err), 1) << r.err;
+  EXPECT_NE(r.err.find("no feasible shot"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("blocked"), std::string::npos) << r.err;
+  EXPECT_TRUE(r.out.empty());
+}
+
+}  // namespace
+}  // namespace cueball

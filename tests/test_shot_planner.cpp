@@ -1,0 +1,364 @@
+// Tests of the shot planner (src/shot_planner.cpp): straight-in and cut
+// shots found as direct pots with the aim corrected for throw, a bank when
+// the direct line is blocked, blocked lines and obstructed cues never
+// returned, the success probability against an independent noisy batch,
+// determinism, input validation and infeasible layouts.
+#include "cueball/shot_planner.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <numbers>
+#include <string>
+#include <vector>
+
+#include "cueball/batch.hpp"
+#include "cueball/errors.hpp"
+#include "cueball/scenario.hpp"
+
+namespace cueball {
+namespace {
+
+constexpr double kDeg = std::numbers::pi / 180.0;
+
+struct Placed {
+  int id;
+  Vec2 p;
+};
+
+std::string exact(double v) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.17g", v);
+  return buf;
+}
+
+Scenario layout(const std::vector<Placed>& balls) {
+  std::string json = R"({"table": "pool_9ft", "balls": [)";
+  for (std::size_t i = 0; i < balls.size(); ++i) {
+    json += (i ? ", " : "") + std::string(R"({"id": )") + std::to_string(balls[i].id) + R"(, "position": [)" +
+            exact(balls[i].p.x) + ", " + exact(balls[i].p.y) + "]}";
+  }
+  return scenario_from_json(json + "]}");
+}
+
+Vec2 pocket_centre(const Scenario& s, const std::string& name) {
+  for (const Pocket& p : s.table.pockets)
+    if (p.name == name) return p.centre;
+  ADD_FAILURE() << "no pocket " << name;
+  return {};
+}
+
+Vec2 unit(Vec2 v) { return v / norm(v); }
+Vec2 rotated(Vec2 v, double deg) {
+  const double c = std::cos(deg * kDeg), s = std::sin(deg * kDeg);
+  return {c * v.x - s * v.y, s * v.x + c * v.y};
+}
+
+// The object ball 0.5 m from the top-right pocket on its axis, the cue ball
+// 0.6 m behind the ghost ball, cut by `cut_deg` (positive: the cue ball comes
+// from the right of the object ball's line, seen along it), plus `others`.
+Scenario corner_shot(double cut_deg, const std::vector<Placed>& others = {}) {
+  const Scenario table = layout({});
+  const Vec2 pocket = pocket_centre(table, "top-right");
+  const Vec2 u = unit(Vec2{1.0, 1.0});
+  const double R = table.settings.parameters.ball.radius;
+  const Vec2 object = pocket - 0.5 * u;
+  const Vec2 ghost = object - 2.0 * R * u;
+  const Vec2 cue = ghost - 0.6 * rotated(u, -cut_deg);
+  std::vector<Placed> balls{{0, cue}, {1, object}};
+  balls.insert(balls.end(), others.begin(), others.end());
+  return layout(balls);
+}
+
+// Plays the planned strike noise-free: the scenario the CLI writes.
+SimulationResult replay(const Scenario& s, const ShotPlanResult& plan, const PlanRequest& q) {
+  return run_scenario(scenario_with_shot(s, plan.cue_ball, plan.shot, q.noise));
+}
+
+const BallTrajectory& ball(const SimulationResult& r, int id) {
+  for (const BallTrajectory& b : r.balls)
+    if (b.id == id) return b;
+  throw std::runtime_error("no ball " + std::to_string(id));
+}
+
+void expect_pots(const Scenario& s, const ShotPlanResult& plan, const PlanRequest& q) {
+  const SimulationResult r = replay(s, plan, q);
+  EXPECT_TRUE(ball(r, q.target).pocketed);
+  EXPECT_EQ(ball(r, q.target).pocket, plan.shot.pocket);
+  EXPECT_FALSE(ball(r, plan.cue_ball).pocketed);
+  // The predicted ends are the replay's, bit for bit.
+  ASSERT_EQ(plan.shot.predicted.size(), r.balls.size());
+  for (std::size_t i = 0; i < r.balls.size(); ++i) {
+    EXPECT_EQ(plan.shot.predicted[i].position.x, r.balls[i].final_state.position.x);
+    EXPECT_EQ(plan.shot.predicted[i].position.y, r.balls[i].final_state.position.y);
+  }
+}
+
+TEST(ShotPlanner, StraightInShotIsDirectIntoThatPocketOnTheLineOfCentres) {
+  const Scenario s = corner_shot(0.0);
+  PlanRequest q;
+  q.target = 1;
+  const ShotPlanResult plan = plan_shot(s, q);
+  EXPECT_EQ(plan.shot.kind, ShotKind::direct);
+  EXPECT_EQ(plan.shot.pocket_name, "top-right");
+  EXPECT_NEAR(plan.shot.geometric_aim_deg, 45.0, 1e-9);
+  EXPECT_NEAR(plan.shot.strike.aim_deg, 45.0, 0.05);  // no cut, no throw
+  EXPECT_LE(plan.shot.aim_window_deg[0], plan.shot.strike.aim_deg);
+  EXPECT_GE(plan.shot.aim_window_deg[1], plan.shot.strike.aim_deg);
+  EXPECT_LE(plan.shot.speed_window[0], plan.shot.strike.speed);
+  EXPECT_GE(plan.shot.speed_window[1], plan.shot.strike.speed);
+  EXPECT_GT(plan.shot.success_probability, 0.8);
+  EXPECT_LE(plan.simulations, q.simulations);
+  expect_pots(s, plan, q);
+}
+
+TEST(ShotPlanner, CutShotAimIsCorrectedForThrowByASmallOvercut) {
+  for (double cut : {30.0, -30.0}) {
+    SCOPED_TRACE(cut);
+    const Scenario s = corner_shot(cut);
+    PlanRequest q;
+    q.target = 1;
+    q.kinds = {ShotKind::direct};
+    q.pocket = 3;  // top-right
+    const ShotPlanResult plan = plan_shot(s, q);
+    EXPECT_NEAR(plan.shot.cut_deg, std::abs(cut), 1e-6);
+    // Ghost-ball aim: 45 + cut (the cue ball's line is the object ball's
+    // turned by the cut). Throw sends the object ball off towards the cue
+    // ball's line, so the exact aim cuts it more: further from 45 degrees,
+    // by a fraction of a degree.
+    EXPECT_NEAR(plan.shot.geometric_aim_deg, 45.0 - cut, 1e-6);
+    const double correction = plan.shot.strike.aim_deg - plan.shot.geometric_aim_deg;
+    EXPECT_GT(correction * -cut, 0.0) << correction;
+    EXPECT_LT(std::abs(correction), 1.0);
+    expect_pots(s, plan, q);
+  }
+}
+
+TEST(ShotPlanner, ABlockedDirectLineIsNeverChosen) {
+  const Scenario open = corner_shot(0.0);
+  const Vec2 object = open.balls[1].state.position;
+  // A ball on the object ball's line to the pocket.
+  const Scenario s = corner_shot(0.0, {{2, object + 0.25 * unit(Vec2{1.0, 1.0})}});
+  PlanRequest q;
+  q.target = 1;
+  const ShotPlanResult plan = plan_shot(s, q);
+  EXPECT_FALSE(plan.shot.kind == ShotKind::direct && plan.shot.pocket_name == "top-right");
+  for (const PlannedShot& a : plan.alternatives)
+    EXPECT_FALSE(a.kind == ShotKind::direct && a.pocket_name == "top-right");
+  bool said = false;
+  for (const std::string& r : plan.rejected)
+    said = said || r == "direct into top-right: the object ball's path is blocked by ball 2";
+  EXPECT_TRUE(said);
+}
+
+TEST(ShotPlanner, EveryDirectLineBlockedIsSolvedAsABankThatPots) {
+  // Balls 2, 3 and 4 around the 1 (a layout found by a random search): the
+  // direct shots into bottom-left, top-side and top-left are blocked (the
+  // cue ball's path by ball 2, the object ball's by ball 4), the other three
+  // pockets are behind the 1. Off the top rail into the bottom-side pocket
+  // it is open.
+  const Scenario s = layout({{0, {1.985, 0.281}}, {1, {1.683, 0.623}}, {2, {1.805, 0.603}}, {3, {1.586, 0.527}},
+                             {4, {1.608, 0.677}}});
+  PlanRequest q;
+  q.target = 1;
+  q.kinds = {ShotKind::direct};
+  try {
+    plan_shot(s, q);
+    ADD_FAILURE() << "expected every direct shot to be infeasible";
+  } catch (const NoFeasibleShot& e) {
+    const std::string why = e.what();
+    EXPECT_NE(why.find("3 blocked by a ball, 3 cut too thin"), std::string::npos) << why;
+  }
+  q.kinds = {ShotKind::direct, ShotKind::bank};
+  const ShotPlanResult plan = plan_shot(s, q);
+  EXPECT_EQ(plan.shot.kind, ShotKind::bank);
+  EXPECT_EQ(plan.shot.pocket_name, "bottom-side");
+  EXPECT_EQ(plan.shot.cushion, "top rail, right of the side pocket");
+  EXPECT_GT(plan.shot.success_probability, 0.5);
+  for (const PlannedShot& a : plan.alternatives) EXPECT_EQ(a.kind, ShotKind::bank);
+  expect_pots(s, plan, q);
+  // The object ball really went off a cushion first.
+  const SimulationResult r = replay(s, plan, q);
+  bool cushion_then_pocket = false;
+  for (const Event& e : r.events) {
+    if (e.ball != 1) continue;
+    if (e.type == EventType::ball_cushion) cushion_then_pocket = true;
+    if (e.type == EventType::ball_pocket) break;
+  }
+  EXPECT_TRUE(cushion_then_pocket);
+}
+
+TEST(CueObstructed, ABallRightBehindBlocksALevelCueButNotARaisedOne) {
+  const Vec2 cue{1.2, 0.6};
+  const std::vector<Placed> placed{{0, cue}, {5, {cue.x - 0.15, cue.y}}};
+  const Scenario s = layout(placed);
+  const BallParameters& b = s.settings.parameters.ball;
+  CueStrike strike;
+  strike.speed = 2.0;
+  strike.aim = 0.0;  // along +x: the cue lies along -x, over ball 5
+  EXPECT_TRUE(cue_obstructed(s.table, s.balls, 0, strike, b));
+  strike.elevation = 25.0 * kDeg;
+  EXPECT_FALSE(cue_obstructed(s.table, s.balls, 0, strike, b));
+  // The other way the cue lies over open cloth and crosses the rail high enough.
+  strike.aim = std::numbers::pi;
+  strike.elevation = 5.0 * kDeg;
+  EXPECT_FALSE(cue_obstructed(s.table, s.balls, 0, strike, b));
+  EXPECT_THROW(cue_obstructed(s.table, s.balls, 7, strike, b), InvalidArgument);
+}
+
+TEST(CueObstructed, ABallFrozenToTheRailCannotBeStruckLevelFromTheRailSide) {
+  const Scenario table = layout({});
+  const double R = table.settings.parameters.ball.radius;
+  const double touching = cushion_contact_distance(table.table.cushions[0].contact_height, R);
+  const Scenario s = layout({{0, {0.7, touching + 1e-6}}});
+  CueStrike strike;
+  strike.speed = 2.0;
+  strike.aim = 90.0 * kDeg;  // away from the bottom rail: the cue comes from behind it
+  EXPECT_TRUE(cue_obstructed(s.table, s.balls, 0, strike, s.settings.parameters.ball));
+  strike.aim = -90.0 * kDeg;  // into the rail: the cue lies over the table
+  strike.elevation = 5.0 * kDeg;
+  EXPECT_FALSE(cue_obstructed(s.table, s.balls, 0, strike, s.settings.parameters.ball));
+}
+
+TEST(ShotPlanner, AnObstructedCueIsNeverReturned) {
+  // Ball 2 right behind the cue ball on the straight-in line: a level cue
+  // cannot be used.
+  const Scenario open = corner_shot(0.0);
+  const Vec2 cue = open.balls[0].state.position;
+  const Scenario s = corner_shot(0.0, {{2, cue - 0.1 * unit(Vec2{1.0, 1.0})}});
+  PlanRequest q;
+  q.target = 1;
+  const ShotPlanResult plan = plan_shot(s, q);
+  std::vector<PlannedShot> all{plan.shot};
+  all.insert(all.end(), plan.alternatives.begin(), plan.alternatives.end());
+  bool raised = false;
+  for (const PlannedShot& shot : all) {
+    SCOPED_TRACE(shot.pocket_name);
+    EXPECT_FALSE(cue_obstructed(s.table, s.balls, 0, to_strike(shot.strike, s.settings.parameters.ball.radius),
+                                s.settings.parameters.ball));
+    if (shot.kind == ShotKind::direct && shot.pocket_name == "top-right") {
+      raised = true;
+      EXPECT_GT(shot.strike.elevation_deg, 2.0);  // raised over ball 2
+    }
+  }
+  EXPECT_TRUE(raised) << "the straight-in, with the cue raised over ball 2, is feasible";
+  expect_pots(s, plan, q);
+}
+
+TEST(ShotPlanner, SuccessProbabilityAgreesWithAnIndependentNoisyBatch) {
+  const Scenario s = corner_shot(35.0);
+  PlanRequest q;
+  q.target = 1;
+  q.pocket = 3;
+  q.kinds = {ShotKind::direct};
+  q.seed = 1;
+  const ShotPlanResult plan = plan_shot(s, q);
+  const double p = plan.shot.success_probability;
+  ASSERT_GT(plan.shot.noisy_shots, 1000);
+  EXPECT_NEAR(plan.shot.success_standard_error, std::sqrt(p * (1 - p) / plan.shot.noisy_shots), 1e-12);
+
+  Scenario noisy = s;
+  noisy.noise = q.noise;
+  constexpr int kShots = 2000;
+  const std::vector<ShotAction> actions(kShots, plan.shot.strike);
+  ManyOptions options;
+  options.seed = 12345;
+  options.noise = true;
+  options.threads = 2;
+  const ManyResult m = simulate_many(noisy, actions, {}, options);
+  int hits = 0;
+  const auto n = static_cast<std::size_t>(m.balls);
+  for (std::size_t k = 0; k < kShots; ++k)
+    hits += !m.miscue[k] && !m.failure[k] && m.first_contact[k] == 1 && m.pocket[k * n + 1] == plan.shot.pocket &&
+            !m.pocketed[k * n + 0];
+  const double independent = static_cast<double>(hits) / kShots;
+  const double pooled = (p * plan.shot.noisy_shots + hits) / (plan.shot.noisy_shots + kShots);
+  const double se = std::sqrt(pooled * (1 - pooled) * (1.0 / plan.shot.noisy_shots + 1.0 / kShots));
+  EXPECT_GT(p, 0.2);  // a shot the noise can miss, so the comparison means something
+  EXPECT_LT(p, 0.995);
+  EXPECT_LE(std::abs(p - independent), 3.0 * se) << p << " vs " << independent;
+}
+
+TEST(ShotPlanner, IsDeterministicForASeedAndWithinItsBudget) {
+  const Scenario s = corner_shot(20.0, {{2, {1.0, 0.3}}, {3, {0.5, 1.0}}});
+  PlanRequest q;
+  q.target = 1;
+  q.seed = 9;
+  q.simulations = 1500;
+  const ShotPlanResult a = plan_shot(s, q), b = plan_shot(s, q);
+  EXPECT_EQ(a.shot.strike.aim_deg, b.shot.strike.aim_deg);
+  EXPECT_EQ(a.shot.strike.speed, b.shot.strike.speed);
+  EXPECT_EQ(a.shot.success_probability, b.shot.success_probability);
+  EXPECT_EQ(a.simulations, b.simulations);
+  EXPECT_EQ(a.alternatives.size(), b.alternatives.size());
+  EXPECT_LE(a.simulations, q.simulations);
+}
+
+TEST(ShotPlanner, TournamentNoiseIsTheTournamentsSigmas) {
+  const CueStrikeNoise n = tournament_noise();
+  EXPECT_EQ(n.speed, 0.075);
+  EXPECT_NEAR(n.aim / kDeg, 0.125, 1e-12);
+  EXPECT_NEAR(n.elevation / kDeg, 0.1, 1e-12);
+  EXPECT_EQ(n.side_offset, 0.0005);
+  EXPECT_EQ(n.height_offset, 0.0005);
+}
+
+void expect_invalid(const Scenario& s, const PlanRequest& q, const std::string& field) {
+  try {
+    plan_shot(s, q);
+    ADD_FAILURE() << "expected InvalidArgument " << field;
+  } catch (const InvalidArgument& e) {
+    EXPECT_EQ(e.field(), field) << e.what();
+  }
+}
+
+TEST(ShotPlanner, BadInputNamesTheField) {
+  const Scenario s = corner_shot(0.0);
+  PlanRequest q;
+  q.target = 7;
+  expect_invalid(s, q, "target");
+  q.target = 0;
+  expect_invalid(s, q, "target");  // the cue ball itself
+  q.target = 1;
+  q.cue_ball = 4;
+  expect_invalid(s, q, "cue_ball");
+  q.cue_ball.reset();
+  q.pocket = 6;
+  expect_invalid(s, q, "pocket");
+  q.pocket = -1;
+  expect_invalid(s, q, "pocket");
+  q.pocket.reset();
+  q.kinds.clear();
+  expect_invalid(s, q, "kinds");
+  q.kinds = {ShotKind::direct};
+  q.simulations = 10;
+  expect_invalid(s, q, "simulations");
+  q.simulations = 1000;
+  q.noise.speed = -0.1;
+  expect_invalid(s, q, "sigma speed");
+  q.noise = tournament_noise();
+  q.side = 0.6;
+  expect_invalid(s, q, "side");
+}
+
+TEST(ShotPlanner, ABallBoxedInByOthersHasNoFeasibleShot) {
+  // Six balls frozen around the 1 ball: every path out of it is blocked.
+  const Scenario table = layout({});
+  const double R = table.settings.parameters.ball.radius;
+  const Vec2 o{1.6, 0.6};
+  std::vector<Placed> balls{{0, {0.6, 0.6}}, {1, o}};
+  for (int k = 0; k < 6; ++k) balls.push_back({2 + k, o + 2.0 * R * (1.0 + 1e-6) * rotated(Vec2{1.0, 0.0}, 60.0 * k)});
+  const Scenario s = layout(balls);
+  PlanRequest q;
+  q.target = 1;
+  try {
+    plan_shot(s, q);
+    ADD_FAILURE() << "expected NoFeasibleShot";
+  } catch (const NoFeasibleShot& e) {
+    EXPECT_NE(std::string(e.what()).find("blocked"), std::string::npos) << e.what();
+  }
+}
+
+}  // namespace
+}  // namespace cueball

@@ -39,6 +39,9 @@ class InfeasibleShot(ValueError):
 class SimulationError(RuntimeError):
     """A simulation that could not finish (it reached the scenario's max_events)."""
 
+class NoFeasibleShot(ValueError):
+    """plan_shot found no strike of the requested kinds that pots the ball; the message says why."""
+
 # ------------------------------------------------------------------ parameters
 
 class BallParameters:
@@ -991,6 +994,25 @@ def simulate_many(
     """N different shots in one call: actions (N, 5) of cue speed m/s, aim deg, elevation deg,
     side and height ball radii; layouts (N, n_balls, 2) m, optional. Releases the GIL.
     first_shot: row of actions[0] in a study split into chunks (its noise, its errors' names)."""
+
+def plan_shot(
+    scenario: _Scenario,
+    target: _Int,
+    *,
+    cue_ball: _Int | None = None,
+    pocket: str | _Int = "any",
+    kinds: Sequence[str] = ("direct", "bank"),
+    noise: str = "tournament",
+    seed: _Int = 0,
+    simulations: _Int = 4000,
+    side: _Float = 0.0,
+    height: _Float | None = None,
+) -> dict[str, Any]:
+    """The strike that pots ball `target` (cueball plan-shot): the dict of `plan-shot --json`
+    (cue in degrees and ball radii, kind, pocket, success_probability and its standard error,
+    aim_window_deg, speed_window m/s, robot, predicted, alternatives, rejected) and `scenario`,
+    the Scenario with the planned cue. noise 'tournament', 'none' or 'scenario'; raises
+    NoFeasibleShot when nothing pots. Releases the GIL."""
 
 def _time_run_scenario(scenario: _Scenario = None, repetitions: _Int = 100) -> float:
     """Benchmark hook: seconds per run of the library's run_scenario(), timed in C++."""

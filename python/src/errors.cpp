@@ -4,6 +4,7 @@
 #include <exception>
 #include <string>
 #include "cueball/errors.hpp"
+#include "cueball/shot_planner.hpp"
 #include "cueball/simulator.hpp"
 
 namespace cueball_python {
@@ -17,6 +18,7 @@ namespace {
 PyObject* g_invalid_argument = nullptr;
 PyObject* g_infeasible_shot = nullptr;
 PyObject* g_simulation_error = nullptr;
+PyObject* g_no_feasible_shot = nullptr;
 
 PyObject* new_exception(py::module_& m, const char* name, const char* doc, PyObject* base) {
   const std::string qualified = std::string("cueball.") + name;
@@ -51,6 +53,11 @@ void bind_errors(py::module_& m) {
   g_simulation_error = new_exception(
       m, "SimulationError", "A simulation could not finish (e.g. it reached the scenario's max_events).",
       PyExc_RuntimeError);
+  g_no_feasible_shot = new_exception(
+      m, "NoFeasibleShot",
+      "plan_shot found no strike of the requested kinds that pots the ball; the message says why for\n"
+      "each candidate (every pocket blocked, the cue obstructed, no aim pots on the exact simulation, ...).",
+      PyExc_ValueError);
   py::register_exception_translator([](std::exception_ptr p) {
     try {
       if (p) std::rethrow_exception(p);
@@ -60,6 +67,8 @@ void bind_errors(py::module_& m) {
       raise_with(g_infeasible_shot, e.what(), "condition", e.condition());
     } catch (const cueball::SimulationError& e) {
       PyErr_SetString(g_simulation_error, e.what());
+    } catch (const cueball::NoFeasibleShot& e) {
+      PyErr_SetString(g_no_feasible_shot, e.what());
     }
   });
 }

@@ -50,6 +50,7 @@ PYBIND11_MODULE(_cueball, m) {
   bind_table(m);
   bind_rack(m);
   bind_scenario(m);
+  bind_shot_planner(m);
   bind_simulation(m);
   bind_batch(m);
 #ifdef CUEBALL_HAVE_SIMULATE_MANY

@@ -1,0 +1,156 @@
+// plan_shot: which strike pots this ball, and how sure is it
+// (include/cueball/shot_planner.hpp). The plan comes back as the dict of
+// `cueball plan-shot --json` (the same keys and units), plus the scenario
+// with the planned cue as a Scenario object.
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "bindings.hpp"
+#include "cueball/errors.hpp"
+#include "cueball/shot_planner.hpp"
+
+namespace cueball_python {
+
+namespace {
+
+using cueball::PlannedShot;
+using cueball::Scenario;
+
+cueball::CueStrikeNoise noise_model(const std::string& name, const Scenario& s) {
+  if (name == "tournament") return cueball::tournament_noise();
+  if (name == "none") return {};
+  if (name == "scenario") return s.noise;
+  throw cueball::InvalidArgument("noise", "noise = '" + name + "' is not known; allowed: 'tournament', 'none', 'scenario'");
+}
+
+std::vector<cueball::ShotKind> shot_kinds(const std::vector<std::string>& names) {
+  std::vector<cueball::ShotKind> kinds;
+  for (const std::string& k : names) {
+    if (k == "direct") kinds.push_back(cueball::ShotKind::direct);
+    else if (k == "bank") kinds.push_back(cueball::ShotKind::bank);
+    else throw cueball::InvalidArgument("kinds", "kinds: '" + k + "' is not a kind; allowed: 'direct', 'bank'");
+  }
+  if (kinds.empty()) throw cueball::InvalidArgument("kinds", "kinds names no kind; allowed: 'direct', 'bank'");
+  return kinds;
+}
+
+std::optional<int> pocket_index(const py::object& pocket, const Scenario& s) {
+  if (pocket.is_none()) return std::nullopt;
+  if (py::isinstance<py::str>(pocket)) {
+    const std::string name = pocket.cast<std::string>();
+    if (name == "any") return std::nullopt;
+    std::string names;
+    for (std::size_t k = 0; k < s.table.pockets.size(); ++k) {
+      if (s.table.pockets[k].name == name) return static_cast<int>(k);
+      names += ", '" + s.table.pockets[k].name + "'";
+    }
+    throw cueball::InvalidArgument("pocket", "pocket = '" + name + "' is not a pocket of " + s.table.name +
+                                                 "; allowed: 'any'" + names + " or an index");
+  }
+  return pocket.cast<int>();  // an index: plan_shot checks its range
+}
+
+py::dict shot_dict(const Scenario& s, int cue_ball, const PlannedShot& shot, const cueball::CueStrikeNoise& noise) {
+  const cueball::ShotAction& a = shot.strike;
+  py::dict cue;
+  cue["ball"] = cue_ball;
+  cue["speed"] = a.speed;
+  cue["aim_deg"] = a.aim_deg;
+  cue["elevation_deg"] = a.elevation_deg;
+  cue["side"] = a.side;
+  cue["height"] = a.height;
+  cue["mass"] = s.cue_parameters.mass;
+  cue["tip_restitution"] = s.cue_parameters.tip_restitution;
+  py::dict d;
+  d["cue"] = cue;
+  d["kind"] = cueball::to_string(shot.kind);
+  d["pocket"] = shot.pocket_name;
+  d["cushion"] = shot.kind == cueball::ShotKind::bank ? py::object(py::str(shot.cushion)) : py::object(py::none());
+  d["success_probability"] = shot.success_probability;
+  d["success_standard_error"] = shot.success_standard_error;
+  d["noisy_shots"] = shot.noisy_shots;
+  d["aim_window_deg"] = py::make_tuple(shot.aim_window_deg[0], shot.aim_window_deg[1]);
+  d["speed_window"] = py::make_tuple(shot.speed_window[0], shot.speed_window[1]);
+  py::dict robot;
+  robot["tip_height"] = shot.robot.tip_height;
+  robot["cue_speed"] = shot.robot.cue_speed;
+  d["robot"] = robot;
+  d["ball_speed"] = shot.ball_speed;
+  d["geometric_aim_deg"] = shot.geometric_aim_deg;
+  d["cut_deg"] = shot.cut_deg;
+  py::list predicted;
+  for (const cueball::PredictedBall& b : shot.predicted) {
+    py::dict p;
+    p["id"] = b.id;
+    p["position"] = to_tuple(b.position);
+    p["pocketed"] = b.pocketed;
+    p["pocket"] = b.pocketed ? py::object(py::str(s.table.pockets[static_cast<std::size_t>(b.pocket)].name))
+                             : py::object(py::none());
+    predicted.append(p);
+  }
+  d["predicted"] = predicted;
+  d["simulations"] = shot.simulations;
+  d["scenario"] = std::make_shared<Scenario>(cueball::scenario_with_shot(s, cue_ball, shot, noise));
+  return d;
+}
+
+}  // namespace
+
+void bind_shot_planner(py::module_& m) {
+  m.def(
+      "plan_shot",
+      [](const py::object& scenario, int target, std::optional<int> cue_ball, const py::object& pocket,
+         const std::vector<std::string>& kinds, const std::string& noise, std::uint64_t seed, long long simulations,
+         double side, std::optional<double> height) {
+        if (simulations < cueball::kMinPlanSimulations || simulations > cueball::kMaxPlanSimulations)
+          throw cueball::InvalidArgument("simulations", static_cast<double>(simulations),
+                                         "[" + std::to_string(cueball::kMinPlanSimulations) + ", " +
+                                             cueball::format_number(cueball::kMaxPlanSimulations) + "]",
+                                         "engine runs the plan may use");
+        const ScenarioInput input = scenario_input(scenario);
+        const std::shared_ptr<const Scenario> s = load_scenario(input);
+        cueball::PlanRequest q;
+        q.cue_ball = cue_ball;
+        q.target = target;
+        q.pocket = pocket_index(pocket, *s);
+        q.kinds = shot_kinds(kinds);
+        q.noise = noise_model(noise, *s);
+        q.seed = seed;
+        q.simulations = static_cast<int>(simulations);
+        q.side = side;
+        q.height = height;
+        cueball::ShotPlanResult plan;
+        {
+          py::gil_scoped_release release;
+          plan = cueball::plan_shot(*s, q);
+        }
+        py::dict out = shot_dict(*s, plan.cue_ball, plan.shot, q.noise);
+        out["simulations"] = plan.simulations;
+        out["seconds"] = plan.seconds;
+        py::list alternatives;
+        for (const PlannedShot& a : plan.alternatives) alternatives.append(shot_dict(*s, plan.cue_ball, a, q.noise));
+        out["alternatives"] = alternatives;
+        out["rejected"] = plan.rejected;
+        return out;
+      },
+      "scenario"_a, "target"_a, py::kw_only(), "cue_ball"_a = py::none(), "pocket"_a = "any",
+      "kinds"_a = std::vector<std::string>{"direct", "bank"}, "noise"_a = "tournament", "seed"_a = 0,
+      "simulations"_a = 4000, "side"_a = 0.0, "height"_a = py::none(),
+      "Plans the strike that pots ball `target` (cueball plan-shot, shot_planner.hpp): ghost-ball\n"
+      "(direct) and mirror-point (one-cushion bank) geometry for a first aim, blocked paths and an\n"
+      "obstructed cue skipped, the aim then solved on the exact simulation (throw, the cloth, the\n"
+      "cushion), the aim and speed windows that still pot, and the success probability from noisy\n"
+      "simulations. scenario: as simulate()'s (its own cue strike is ignored; None: the built-in\n"
+      "rack); pocket: 'any', a pocket's name or index; kinds: 'direct', 'bank'; noise: 'tournament'\n"
+      "(sigma 0.125 deg aim, 0.1 deg elevation, 0.075 m/s, 0.5 mm tip), 'none' or 'scenario' (the\n"
+      "scenario's own \"noise\"); simulations: the budget of engine runs, [500, 1e6]; side, height:\n"
+      "tip offsets in ball radii (height None: centre ball, then draw, then follow). Returns the dict\n"
+      "of `cueball plan-shot --json` (cue in the scenario's units, kind, pocket, cushion,\n"
+      "success_probability, success_standard_error, noisy_shots, aim_window_deg, speed_window (m/s),\n"
+      "robot {tip_height m, cue_speed m/s}, predicted, simulations, seconds, alternatives, rejected)\n"
+      "and `scenario`, the Scenario with the planned cue (simulate() replays the plan). Raises\n"
+      "NoFeasibleShot when no candidate pots. Releases the GIL while planning.");
+}
+
+}  // namespace cueball_python

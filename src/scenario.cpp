@@ -316,17 +316,22 @@ Json cue_json(const Scenario& s) {
   return j;
 }
 
+// The ball and cloth as the "parameters" object of a scenario (and of a result).
+Json parameters_json(const Parameters& p) {
+  return {{"mass", p.ball.mass},
+          {"radius", p.ball.radius},
+          {"mu_s", p.cloth.sliding_friction},
+          {"mu_r", p.cloth.rolling_resistance},
+          {"mu_sp", p.cloth.spin_friction},
+          {"g", p.cloth.gravity}};
+}
+
 Json scenario_json(const Scenario& s) {
   const Parameters& p = s.settings.parameters;
   const double radius = p.ball.radius;
   Json j;
   j["table"] = Json::parse(table_to_json(s.table));
-  j["parameters"] = {{"mass", p.ball.mass},
-                     {"radius", p.ball.radius},
-                     {"mu_s", p.cloth.sliding_friction},
-                     {"mu_r", p.cloth.rolling_resistance},
-                     {"mu_sp", p.cloth.spin_friction},
-                     {"g", p.cloth.gravity}};
+  j["parameters"] = parameters_json(p);
   j["cushion"] = {{"restitution", s.settings.cushion_restitution}, {"friction", s.settings.cushion_friction}};
   const BallCollisionParameters& b = s.settings.ball_collision;
   j["ball_collision"] = {{"restitution", b.restitution},
@@ -536,14 +541,9 @@ std::string result_to_json(const Scenario& s, const SimulationResult& r, double 
   }
   Json out;
   out["table"] = Json::parse(table_to_json(s.table));
-  out["parameters"] = {{"mass", p.ball.mass},
-                       {"radius", p.ball.radius},
-                       {"mu_s", p.cloth.sliding_friction},
-                       {"mu_r", p.cloth.rolling_resistance},
-                       {"mu_sp", p.cloth.spin_friction},
-                       {"g", p.cloth.gravity},
-                       {"cushion_restitution", s.settings.cushion_restitution},
-                       {"cushion_friction", s.settings.cushion_friction}};
+  out["parameters"] = parameters_json(p);
+  out["parameters"]["cushion_restitution"] = s.settings.cushion_restitution;
+  out["parameters"]["cushion_friction"] = s.settings.cushion_friction;
   if (s.cue) {
     const ShotStrike& c = *s.cue;
     const CueStrike k = resolved_strike(s, c.strike);

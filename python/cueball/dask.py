@@ -90,19 +90,18 @@ def simulate_many(client: Any, scenario: None | _cueball.Scenario | str | os.Pat
     seconds and shots_per_second are the client's wall clock, scheduling and transfer included.
     """
     start = time.perf_counter()
-    a = np.ascontiguousarray(actions, dtype=np.float64) if isinstance(actions, np.ndarray) else None
-    if a is None:
-        try:
-            a = np.ascontiguousarray(np.asarray(actions, dtype=np.float64))
-        except (TypeError, ValueError):
-            a = None
+    a: NDArray[np.float64] | None
+    try:
+        a = np.ascontiguousarray(actions, dtype=np.float64)
+    except (TypeError, ValueError):
+        a = None
     if a is None or a.ndim != 2 or a.shape[0] == 0 or a.shape[1] != 5:
         # Malformed or empty: the module's own check says what is wrong, with its wording.
         return _cueball.simulate_many(scenario, actions, layouts, seed=seed, noise=noise)
     shots = int(a.shape[0])
     lay: NDArray[np.float64] | None = None
     if layouts is not None:
-        lay = np.ascontiguousarray(np.asarray(layouts, dtype=np.float64))
+        lay = np.ascontiguousarray(layouts, dtype=np.float64)
         if lay.ndim != 3 or lay.shape[0] != shots:
             shape = "x".join(str(n) for n in lay.shape)
             raise _invalid("layouts", f"layouts: an ({shots}, n_balls, 2) array, one layout per row of actions; "

@@ -3,6 +3,7 @@
 // Alciatore TP A.30).
 #include "cueball/cue_strike.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <sstream>
@@ -21,6 +22,15 @@ double level_cue_speed(double v0, double tip_height, const BallParameters& ball,
   const double offset = tip_height / ball.radius;
   const double effective = 1.0 + ball.mass / cue.mass + 2.5 * offset * offset;
   return v0 * effective / (1.0 + cue.tip_restitution);
+}
+
+double squirt_angle(double side_offset, double height_offset, const BallParameters& ball, const CueParameters& cue) {
+  CueStrike level;
+  level.speed = 1.0;
+  level.side_offset = side_offset;
+  level.height_offset = height_offset;
+  const BallState after = strike_ball_unchecked(level, {}, ball, cue);
+  return std::atan2(after.velocity.y, after.velocity.x);
 }
 
 bool cue_tip_offset_ok(double tip_height, const BallParameters& ball) {
@@ -50,6 +60,7 @@ void validate(const CueStrike& s, const BallParameters& ball, const CueParameter
   require_in_range(kRadiusRange.field, ball.radius, kRadiusRange.min, kRadiusRange.max, "ball radius, m");
   require_in_range("cue_mass", cue.mass, kMinCueMass, kMaxCueMass, "cue mass, kg");
   require_in_range("cue_tip_e", cue.tip_restitution, 0.0, 1.0, "cue tip-ball restitution");
+  require_in_range("cue_end_mass", cue.end_mass, 0.0, kMaxCueEndMass, "the cue shaft's end mass of squirt, kg");
   if (!(std::isfinite(s.speed) && s.speed > 0.0 && s.speed <= kMaxCueSpeed)) {
     throw InvalidArgument("speed", s.speed, "(0, " + format_number(kMaxCueSpeed) + "] m/s", "cue speed at impact");
   }
@@ -98,6 +109,21 @@ BallState strike_ball_unchecked(const CueStrike& s, Vec2 position, const BallPar
   const double along_aim = a * sin_theta;
   out.angular_velocity = {j_over_i * (along_aim * cos_phi - b * sin_phi),
                           j_over_i * (along_aim * sin_phi + b * cos_phi), j_over_i * a * cos_theta};
+  if (a != 0.0 && cue.end_mass > 0.0) {
+    // Squirt (C8): J_s / m along s = (sin phi, -cos phi, 0), written with m_e
+    // in the numerator so that it is exactly 0 at m_e = 0; its torque
+    // (J_s / I)(b d + c e_up), d = cos(theta) u - sin(theta) z and
+    // e_up = sin(theta) u + cos(theta) z.
+    const double r2 = radius * radius;
+    const double c = std::sqrt(std::max(0.0, r2 - offset2));
+    const double js_over_m = -2.5 * j_over_m * a * c * cue.end_mass /
+                             (r2 * (cue.end_mass * (1.0 + 2.5 * (1.0 - a * a / r2)) + m));
+    const double js_over_i = js_over_m * 2.5 / r2;
+    out.velocity = out.velocity + js_over_m * Vec2{sin_phi, -cos_phi};
+    const double along = b * cos_theta + c * sin_theta;  // (b d + c e_up) . u
+    const double up = c * cos_theta - b * sin_theta;     // (b d + c e_up) . z
+    out.angular_velocity = out.angular_velocity + js_over_i * Vec3{along * cos_phi, along * sin_phi, up};
+  }
   return out;
 }
 

@@ -176,7 +176,8 @@ SimulationBall read_ball(const Reader& r) {
 }
 
 ShotStrike read_cue(const Reader& r, CueParameters& cue, double radius) {
-  r.allow_only({"ball", "speed", "aim_deg", "target", "elevation_deg", "side", "height", "mass", "tip_restitution"});
+  r.allow_only({"ball", "speed", "aim_deg", "target", "elevation_deg", "side", "height", "mass", "tip_restitution",
+                "end_mass"});
   ShotStrike s;
   s.ball = r.integer("ball", 0, 0, 1000000, "id of the struck ball");
   if (r.has("target") && r.has("aim_deg"))
@@ -193,6 +194,7 @@ ShotStrike read_cue(const Reader& r, CueParameters& cue, double radius) {
                              r.number("height", 0.0, -kMiscueOffsetFraction, kMiscueOffsetFraction, "tip offset above the centre, ball radii")};
   cue.mass = r.number("mass", cue.mass, 0.1, 2.0, "cue mass, kg");
   cue.tip_restitution = r.number("tip_restitution", cue.tip_restitution, 0.0, 1.0, "cue tip restitution");
+  cue.end_mass = r.number("end_mass", cue.end_mass, 0.0, kMaxCueEndMass, "cue shaft end mass of squirt, kg; 0: no squirt");
   return s;
 }
 
@@ -313,6 +315,7 @@ Json cue_json(const Scenario& s) {
   j["height"] = in_units(c.strike.height_offset, radius, given_part(c.given, &CueStrikeInUnits::height));
   j["mass"] = s.cue_parameters.mass;
   j["tip_restitution"] = s.cue_parameters.tip_restitution;
+  j["end_mass"] = s.cue_parameters.end_mass;
   return j;
 }
 
@@ -562,7 +565,8 @@ std::string result_to_json(const Scenario& s, const SimulationResult& r, double 
                            {"side_m", k.side_offset},
                            {"height_m", k.height_offset},
                            {"mass", s.cue_parameters.mass},
-                           {"tip_restitution", s.cue_parameters.tip_restitution}}}};
+                           {"tip_restitution", s.cue_parameters.tip_restitution},
+                           {"end_mass", s.cue_parameters.end_mass}}}};
   } else {
     out["cue_strike"] = nullptr;
   }

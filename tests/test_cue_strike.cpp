@@ -231,8 +231,9 @@ TEST(StrikeBall, LevelCueAgreesWithTheLevelCueRelations) {
 }
 
 TEST(StrikeBall, SatisfiesTheImpulseMomentumAndRestitutionEquations) {
-  for (const CueParameters cue : {CueParameters{}, CueParameters{0.45, 0.71}, CueParameters{0.65, 0.87},
-                                  CueParameters{0.2, 1.0}}) {
+  // The impulse along the cue alone: squirt off (end mass 0; SquirtSatisfies... below).
+  for (const CueParameters cue : {CueParameters{0.54, 0.75, 0.0}, CueParameters{0.45, 0.71, 0.0},
+                                  CueParameters{0.65, 0.87, 0.0}, CueParameters{0.2, 1.0, 0.0}}) {
     for (const CueStrike& k : random_strikes(kPool, 400, 7)) {
       const Solved ref = solve_strike(k, kPool, cue);
       const BallState s = strike_ball(k, {}, kPool, cue);
@@ -258,7 +259,8 @@ TEST(StrikeBall, LeckieGreenspanFormulasAgreeAfterTheChangeOfParameters) {
   // [LG]'s printed strike, with their constant 2 written (1 + e): ball frame
   // with the cue along -y and x to the shooter's left; contact (a_LG, c_LG, b_LG)
   // with b_LG the height above the centre. Rotated into the table by phi + pi/2.
-  const CueParameters cue{0.54, 0.8};
+  // [LG] has no squirt: end mass 0.
+  const CueParameters cue{0.54, 0.8, 0.0};
   const double radius = kSnooker.radius, m = kSnooker.mass, inertia = moment_of_inertia(kSnooker);
   for (const CueStrike& k : random_strikes(kSnooker, 300, 11)) {
     const double th = k.elevation;
@@ -379,10 +381,82 @@ TEST(StrikeBall, ElevatedRightEnglishSwervesToTheRight) {
     EXPECT_LT(dot(slip_velocity(s, p.ball.radius), right_side), 0.0);
     const BallState later = evolve(s, 0.5, p);
     EXPECT_GT(dot(later.position - s.position, right_side), 1e-3);
-    // A level cue does not swerve: the slip stays on the aim line.
+    // A level cue does not swerve: the slip stays on the line the ball
+    // leaves along (the aim line turned by the squirt), so friction only
+    // slows it.
     const BallState level = strike_ball({2.0, aim, 0.0, 0.4 * p.ball.radius, 0.0}, {1.0, 0.5}, p.ball, cue);
-    EXPECT_NEAR(dot(slip_velocity(level, p.ball.radius), right_side), 0.0, 1e-14);
+    EXPECT_NEAR(cross(slip_velocity(level, p.ball.radius), level.velocity), 0.0, 1e-14);
   }
+}
+
+// Squirt (C8): Alciatore's TP A.31 formula, for a level cue without height offset,
+//     tan(alpha) = (5/2) x sqrt(1 - x^2) / (1 + m_b/m_e + (5/2)(1 - x^2)).
+double alciatore_squirt_deg(double x, double mass_ratio) {
+  return std::atan(2.5 * x * std::sqrt(1 - x * x) / (1 + mass_ratio + 2.5 * (1 - x * x))) * 180.0 / kPi;
+}
+
+TEST(Squirt, MatchesAlciatoresFormula) {
+  // The value: m_b/m_e = 20, x = 0.2 gives 1.1994 degrees.
+  EXPECT_NEAR(alciatore_squirt_deg(0.2, 20.0), 1.1994, 5e-5);
+  for (double ratio : {10.0, 20.0, 35.0}) {
+    for (double x : {0.05, 0.2, 0.35, 0.5}) {
+      const CueParameters cue{0.54, 0.75, kPool.mass / ratio};
+      const double alpha = squirt_angle(x * kPool.radius, 0.0, kPool, cue) * 180.0 / kPi;
+      EXPECT_NEAR(alpha, alciatore_squirt_deg(x, ratio), 1e-12) << ratio << " " << x;
+      // Right english (x > 0) squirts left of the aim; left english right.
+      EXPECT_GT(alpha, 0.0);
+      EXPECT_NEAR(squirt_angle(-x * kPool.radius, 0.0, kPool, cue), -alpha * kPi / 180.0, 1e-15);
+    }
+  }
+  // The default end mass: 2.6 degrees at half a radius of english.
+  EXPECT_NEAR(squirt_angle(0.5 * kPool.radius, 0.0, kPool, CueParameters{}) * 180.0 / kPi, 2.57, 0.01);
+  // No end mass, no squirt; no side offset, no squirt.
+  EXPECT_EQ(squirt_angle(0.3 * kPool.radius, 0.1 * kPool.radius, kPool, CueParameters{0.54, 0.75, 0.0}), 0.0);
+  EXPECT_EQ(squirt_angle(0.0, 0.3 * kPool.radius, kPool, CueParameters{}), 0.0);
+}
+
+TEST(Squirt, SatisfiesTheMomentumEquationsAndTheNoSlipConditionAcrossTheCue) {
+  // Two impulses, J along the cue (C3) and J_s across it (C8): the returned
+  // state must satisfy m v = horizontal(J d + J_s s), I w = r x (J d + J_s s)
+  // and, across the cue, the contact point moving with the end mass:
+  // (v + w x r) . s = -J_s / m_e. J comes from the rigid strike (end mass 0).
+  for (double end_mass : {0.004, kDefaultCueEndMass, 0.03}) {
+    const CueParameters cue{0.54, 0.75, end_mass};
+    for (const CueStrike& k : random_strikes(kPool, 300, 17)) {
+      const Solved ref = solve_strike(k, kPool, CueParameters{cue.mass, cue.tip_restitution, 0.0});
+      const BallState st = strike_ball(k, {}, kPool, cue);
+      const Vec3 z{0, 0, 1};
+      const Vec3 u{std::cos(k.aim), std::sin(k.aim), 0};
+      const Vec3 s = cross(u, z);
+      const double js = kPool.mass * dot(Vec3{st.velocity.x, st.velocity.y, 0.0}, s);
+      const Vec3 impulse = ref.impulse * ref.d + js * s;
+      const double vs = 1e-12 * k.speed;
+      expect_vec_near(st.velocity, horizontal(impulse) / kPool.mass, vs, "v");
+      expect_vec_near(moment_of_inertia(kPool) * st.angular_velocity, cross(ref.r, impulse),
+                      1e-12 * ref.impulse * kPool.radius, "angular momentum");
+      const Vec3 v3{st.velocity.x, st.velocity.y, impulse.z / kPool.mass};
+      EXPECT_NEAR(dot(v3 + cross(st.angular_velocity, ref.r), s), -js / end_mass, vs);
+      // Right english (a > 0) pushes the ball to the left (-s).
+      if (k.side_offset != 0.0) {
+        EXPECT_EQ(std::signbit(js), k.side_offset > 0.0);
+      }
+    }
+  }
+}
+
+TEST(Squirt, TheSimulatedCueBallLeavesAtTheSquirtAngle) {
+  // Through the engine: the cue ball's path, struck level with right english
+  // along +x, departs to the left of the aim at alpha, and straight.
+  const Parameters p = pool_parameters();
+  const CueParameters cue;
+  const double a = 0.4 * p.ball.radius;
+  const BallState s = strike_ball({2.0, 0.0, 0.0, a, 0.0}, {0.5, 0.6}, p.ball, cue);
+  const double alpha = squirt_angle(a, 0.0, p.ball, cue);
+  EXPECT_NEAR(std::atan2(s.velocity.y, s.velocity.x), alpha, 1e-15);
+  const BallState later = evolve(s, 0.3, p);
+  const Vec2 moved = later.position - s.position;
+  EXPECT_GT(moved.y, 0.0);
+  EXPECT_NEAR(std::atan2(moved.y, moved.x), alpha, 1e-12);
 }
 
 TEST(StrikeBall, BallEnergyNeverExceedsTheCues) {

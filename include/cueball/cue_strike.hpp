@@ -12,7 +12,7 @@
 //         [LG]'s printed formulas and compares.
 //   [M]   W. C. Marlow, "The Physics of Pocket Billiards" (1995), ch. 6: the
 //         same impulse-momentum model, on which [LG] is based.
-//   [A30] D. G. Alciatore, "Technical Proofs", TP A.30 "Effects of cue tip
+//   [A30] D. G. Alciatore, "Technical Proofs" (billiards.colostate.edu), TP A.30 "Effects of cue tip
 //         offset on cue ball speed and spin": ball speed against tip offset,
 //         natural roll at b = 2R/5, and (with TP A.31) the miscue limit of
 //         about half the radius. Tip-ball friction 0.6 and restitution
@@ -74,6 +74,26 @@
 //   - With the butt raised, a > 0 also spins the ball about the aim (w . u =
 //     J a sin(theta) / I > 0): the swerve/masse component.
 //
+// Squirt ([A31] D. G. Alciatore, TP A.31 "Cue ball deflection (squirt) due
+// to cue tip offset and cue end mass"). With side offset the tip, which holds
+// on the ball, is pushed sideways by the spinning ball, and only the shaft's
+// end mass m_e moves with it during the contact; the lateral impulse J_s s
+// on the ball (s the cue's right, C1) follows from the no-slip condition
+// across the cue, (v + w x r) . s = -J_s / m_e, with v and w from both
+// impulses (C3)-(C5) and r x s = b d + c e_up:
+//     J_s = -(5/2) J a c / (R^2 (1 + m/m_e + (5/2)(1 - a^2/R^2)))       (C8)
+// so the ball leaves at the squirt angle alpha from the aim, towards the side
+// opposite the offset (right english squirts left):
+//     tan(alpha) = -J_s / (J cos(theta))
+// which for a level cue and b = 0 is [A31]'s
+//     tan(alpha) = (5/2) x sqrt(1 - x^2) / (1 + m/m_e + (5/2)(1 - x^2)),  x = a/R.
+// The lateral impulse's torque (J_s / I)(b d + c e_up) takes a little of the
+// sidespin back. m_e = 0 turns squirt off (J_s = 0 exactly). The default end
+// mass 8 g (about m/m_e = 21 with a pool ball) gives 2.6 degrees at half a
+// radius of english, the deflection of a standard (not low-deflection) shaft
+// ([A31]'s measured range is about 1 to 3 degrees at that offset). Swerve
+// still comes from the elevated cue's spin about the aim (C5).
+//
 // Approximations (document before you rely on them):
 //   1. The vertical part of the impulse, J sin(theta) downward, is absorbed by
 //      the bed: the bed's reaction acts through the bottom contact point and so
@@ -83,8 +103,9 @@
 //      somewhat. So the ball stays on the table (no jump shots), and strongly
 //      elevated (masse) shots are approximate: their horizontal speed and the
 //      spin about the aim are only indicative.
-//   2. No squirt (cue-ball deflection from the aim line with english), no cue
-//      flex; M_c is the whole cue's mass, as in [A30]'s speed relation.
+//   2. M_c is the whole cue's mass along the cue, as in [A30]'s speed
+//      relation; across it only the shaft's end mass m_e moves during the
+//      contact (squirt, below). No cue flex beyond that.
 //   3. The tip holds (no slip) whenever sqrt(a^2 + b^2) <= kMiscueOffsetFraction R
 //      and always slips beyond it. With tip friction mu = 0.6 the tip holds
 //      while tan(psi) <= mu, i.e. psi <= 31 degrees, offset <= 0.51 R: the
@@ -99,10 +120,21 @@
 
 namespace cueball {
 
+/// The shaft's end mass of a standard pool cue, kg (squirt, C8).
+inline constexpr double kDefaultCueEndMass = 0.008;
+
 struct CueParameters {
   double mass = 0.54;              ///< M_c, kg (19 oz, Alciatore's typical cue)
   double tip_restitution = 0.75;   ///< e, cue tip-ball (Alciatore: 0.71-0.87)
+  double end_mass = kDefaultCueEndMass;  ///< m_e, kg: the shaft's end mass of squirt (C8); 0: no squirt
 };
+
+/// Largest accepted end mass, kg (a shaft whose end 10 cm weighs 50 g).
+inline constexpr double kMaxCueEndMass = 0.05;
+
+/// The squirt angle alpha, radians, of a level cue with side offset a and
+/// height offset b (C8): positive (to the left of the aim) for a > 0.
+double squirt_angle(double side_offset, double height_offset, const BallParameters& ball, const CueParameters& cue);
 
 /// Largest tip offset from the ball's centre before the tip slips, as a
 /// fraction of R (Alciatore: about 0.5).
@@ -137,7 +169,7 @@ inline constexpr double kMaxCueMass = 2.0;
 
 /// Throws InvalidArgument naming the first bad field and its allowed range:
 /// "mass", "radius" (ball, kMassRange / kRadiusRange), "cue_mass" [0.1, 2] kg,
-/// "cue_tip_e" [0, 1], "speed" (0, 12] m/s, "aim" (finite), "elevation"
+/// "cue_tip_e" [0, 1], "cue_end_mass" [0, kMaxCueEndMass] kg, "speed" (0, 12] m/s, "aim" (finite), "elevation"
 /// [0, pi/2) rad, "side_offset" and "height_offset" (finite), and
 /// "tip offset" when sqrt(a^2 + b^2) > kMiscueOffsetFraction R (a miscue).
 void validate(const CueStrike& strike, const BallParameters& ball, const CueParameters& cue);

@@ -17,7 +17,7 @@
 //          the rack's ball with the same id or is added)
 //     "cue": { "ball": id (0), "speed": m/s (cue speed), "aim_deg": deg | "target": id,
 //              "elevation_deg": deg, "side": a/R, "height": b/R,
-//              "mass": kg, "tip_restitution": e },
+//              "mass": kg, "tip_restitution": e, "end_mass": kg (squirt; 0: none) },
 //     "noise": { "speed": m/s, "aim_deg": deg, "elevation_deg": deg, "side": a/R, "height": b/R },
 //     "max_events": n
 //   }
@@ -87,7 +87,7 @@ Scenario scenario_from_json(std::string_view json_text);
 /// g), "cushion", "ball_collision", "max_events", every ball as placed
 /// ("balls": id, name, position, velocity, angular_velocity; no "rack"), the
 /// "cue" (target or aim_deg, elevation_deg, side, height, speed, mass,
-/// tip_restitution) and the "noise". scenario_from_json() of it gives the
+/// tip_restitution, end_mass) and the "noise". scenario_from_json() of it gives the
 /// same simulation bit for bit: numbers are written as the shortest decimal
 /// that reads back to the same double, and angles and tip offsets as a value
 /// whose conversion to radians and metres gives the scenario's own (the value

@@ -217,7 +217,9 @@ class CueParameters:
     """M_c, kg"""
     tip_restitution: float
     """e, [0, 1]"""
-    def __init__(self, mass: _Float = 0.54, tip_restitution: _Float = 0.75) -> None: ...
+    end_mass: float
+    """m_e, kg, [0, 0.05]: the shaft's end mass of squirt; 0: no squirt"""
+    def __init__(self, mass: _Float = 0.54, tip_restitution: _Float = 0.75, end_mass: _Float = 0.008) -> None: ...
 
 class CueStrike:
     """One stroke of the cue (Leckie & Greenspan 2006)."""

@@ -20,15 +20,24 @@ void bind_cue_strike(py::module_& m) {
   using cueball::CueStrike;
   using cueball::Parameters;
 
-  py::class_<CueParameters> cue(m, "CueParameters", "The cue: mass (kg) and tip-ball restitution.");
-  cue.def(py::init([](double mass, double tip_restitution) { return CueParameters{mass, tip_restitution}; }),
-          "mass"_a = CueParameters{}.mass, "tip_restitution"_a = CueParameters{}.tip_restitution)
+  py::class_<CueParameters> cue(m, "CueParameters",
+                                 "The cue: mass (kg), tip-ball restitution and the shaft's end mass of squirt (kg).");
+  cue.def(py::init([](double mass, double tip_restitution, double end_mass) {
+            return CueParameters{mass, tip_restitution, end_mass};
+          }),
+          "mass"_a = CueParameters{}.mass, "tip_restitution"_a = CueParameters{}.tip_restitution,
+          "end_mass"_a = CueParameters{}.end_mass)
       .def_readwrite("mass", &CueParameters::mass, "M_c, kg, [0.1, 2] (field 'cue_mass' in errors)")
-      .def_readwrite("tip_restitution", &CueParameters::tip_restitution, "e, [0, 1] (field 'cue_tip_e' in errors)");
+      .def_readwrite("tip_restitution", &CueParameters::tip_restitution, "e, [0, 1] (field 'cue_tip_e' in errors)")
+      .def_readwrite("end_mass", &CueParameters::end_mass,
+                     "m_e, kg, [0, 0.05]: the shaft's end mass of squirt (Alciatore TP A.31); 0: no squirt "
+                     "(field 'cue_end_mass' in errors)");
   add_value_semantics(
-      cue, "CueParameters", {"mass", "tip_restitution"},
-      [](const CueParameters& c) { return py::make_tuple(c.mass, c.tip_restitution); },
-      [](const py::tuple& t) { return CueParameters{t[0].cast<double>(), t[1].cast<double>()}; });
+      cue, "CueParameters", {"mass", "tip_restitution", "end_mass"},
+      [](const CueParameters& c) { return py::make_tuple(c.mass, c.tip_restitution, c.end_mass); },
+      [](const py::tuple& t) {
+        return CueParameters{t[0].cast<double>(), t[1].cast<double>(), t[2].cast<double>()};
+      });
 
   py::class_<CueStrike> strike(
       m, "CueStrike",

@@ -132,6 +132,7 @@ std::string scenario_json(const py::object& table, const py::iterable& balls, co
     if (cue_parameters) {
       c["mass"] = cue_parameters->mass;
       c["tip_restitution"] = cue_parameters->tip_restitution;
+      c["end_mass"] = cue_parameters->end_mass;
     }
     d["cue"] = c;
   } else if (cue_parameters) {

@@ -62,6 +62,7 @@ py::dict shot_dict(const Scenario& s, int cue_ball, const PlannedShot& shot, con
   cue["height"] = a.height;
   cue["mass"] = s.cue_parameters.mass;
   cue["tip_restitution"] = s.cue_parameters.tip_restitution;
+  cue["end_mass"] = s.cue_parameters.end_mass;
   py::dict d;
   d["cue"] = cue;
   d["kind"] = cueball::to_string(shot.kind);

@@ -31,7 +31,7 @@ class PlanShotTest(unittest.TestCase):
         self.assertFalse(r.balls["pocketed"][list(r.balls["id"]).index(0)])  # no scratch
         # The cue in the scenario's units is the scenario's cue.
         cue = p["scenario"].to_dict()["cue"]
-        for key in ("speed", "aim_deg", "elevation_deg", "side", "height", "mass", "tip_restitution"):
+        for key in ("speed", "aim_deg", "elevation_deg", "side", "height", "mass", "tip_restitution", "end_mass"):
             self.assertEqual(cue[key], p["cue"][key], key)
         lo, hi = p["aim_window_deg"]
         self.assertLess(lo, p["cue"]["aim_deg"])

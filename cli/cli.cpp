@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstring>
 #include <map>
+#include <numbers>
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
@@ -106,6 +107,30 @@ void check_flag(const char* flag, double value, double lo, double hi, const char
   throw UsageError(std::string(flag) + " = " + format_value(value) +
                    (std::isfinite(value) ? " is outside the allowed range [" : " is not a finite number; allowed: [") +
                    format_value(lo) + ", " + format_value(hi) + "] (" + meaning + ")");
+}
+
+void add_sigma_flags(CLI::App& app, SigmaFlags& flags) {
+  app.add_option("--sigma-speed", flags.speed, "Sigma of the cue speed, m/s, [0, 5]");
+  app.add_option("--sigma-aim", flags.aim, "Sigma of the aim, degrees, [0, 30]");
+  app.add_option("--sigma-elevation", flags.elevation, "Sigma of the cue elevation, degrees, [0, 30]");
+  app.add_option("--sigma-side", flags.side, "Sigma of the side tip offset, ball radii, [0, 0.5]");
+  app.add_option("--sigma-height", flags.height, "Sigma of the height tip offset, ball radii, [0, 0.5]");
+}
+
+CueStrikeNoise with_sigma_flags(const SigmaFlags& f, CueStrikeNoise noise, double radius) {
+  const double degree = std::numbers::pi / 180.0;
+  if (f.speed) check_flag("--sigma-speed", *f.speed, 0, 5, "sigma of the cue speed, m/s"), noise.speed = *f.speed;
+  if (f.aim) check_flag("--sigma-aim", *f.aim, 0, 30, "sigma of the aim, degrees"), noise.aim = *f.aim * degree;
+  if (f.elevation)
+    check_flag("--sigma-elevation", *f.elevation, 0, 30, "sigma of the elevation, degrees"),
+        noise.elevation = *f.elevation * degree;
+  if (f.side)
+    check_flag("--sigma-side", *f.side, 0, 0.5, "sigma of the side offset, ball radii"),
+        noise.side_offset = *f.side * radius;
+  if (f.height)
+    check_flag("--sigma-height", *f.height, 0, 0.5, "sigma of the height offset, ball radii"),
+        noise.height_offset = *f.height * radius;
+  return noise;
 }
 
 void add_parameter_flags(CLI::App& app, ParameterFlags& flags) {

@@ -11,6 +11,7 @@
 #include "cueball/errors.hpp"
 #include "cueball/scenario.hpp"
 #include "cueball/shot_planner.hpp"
+#include "viewer_page.hpp"
 
 namespace cueball::cli {
 
@@ -25,8 +26,23 @@ struct PlanShotFlags {
   long long seed = 0;
   double simulations = 4000;  // a number, so that 1e9 gets the range error
   std::string scenario_out;
+  std::string html;
+  SigmaFlags sigma;
   bool json = false;
 };
+
+// The viewer page of the planned shot, noise-free, with its aim line and
+// ghost ball drawn (aim_overlay_json, viewer_page.hpp).
+void write_plan_page(const std::string& path, const Scenario& planned, int cue_ball) {
+  const SimulationResult r = run_scenario(planned);
+  const std::string overlay = aim_overlay_json(r, planned.settings.parameters, cue_ball);
+  write_text_file(path, viewer_page(viewer_template(), with_overlay(result_to_json(planned, r, 0.0, -1), overlay)),
+                  "--html", "the viewer page");
+}
+
+std::string noise_label(const PlanShotFlags& f) {
+  return f.noise + (f.sigma.any() ? " noise with the --sigma-* flags" : " noise");
+}
 
 
 nlohmann::ordered_json shot_json(const Scenario& s, int cue_ball, const PlannedShot& shot, const CueStrikeNoise& noise) {
@@ -79,6 +95,7 @@ void run_plan_shot(const PlanShotFlags& f, std::ostream& out, std::ostream& err)
   else if (f.noise == "tournament") q.noise = tournament_noise();
   else if (f.noise == "scenario") q.noise = s.noise;
   else throw UsageError("--noise = " + quote_input(f.noise) + " is not known; allowed: tournament, none, scenario");
+  q.noise = with_sigma_flags(f.sigma, q.noise, s.settings.parameters.ball.radius);
   if (f.pocket != "any") {
     std::string names;
     for (std::size_t k = 0; k < s.table.pockets.size(); ++k) {
@@ -111,6 +128,7 @@ void run_plan_shot(const PlanShotFlags& f, std::ostream& out, std::ostream& err)
   if (!f.scenario_out.empty())
     write_text_file(f.scenario_out, scenario_to_json(scenario_with_shot(s, plan.cue_ball, plan.shot, q.noise)) + '\n',
                     "--scenario-out", "the scenario file");
+  if (!f.html.empty()) write_plan_page(f.html, scenario_with_shot(s, plan.cue_ball, plan.shot, q.noise), plan.cue_ball);
   if (f.json) {
     nlohmann::ordered_json j = shot_json(s, plan.cue_ball, plan.shot, q.noise);
     j["simulations"] = plan.simulations;
@@ -125,8 +143,8 @@ void run_plan_shot(const PlanShotFlags& f, std::ostream& out, std::ostream& err)
   const PlannedShot& b = plan.shot;
   const ShotAction& a = b.strike;
   out << "plan-shot: ball " << f.ball << ", " << describe(b) << ": P(success) = " << fixed(b.success_probability, 3)
-      << " +- " << fixed(b.success_standard_error, 3) << " (" << b.noisy_shots << " noisy shots, " << f.noise
-      << " noise, seed " << f.seed << ")\n";
+      << " +- " << fixed(b.success_standard_error, 3) << " (" << b.noisy_shots << " noisy shots, " << noise_label(f)
+      << ", seed " << f.seed << ")\n";
   out << "  strike     speed " << fixed(a.speed, 3) << " m/s, aim " << fixed(a.aim_deg, 3) << " deg, elevation "
       << fixed(a.elevation_deg, 1) << " deg, side " << fixed(a.side, 2) << ", height " << fixed(a.height, 2)
       << " (cue ball " << fixed(b.ball_speed, 3) << " m/s)\n";
@@ -142,6 +160,7 @@ void run_plan_shot(const PlanShotFlags& f, std::ostream& out, std::ostream& err)
         << fixed(alt.success_standard_error, 3) << " (" << alt.noisy_shots << " shots), aim "
         << fixed(alt.strike.aim_deg, 3) << " deg, speed " << fixed(alt.strike.speed, 3) << " m/s\n";
   if (!f.scenario_out.empty()) out << "  scenario written to " << f.scenario_out << " (cueball simulate replays it)\n";
+  if (!f.html.empty()) out << "  viewer written to " << f.html << " (the shot with its aim line and ghost ball)\n";
   (void)err;
 }
 
@@ -158,7 +177,8 @@ Command add_plan_shot_command(CLI::App& app) {
       "sigma 0.125 deg aim, 0.1 deg elevation, 0.075 m/s speed, 0.5 mm tip). A pot needs the ball in\n"
       "the intended pocket, the cue ball touching it first and not pocketed. The scenario's own cue\n"
       "strike is ignored. --scenario-out writes the scenario with the planned cue (cueball simulate\n"
-      "replays it). Exit status 3 when no shot is feasible.");
+      "replays it); --html the viewer page of the planned shot with its aim line and ghost ball. The\n"
+      "--sigma-* flags replace single sigmas of the --noise model. Exit status 3 when no shot is feasible.");
   sub->add_option("scenario", flags->scenario, "Scenario JSON file (default: the built-in 9-ball break)");
   sub->add_option("--ball", flags->ball, "Id of the ball to pot")->required();
   sub->add_option("--pocket", flags->pocket, "Pocket name (e.g. top-right), or any")->capture_default_str();
@@ -169,7 +189,10 @@ Command add_plan_shot_command(CLI::App& app) {
   sub->add_option("--seed", flags->seed, "Random seed of the noisy estimates")->capture_default_str();
   sub->add_option("--simulations", flags->simulations, "Engine runs the plan may use, [500, 1e6]")
       ->capture_default_str();
+  add_sigma_flags(*sub, flags->sigma);
   sub->add_option("--scenario-out", flags->scenario_out, "Write the scenario with the planned cue to this file");
+  sub->add_option("--html", flags->html,
+                  "Write the viewer page of the planned shot (noise-free) with the aim line and ghost ball");
   sub->add_flag("--json", flags->json, "Print one JSON object");
   return [flags](std::ostream& out, std::ostream& err) { run_plan_shot(*flags, out, err); };
 }

@@ -167,7 +167,7 @@ struct BatchFlags {
   int threads = 1;
   long long seed = 0;
   bool json = false;
-  std::optional<double> sigma_speed, sigma_aim, sigma_elevation, sigma_side, sigma_height;
+  SigmaFlags sigma;
 };
 
 void run_batch(const BatchFlags& f, std::ostream& out, std::ostream& err) {
@@ -178,17 +178,7 @@ void run_batch(const BatchFlags& f, std::ostream& out, std::ostream& err) {
   check_flag("--seed", static_cast<double>(f.seed), 0, 9.0e15, "random seed");
   Scenario s = load_scenario(f.scenario);
   if (!s.cue) throw UsageError("the scenario has no \"cue\" strike to repeat");
-  const double radius = s.settings.parameters.ball.radius;
-  const double degree = std::numbers::pi / 180.0;
-  if (f.sigma_speed) check_flag("--sigma-speed", *f.sigma_speed, 0, 5, "sigma of the cue speed, m/s"), s.noise.speed = *f.sigma_speed;
-  if (f.sigma_aim) check_flag("--sigma-aim", *f.sigma_aim, 0, 30, "sigma of the aim, degrees"), s.noise.aim = *f.sigma_aim * degree;
-  if (f.sigma_elevation)
-    check_flag("--sigma-elevation", *f.sigma_elevation, 0, 30, "sigma of the elevation, degrees"),
-        s.noise.elevation = *f.sigma_elevation * degree;
-  if (f.sigma_side) check_flag("--sigma-side", *f.sigma_side, 0, 0.5, "sigma of the side offset, ball radii"), s.noise.side_offset = *f.sigma_side * radius;
-  if (f.sigma_height)
-    check_flag("--sigma-height", *f.sigma_height, 0, 0.5, "sigma of the height offset, ball radii"),
-        s.noise.height_offset = *f.sigma_height * radius;
+  s.noise = with_sigma_flags(f.sigma, s.noise, s.settings.parameters.ball.radius);
 
   std::optional<OutcomeCsv> csv;
   if (!f.outcomes.empty()) csv.emplace(f.outcomes, s);
@@ -447,11 +437,7 @@ Command add_batch_command(CLI::App& app) {
   sub->add_option("--shots", flags->shots, "Number of shots, [1, 1e8]")->capture_default_str();
   sub->add_option("--threads", flags->threads, "Worker threads")->capture_default_str();
   sub->add_option("--seed", flags->seed, "Random seed")->capture_default_str();
-  sub->add_option("--sigma-speed", flags->sigma_speed, "Sigma of the cue speed, m/s");
-  sub->add_option("--sigma-aim", flags->sigma_aim, "Sigma of the aim, degrees");
-  sub->add_option("--sigma-elevation", flags->sigma_elevation, "Sigma of the cue elevation, degrees");
-  sub->add_option("--sigma-side", flags->sigma_side, "Sigma of the side tip offset, ball radii");
-  sub->add_option("--sigma-height", flags->sigma_height, "Sigma of the height tip offset, ball radii");
+  add_sigma_flags(*sub, flags->sigma);
   sub->add_option("--outcomes", flags->outcomes, "Write each shot's outcome to this CSV file (one row per shot)");
   sub->add_flag("--json", flags->json, "Print one JSON object");
   return [flags](std::ostream& out, std::ostream& err) { run_batch(*flags, out, err); };

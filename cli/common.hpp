@@ -10,6 +10,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include "cueball/cue_strike.hpp"
 #include "cueball/parameters.hpp"
 #include "output.hpp"
 
@@ -41,6 +42,21 @@ Parameters resolve_parameters(const ParameterFlags& flags);
 /// Throws UsageError "FLAG = VALUE is outside the allowed range [lo, hi] (meaning)"
 /// unless value is finite and within [lo, hi].
 void check_flag(const char* flag, double value, double lo, double hi, const char* meaning);
+
+/// The --sigma-* flags of `batch` and `plan-shot`: standard deviations of
+/// the execution noise in the units of the scenario's "noise" (m/s, degrees,
+/// ball radii); each one given replaces that sigma of a base noise.
+struct SigmaFlags {
+  std::optional<double> speed, aim, elevation, side, height;
+  bool any() const { return speed || aim || elevation || side || height; }
+};
+
+void add_sigma_flags(CLI::App& app, SigmaFlags& flags);
+
+/// `noise` with each given flag in its place (radians, metres; `radius` the
+/// ball radius, m); throws UsageError naming the flag, the value and the
+/// allowed range (the scenario's "noise" ranges).
+CueStrikeNoise with_sigma_flags(const SigmaFlags& flags, CueStrikeNoise noise, double radius);
 
 /// Longest result file `view` reads, bytes (256 MiB).
 inline constexpr std::size_t kMaxResultFileBytes = std::size_t{256} << 20;

@@ -39,6 +39,40 @@ std::string viewer_page(std::string_view template_text, std::string_view result_
   return page;
 }
 
+std::string aim_overlay_json(const SimulationResult& r, const Parameters& p, int cue_ball) {
+  std::size_t cue = r.balls.size();
+  for (std::size_t i = 0; i < r.balls.size(); ++i)
+    if (r.balls[i].id == cue_ball) cue = i;
+  if (cue == r.balls.size()) throw std::logic_error("aim_overlay_json: no ball has the cue ball's id");
+  nlohmann::json line = nlohmann::json::array();
+  const auto at = [&](double t) {
+    const BallState s = r.state_at(cue, t, p);
+    return nlohmann::json::array({s.position.x, s.position.y});
+  };
+  line.push_back(at(0.0));
+  nlohmann::json ghost = nullptr;
+  for (const Event& e : r.events) {
+    if (e.type == EventType::ball_ball && (e.ball == cue_ball || e.other == cue_ball)) {
+      ghost = at(e.time);
+      break;
+    }
+    if ((e.type == EventType::ball_cushion || e.type == EventType::ball_jaw) && e.ball == cue_ball) line.push_back(at(e.time));
+  }
+  const BallTrajectory& b = r.balls[cue];
+  line.push_back(ghost.is_null() ? at(b.pocketed ? b.pocket_time : r.end_time) : ghost);
+  return nlohmann::json{{"aim_line", line}, {"ghost_ball", ghost}}.dump();
+}
+
+std::string with_overlay(std::string_view result_json, std::string_view overlay_json) {
+  const std::size_t end = result_json.find_last_of('}');
+  if (end == std::string_view::npos) throw std::logic_error("with_overlay: the result is not a JSON object");
+  std::string out(result_json.substr(0, end));
+  out += ",\"overlay\":";
+  out += overlay_json;
+  out += '}';
+  return out;
+}
+
 namespace {
 
 using Json = nlohmann::json;
@@ -131,6 +165,15 @@ void check_result(const Node& r) {
     events[i]["time"].number(0.0, kBig);
     events[i]["type"].string();
     events[i]["balls"].integers();
+  }
+  if (r.has("overlay")) {
+    const Node overlay = r["overlay"];
+    overlay.object();
+    const Node line = overlay["aim_line"];
+    const std::size_t points = line.array();
+    if (points < 2) line.fail("expected at least two [x, y] points");
+    for (std::size_t i = 0; i < points; ++i) line[i].vector(2);
+    if (overlay.has("ghost_ball")) overlay["ghost_ball"].vector(2);
   }
   const Node balls = r["balls"];
   for (std::size_t i = 0, n = balls.array(); i < n; ++i) {

@@ -15,6 +15,7 @@
 #include "cueball/cushion_impact.hpp"
 #include "cueball/errors.hpp"
 #include "cueball/rack.hpp"
+#include "cueball/shot_planner.hpp"
 #include "json_input.hpp"
 
 namespace cueball {
@@ -525,6 +526,16 @@ SimulationResult run_scenario(const Scenario& s) {
   return r;
 }
 
+bool cue_strike_obstructed(const Scenario& s) {
+  if (!s.cue || !find_ball(s.balls, s.cue->ball)) return false;
+  return cue_obstructed(s.table, s.balls, s.cue->ball, resolved_strike(s, s.cue->strike), s.settings.parameters.ball);
+}
+
+CueStrikeNoise noise_from_json(std::string_view json_text, double radius, const std::string& path) {
+  const Json j = detail::parse_json(json_text, path);
+  return read_noise(Reader(j, path), radius);
+}
+
 std::string result_to_json(const Scenario& s, const SimulationResult& r, double sample_rate, int indent) {
   const Parameters& p = s.settings.parameters;
   if (!(std::isfinite(sample_rate) && sample_rate >= 0.0))
@@ -570,6 +581,7 @@ std::string result_to_json(const Scenario& s, const SimulationResult& r, double 
   } else {
     out["cue_strike"] = nullptr;
   }
+  out["cue_obstructed"] = cue_strike_obstructed(s);
   out["scenario"] = scenario_json(s);
   out["end_time"] = r.end_time;
   Json events = Json::array();

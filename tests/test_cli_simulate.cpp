@@ -394,6 +394,29 @@ TEST(CliSimulate, PocketedBallIsReportedWithItsPocket) {
   EXPECT_DOUBLE_EQ(b.at("pocket_time").get<double>(), j.at("events").back().at("time").get<double>());
 }
 
+TEST(CliSimulate, ResultFlagsAnObstructedCue) {
+  // Ball 2 right behind the cue ball on the cue's line; the cue ball 1.8 m
+  // from the head rail, so a level cue reaches no rail.
+  const auto scenario = [](const char* behind, const char* elevation) {
+    return std::string(R"({"table": "pool_9ft", "balls": [{"id": 0, "position": [1.8, 0.635]},
+        {"id": 1, "position": [2.1, 0.635]})") + behind + R"(], "cue": {"ball": 0, "target": 1, "speed": 2.0,
+        "elevation_deg": )" + elevation + "}}";
+  };
+  const TempDir dir;
+  const Json blocked = simulate_json({dir.write("blocked.json", scenario(R"(, {"id": 2, "position": [1.7, 0.635]})", "0"))});
+  EXPECT_EQ(blocked.at("cue_obstructed"), true);
+  bool hit = false;  // simulated all the same: the cue ball hits the 1
+  for (const Json& e : blocked.at("events")) hit = hit || (e.at("type") == "ball_ball" && e.at("balls") == Json::array({0, 1}));
+  EXPECT_TRUE(hit) << blocked.at("events");
+  EXPECT_EQ(simulate_json({dir.write("clear.json", scenario("", "0"))}).at("cue_obstructed"), false);
+  EXPECT_EQ(simulate_json({dir.write("raised.json", scenario(R"(, {"id": 2, "position": [1.7, 0.635]})", "60"))})
+                .at("cue_obstructed"),
+            false);
+  // No cue: false, never missing.
+  EXPECT_EQ(simulate_json({dir.write("none.json", R"({"balls": [{"id": 0, "position": [1, 0.6]}]})")}).at("cue_obstructed"),
+            false);
+}
+
 // ------------------------------------------------------------------ simulate: bad input
 
 TEST(CliSimulate, BadScenariosExitWithStatusTwoNamingTheField) {

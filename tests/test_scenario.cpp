@@ -226,6 +226,8 @@ TEST(ScenarioReplay, ScenarioWithoutCueReplays) {
   expect_replays(s);
   const Json j = Json::parse(result_to_json(s, run_scenario(s)));
   EXPECT_TRUE(j.at("cue_strike").is_null());
+  EXPECT_EQ(j.at("cue_obstructed"), false);
+  EXPECT_FALSE(cue_strike_obstructed(s));
   EXPECT_FALSE(j.at("scenario").contains("cue"));
 }
 
@@ -321,6 +323,69 @@ TEST(ResultJson, CushionAndJawEventsCarryTheirNames) {
   }
   EXPECT_GT(cushions, 30);
   EXPECT_GT(jaws, 0);
+}
+
+// A ball right behind the cue ball on the cue's line obstructs a level cue;
+// the result flags it and the shot is simulated all the same. The cue ball
+// sits 1.8 m from the head rail, so a level cue along +x reaches no rail.
+std::string obstruction_scenario(bool ball_behind, double elevation_deg) {
+  return std::string(R"({"table": "pool_9ft", "balls": [{"id": 0, "position": [1.8, 0.635]},
+      {"id": 1, "position": [2.1, 0.635]})") +
+         (ball_behind ? R"(, {"id": 2, "position": [1.7, 0.635]})" : "") + R"(],
+      "cue": {"ball": 0, "target": 1, "speed": 2.0, "elevation_deg": )" +
+         std::to_string(elevation_deg) + "}}";
+}
+
+TEST(ScenarioResult, FlagsAnObstructedCue) {
+  const Scenario blocked = scenario_from_json(obstruction_scenario(true, 0.0));
+  EXPECT_TRUE(cue_strike_obstructed(blocked));
+  const SimulationResult r = run_scenario(blocked);
+  const Json j = Json::parse(result_to_json(blocked, r));
+  EXPECT_EQ(j.at("cue_obstructed"), true);
+  // Simulated all the same: the cue ball hits the 1.
+  bool hit = false;
+  for (const Event& e : r.events) hit = hit || (e.type == EventType::ball_ball && ((e.ball == 0 && e.other == 1) || (e.ball == 1 && e.other == 0)));
+  EXPECT_TRUE(hit);
+
+  const Scenario clear = scenario_from_json(obstruction_scenario(false, 0.0));
+  EXPECT_FALSE(cue_strike_obstructed(clear));
+  EXPECT_EQ(Json::parse(result_to_json(clear, run_scenario(clear))).at("cue_obstructed"), false);
+
+  // Raised steeply enough the cue passes over the ball behind.
+  const Scenario raised = scenario_from_json(obstruction_scenario(true, 60.0));
+  EXPECT_FALSE(cue_strike_obstructed(raised));
+  EXPECT_EQ(Json::parse(result_to_json(raised, run_scenario(raised))).at("cue_obstructed"), false);
+  // Not steeply enough: still through it.
+  EXPECT_TRUE(cue_strike_obstructed(scenario_from_json(obstruction_scenario(true, 10.0))));
+
+  // The rail: a level cue from near the head rail runs below it.
+  const Scenario rail = scenario_from_json(R"({"table": "pool_9ft", "balls": [{"id": 0, "position": [0.3, 0.635]},
+      {"id": 1, "position": [1.0, 0.635]}], "cue": {"ball": 0, "target": 1, "speed": 2.0}})");
+  EXPECT_TRUE(cue_strike_obstructed(rail));
+}
+
+TEST(ScenarioNoise, NoiseFromJsonIsTheScenariosReader) {
+  const double radius = 0.028575;
+  const CueStrikeNoise n = noise_from_json(R"({"speed": 0.05, "aim_deg": 0.2, "height": 0.1})", radius);
+  EXPECT_EQ(n.speed, 0.05);
+  EXPECT_EQ(n.aim, 0.2 * kDegree);
+  EXPECT_EQ(n.elevation, 0.0);
+  EXPECT_EQ(n.side_offset, 0.0);
+  EXPECT_EQ(n.height_offset, 0.1 * radius);
+  // The same numbers as the scenario's "noise" gives.
+  const Scenario s = scenario_from_json(R"({"noise": {"speed": 0.05, "aim_deg": 0.2, "height": 0.1}})");
+  EXPECT_EQ(s.noise.aim, n.aim);
+  EXPECT_EQ(s.noise.height_offset, n.height_offset);
+  for (const auto& [text, field] : std::vector<std::pair<std::string, std::string>>{
+           {R"({"aim_deg": 50})", "noise.aim_deg"}, {R"({"loud": 1})", "noise.loud"}, {R"({"side": -0.1})", "noise.side"}}) {
+    try {
+      (void)noise_from_json(text, radius);
+      ADD_FAILURE() << text << " accepted";
+    } catch (const InvalidArgument& e) {
+      EXPECT_EQ(e.field(), field) << e.what();
+      EXPECT_NE(std::string(e.what()).find(field), std::string::npos) << e.what();
+    }
+  }
 }
 
 }  // namespace

@@ -117,12 +117,26 @@ std::vector<SimulationBall> balls_after_strike(const Scenario& s, const std::opt
 /// Runs the scenario's shot. The result's first event is the cue strike.
 SimulationResult run_scenario(const Scenario& s);
 
+/// True when the scenario's cue strike (its aim resolved) is obstructed: the
+/// cue, aligned for it, passes through another ball or below the rail
+/// (cue_obstructed(), shot_planner.hpp). False without a cue. A flag only:
+/// run_scenario() plays an obstructed strike all the same.
+bool cue_strike_obstructed(const Scenario& s);
+
+/// A scenario's "noise" object ({"speed": m/s, "aim_deg", "elevation_deg":
+/// deg, "side", "height": ball radii}, every key optional, 0 by default) read
+/// by the scenario's own reader, with `radius` the ball radius (m) of the
+/// offsets. Throws InvalidArgument naming `path`.key, the value and the
+/// allowed range ("noise.aim_deg = 50 is outside [0, 30] ...").
+CueStrikeNoise noise_from_json(std::string_view json_text, double radius, const std::string& path = "noise");
+
 /// The documented result JSON (README "Result format"): table, parameters,
 /// events (ball_cushion and ball_jaw events with the part's index and
 /// "cushion_name" / "jaw_name"), balls (final states, pocketing, trajectory
 /// segments), "cue_strike" ({"given": the scenario's cue, "resolved": ball,
 /// target, speed, aim_deg, elevation_deg, side, height and the same in
 /// radians and metres, cue mass and tip restitution}, or null without a cue),
+/// "cue_obstructed" (cue_strike_obstructed(), false without a cue),
 /// "scenario" (scenario_to_json: replaying it reproduces the result bit for
 /// bit) and, when sample_rate > 0, the states sampled at that rate (Hz). `indent`: spaces per nesting level, or
 /// -1 for everything on one line. More than kMaxSamples sampled states throw

@@ -940,6 +940,9 @@ class Result:
     def scenario(self) -> Scenario:
         """the Scenario that ran: simulate(result.scenario) reproduces this result bit for bit"""
     @property
+    def cue_obstructed(self) -> bool:
+        """the cue, aligned for the scenario's strike, passes through a ball or below the rail (False without a cue)"""
+    @property
     def pocket_names(self) -> list[str]:
         """the table's pockets, indexed by events['pocket'] and balls['pocket']"""
     @property
@@ -1004,7 +1007,7 @@ def plan_shot(
     cue_ball: _Int | None = None,
     pocket: str | _Int = "any",
     kinds: Sequence[str] = ("direct", "bank"),
-    noise: str = "tournament",
+    noise: str | Mapping[str, _Float] = "tournament",
     seed: _Int = 0,
     simulations: _Int = 4000,
     side: _Float = 0.0,
@@ -1013,7 +1016,8 @@ def plan_shot(
     """The strike that pots ball `target` (cueball plan-shot): the dict of `plan-shot --json`
     (cue in degrees and ball radii, kind, pocket, success_probability and its standard error,
     aim_window_deg, speed_window m/s, robot, predicted, alternatives, rejected) and `scenario`,
-    the Scenario with the planned cue. noise 'tournament', 'none' or 'scenario'; raises
+    the Scenario with the planned cue. noise 'tournament', 'none', 'scenario' or a dict of sigmas
+    as the scenario's "noise" (speed m/s, aim_deg, elevation_deg, side, height ball radii); raises
     NoFeasibleShot when nothing pots. Releases the GIL."""
 
 def _time_run_scenario(scenario: _Scenario = None, repetitions: _Int = 100) -> float:

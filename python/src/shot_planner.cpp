@@ -17,11 +17,19 @@ namespace {
 using cueball::PlannedShot;
 using cueball::Scenario;
 
-cueball::CueStrikeNoise noise_model(const std::string& name, const Scenario& s) {
+// noise: a model's name, or a dict of sigmas in the units of the scenario's
+// "noise" (read by the scenario's own reader: the same keys, ranges and errors).
+cueball::CueStrikeNoise noise_model(const py::object& noise, const Scenario& s) {
+  if (py::isinstance<py::dict>(noise))
+    return cueball::noise_from_json(json_text(noise, "noise"), s.settings.parameters.ball.radius, "noise");
+  if (!py::isinstance<py::str>(noise))
+    throw py::type_error("noise must be 'tournament', 'none', 'scenario' or a dict of sigmas (speed, aim_deg, "
+                         "elevation_deg, side, height)");
+  const std::string name = noise.cast<std::string>();
   if (name == "tournament") return cueball::tournament_noise();
   if (name == "none") return {};
   if (name == "scenario") return s.noise;
-  throw cueball::InvalidArgument("noise", "noise = '" + name + "' is not known; allowed: 'tournament', 'none', 'scenario'");
+  throw cueball::InvalidArgument("noise", "noise = '" + name + "' is not known; allowed: 'tournament', 'none', 'scenario' or a dict of sigmas");
 }
 
 std::vector<cueball::ShotKind> shot_kinds(const std::vector<std::string>& names) {
@@ -102,7 +110,7 @@ void bind_shot_planner(py::module_& m) {
   m.def(
       "plan_shot",
       [](const py::object& scenario, int target, std::optional<int> cue_ball, const py::object& pocket,
-         const std::vector<std::string>& kinds, const std::string& noise, std::uint64_t seed, long long simulations,
+         const std::vector<std::string>& kinds, const py::object& noise, std::uint64_t seed, long long simulations,
          double side, std::optional<double> height) {
         if (simulations < cueball::kMinPlanSimulations || simulations > cueball::kMaxPlanSimulations)
           throw cueball::InvalidArgument("simulations", static_cast<double>(simulations),
@@ -144,8 +152,9 @@ void bind_shot_planner(py::module_& m) {
       "cushion), the aim and speed windows that still pot, and the success probability from noisy\n"
       "simulations. scenario: as simulate()'s (its own cue strike is ignored; None: the built-in\n"
       "rack); pocket: 'any', a pocket's name or index; kinds: 'direct', 'bank'; noise: 'tournament'\n"
-      "(sigma 0.125 deg aim, 0.1 deg elevation, 0.075 m/s, 0.5 mm tip), 'none' or 'scenario' (the\n"
-      "scenario's own \"noise\"); simulations: the budget of engine runs, [500, 1e6]; side, height:\n"
+      "(sigma 0.125 deg aim, 0.1 deg elevation, 0.075 m/s, 0.5 mm tip), 'none', 'scenario' (the\n"
+      "scenario's own \"noise\") or a dict of sigmas as the scenario's \"noise\" takes them (speed m/s,\n"
+      "aim_deg, elevation_deg, side and height in ball radii; missing keys 0); simulations: the budget of engine runs, [500, 1e6]; side, height:\n"
       "tip offsets in ball radii (height None: centre ball, then draw, then follow). Returns the dict\n"
       "of `cueball plan-shot --json` (cue in the scenario's units, kind, pocket, cushion,\n"
       "success_probability, success_standard_error, noisy_shots, aim_window_deg, speed_window (m/s),\n"

@@ -279,6 +279,11 @@ void bind_simulation(py::module_& m) {
           "the Scenario that ran (the same object when simulate() was given one): simulate(result.scenario)\n"
           "reproduces this result bit for bit")
       .def_property_readonly(
+          "cue_obstructed", [](const Result& r) { return cueball::cue_strike_obstructed(*r.scenario); },
+          "True when the scenario's cue strike is obstructed (the cue, aligned for it, passes through\n"
+          "another ball or below the rail; the result JSON's \"cue_obstructed\"); False without a cue.\n"
+          "The shot is simulated all the same.")
+      .def_property_readonly(
           "pocket_names",
           [](const Result& r) {
             py::list names;

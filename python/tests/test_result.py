@@ -59,6 +59,25 @@ class ResultTest(unittest.TestCase):
         self.assertEqual(json.loads(self.result.to_json(indent=-1)), self.result.to_dict())
         self.assertNotIn("\n", self.result.to_json(indent=-1))
 
+    def test_cue_obstructed(self):
+        # A ball right behind the cue ball on the cue's line; 1.8 m from the head rail a level cue
+        # reaches no rail. The flag is the result JSON's; the shot is simulated all the same.
+        def layout(behind, elevation):
+            balls = [{"id": 0, "position": [1.8, 0.635]}, {"id": 1, "position": [2.1, 0.635]}]
+            if behind:
+                balls.append({"id": 2, "position": [1.7, 0.635]})
+            return {"table": "pool_9ft", "balls": balls,
+                    "cue": {"ball": 0, "target": 1, "speed": 2.0, "elevation_deg": elevation}}
+        blocked = cueball.simulate(layout(True, 0.0))
+        self.assertIs(blocked.cue_obstructed, True)
+        self.assertIs(blocked.to_dict()["cue_obstructed"], True)
+        self.assertGreater(len(blocked.events["time"]), 2)
+        for behind, elevation in ((False, 0.0), (True, 60.0)):
+            r = cueball.simulate(layout(behind, elevation))
+            self.assertIs(r.cue_obstructed, False, (behind, elevation))
+            self.assertIs(r.to_dict()["cue_obstructed"], False)
+        self.assertIs(cueball.simulate({"balls": [{"id": 0, "position": [1, 0.6]}]}).cue_obstructed, False)
+
     def test_names_and_repr(self):
         self.assertEqual(cueball.EVENT_TYPES, ("cue_strike", "slide_to_roll", "roll_to_spin", "roll_to_rest",
                                                "spin_stop", "ball_ball", "ball_cushion", "ball_jaw", "ball_pocket"))

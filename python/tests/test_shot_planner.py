@@ -76,6 +76,53 @@ class PlanShotTest(unittest.TestCase):
             cueball.plan_shot(CUT, 42)
         self.assertEqual(e.exception.field, "target")
 
+    def test_noise_as_a_dict_of_sigmas(self) -> None:
+        # The scenario's "noise" keys and units; missing keys are 0.
+        none = cueball.plan_shot(CUT, 9, noise="none", simulations=1000)
+        self.assertEqual(none["success_probability"], 1.0)
+        self.assertEqual(cueball.plan_shot(CUT, 9, noise={}, simulations=1000)["success_probability"], 1.0)
+        wide = cueball.plan_shot(CUT, 9, noise={"aim_deg": 2.0}, simulations=1000)
+        self.assertLess(wide["success_probability"], 0.6)
+        self.assertEqual(wide["scenario"].noise["aim_deg"], 2.0)
+        self.assertEqual(wide["scenario"].noise["speed"], 0.0)
+        # NumPy numbers are numbers.
+        same = cueball.plan_shot(CUT, 9, noise={"aim_deg": np.float64(2.0)}, simulations=1000)
+        self.assertEqual(same["success_probability"], wide["success_probability"])
+
+    def test_noise_dict_is_the_clis_sigma_flags(self) -> None:
+        binary = os.environ.get("CUEBALL_BIN")
+        if not binary:
+            self.skipTest("CUEBALL_BIN not set")
+        sigmas = {"speed": 0.05, "aim_deg": 0.3, "elevation_deg": 0.2, "side": 0.02, "height": 0.03}
+        plan = cueball.plan_shot(CUT, 9, noise=sigmas, simulations=1000, seed=4)
+        out = subprocess.run([binary, "plan-shot", str(CUT), "--ball", "9", "--simulations", "1000", "--seed", "4",
+                              "--noise", "none", "--sigma-speed", "0.05", "--sigma-aim", "0.3",
+                              "--sigma-elevation", "0.2", "--sigma-side", "0.02", "--sigma-height", "0.03", "--json"],
+                             check=True, capture_output=True, text=True).stdout
+        cli = json.loads(out)
+        for key in ("success_probability", "noisy_shots", "cue"):
+            self.assertEqual(cli[key], plan[key], key)
+        self.assertLess(plan["success_probability"], 1.0)
+
+    def test_elevation_noise_at_a_level_cue_keeps_the_sample(self) -> None:
+        # From here the level cue reaches no rail (test_cli_plan_shot_html.cpp's layout); elevation
+        # noise around 0 is reflected at the limit, so the pot stays near sure.
+        layout = {"table": "pool_9ft", "balls": [{"id": 0, "position": [1.55, 0.70]},
+                                                 {"id": 1, "position": [2.214, 0.944]},
+                                                 {"id": 9, "position": [0.8, 1.0]}]}
+        plan = cueball.plan_shot(layout, 1, noise={"elevation_deg": 1.0}, simulations=1000)
+        self.assertEqual(plan["cue"]["elevation_deg"], 0.0)
+        self.assertGreater(plan["success_probability"], 0.95)
+
+    def test_bad_noise_names_the_key(self) -> None:
+        for noise, field in (({"aim_deg": 50}, "noise.aim_deg"), ({"loud": 1}, "noise.loud"),
+                             ({"speed": -0.1}, "noise.speed"), ({"side": float("nan")}, "noise.side")):
+            with self.subTest(noise=noise), self.assertRaises(cueball.InvalidArgument) as e:
+                cueball.plan_shot(CUT, 9, noise=noise)
+            self.assertEqual(e.exception.field, field)
+        with self.assertRaises(TypeError):
+            cueball.plan_shot(CUT, 9, noise=3)
+
 
 if __name__ == "__main__":
     unittest.main()

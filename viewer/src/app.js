@@ -8,6 +8,7 @@ import { describeGeometry } from './format.js';
 import { tableLayout, View } from './geometry.js';
 import { pathPieces, phaseAt, POCKET_DROP_TIME, speedSeries, stateAt, TRANSITION_EVENTS } from './model.js';
 import { angularSpeed, speed } from './motion.js';
+import { drawOverlay } from './overlay.js';
 import { Player } from './player.js';
 import { SpeedPlot } from './plot.js';
 import { drawTable, tableTheme } from './table-draw.js';
@@ -75,6 +76,13 @@ export class Viewer {
   seek(t) {
     this.player.pause();
     this.player.seek(t);
+  }
+
+  /** CSS pixel [x, y] in the table canvas of the overlay's ghost ball (null without one). */
+  ghostPixel() {
+    const ghost = this.model.overlay && this.model.overlay.ghostBall;
+    if (!ghost || !this.view) return null;
+    return this.view.toCss(ghost[0], ghost[1]);
   }
 
   /** CSS pixel [x, y] in the table canvas of a ball's centre now. */
@@ -164,6 +172,10 @@ export class Viewer {
     ctx.drawImage(this.tableImage, 0, 0);
 
     const now = this.balls.map(({ ball }) => stateAt(this.model, ball, t));
+    if (this.model.overlay) {
+      view.applyTable(ctx);
+      drawOverlay(ctx, view, this.model.overlay, this.model.radius);
+    }
     if (this.showTrails) {
       view.applyTable(ctx);
       this.balls.forEach((b, i) => {

@@ -41,6 +41,7 @@ function start(el, result) {
     play: () => viewer.player.play(),
     pause: () => viewer.player.pause(),
     ballPixel: (id) => viewer.ballPixel(id),
+    ghostPixel: () => viewer.ghostPixel(),
   });
 }
 

@@ -2,6 +2,7 @@
 // balls with their trajectory segments, events, table and parameters, and the
 // state of any ball at any time (C++ SimulationResult::state_at).
 
+import { loadOverlay } from './overlay.js';
 import { angularSpeed, clothParameters, evolve, makeState, motionPhase, phasePieces, Phase, speed } from './motion.js';
 
 /** Seconds a pocketed ball takes to disappear into its pocket on screen. */
@@ -59,6 +60,7 @@ export function loadResult(result) {
     balls,
     byId,
     events,
+    overlay: loadOverlay(result),
   };
 }
 

@@ -8,7 +8,7 @@
 // The cueball binary: $CUEBALL_BIN (default ../build/release/cueball); the
 // pages it writes itself (`cueball view` and `simulate --html`) are tested too.
 import assert from 'node:assert/strict';
-import { existsSync } from 'node:fs';
+import { existsSync, readFileSync, writeFileSync } from 'node:fs';
 import { join, resolve } from 'node:path';
 import { after, before, describe, test } from 'node:test';
 import { pathToFileURL } from 'node:url';
@@ -348,6 +348,57 @@ describe('viewer in Chromium', { timeout: TIMEOUT }, () => {
     await page.waitForFunction(() => window.cueballViewer && window.cueballViewer.ready === true);
     assert.equal(await hook(page, () => window.cueballViewer.duration()), breakPage.result.end_time);
     await close();
+  });
+
+  test('a page written by `cueball plan-shot --html` draws the aim line and the ghost ball', async () => {
+    const scenario = join(dir, 'cut-plan.json');
+    writeFileSync(
+      scenario,
+      JSON.stringify({
+        table: 'pool_9ft',
+        balls: [
+          { id: 0, name: 'cue', position: [1.55, 0.7] },
+          { id: 1, name: '1', position: [2.214, 0.944] },
+          { id: 9, name: '9', position: [0.8, 1.0] },
+        ],
+      }),
+    );
+    const planned = join(dir, 'planned.json');
+    const html = join(dir, 'plan.html');
+    cueball(['plan-shot', scenario, '--ball', '1', '--html', html, '--scenario-out', planned]);
+    const bare = join(dir, 'plan-bare.html'); // the same shot without the overlay
+    cueball(['simulate', planned, '--html', bare]);
+    const embedded = /id="cueball-result">([^<]*)<\/script>/.exec(readFileSync(html, 'utf8'));
+    const result = JSON.parse(embedded[1]);
+    const model = loadResult(result);
+    assert.ok(model.overlay && model.overlay.ghostBall, 'the page carries the overlay');
+    const [start, ghost] = model.overlay.aimLine;
+    const middle = [(start[0] + ghost[0]) / 2, (start[1] + ghost[1]) / 2];
+    // brightest red channel around a point: the white line over the blue cloth
+    const brightest = async (page, [x, y]) => {
+      const png = decodePng(
+        await page.screenshot({ clip: { x: Math.round(x) - 2, y: Math.round(y) - 2, width: 5, height: 5 }, scale: 'css' }),
+      );
+      let red = 0;
+      for (let i = 0; i < 5; ++i) for (let j = 0; j < 5; ++j) red = Math.max(red, png.pixel(i, j)[0]);
+      return red;
+    };
+    const seen = {};
+    for (const page_ of [html, bare]) {
+      const { page, close } = await openPage(page_);
+      const frame = await tableFrame(page, model, 0);
+      const ghostPixel = await hook(page, () => window.cueballViewer.ghostPixel());
+      if (page_ === html) {
+        const [gx, gy] = frame.toScreen(ghost[0], ghost[1]);
+        assert.ok(Math.hypot(frame.box.x + ghostPixel[0] - gx, frame.box.y + ghostPixel[1] - gy) < 0.5, 'ghost ball');
+      } else {
+        assert.equal(ghostPixel, null, 'no overlay, no ghost ball');
+      }
+      seen[page_] = await brightest(page, frame.toScreen(middle[0], middle[1]));
+      await close();
+    }
+    assert.ok(seen[html] > seen[bare] + 60, `the aim line: red ${seen[html]} on it, ${seen[bare]} without the overlay`);
+    assert.ok(seen[bare] < 90, `cloth without the overlay: red ${seen[bare]}`);
   });
 
   test('pages written by `cueball view` and `cueball simulate --html`', async () => {

@@ -62,6 +62,8 @@
 #include <thread>
 #include <vector>
 
+#include <time.h>  // clock_gettime(CLOCK_THREAD_CPUTIME_ID): the calling thread's CPU time
+
 #include "cueball/batch.hpp"
 #include "cueball/errors.hpp"
 #include "cueball/rack.hpp"
@@ -129,6 +131,14 @@ class Rng {
 double seconds_since(std::chrono::steady_clock::time_point t) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
 }
+// CPU time of the calling thread, s: a decision's cost on one core, whatever
+// else the machine runs (the wall-clock time is reported too).
+double thread_cpu_seconds() {
+  timespec t{};
+  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
+  return static_cast<double>(t.tv_sec) + 1e-9 * static_cast<double>(t.tv_nsec);
+}
+
 double angle_deg(Vec2 v) { return std::atan2(v.y, v.x) / kDeg; }
 
 // ------------------------------------------------------------------ table and balls
@@ -246,13 +256,15 @@ struct Choice {
   bool found = false;
   ShotAction action;
   int simulations = 0;
-  double seconds = 0.0;
-  std::string what;  // kind and pocket, for the per-layout record
+  double seconds = 0.0;      // wall clock
+  double cpu_seconds = 0.0;  // the thread's CPU time
+  std::string what;          // kind and pocket, for the per-layout record
 };
 
 Choice planner_choice(const Scenario& s, int target, std::uint64_t seed, int simulations) {
   Choice c;
   const auto start = std::chrono::steady_clock::now();
+  const double cpu_start = thread_cpu_seconds();
   PlanRequest q;
   q.target = target;
   q.seed = seed;
@@ -269,6 +281,7 @@ Choice planner_choice(const Scenario& s, int target, std::uint64_t seed, int sim
     c.what = "no feasible shot";
   }
   c.seconds = seconds_since(start);
+  c.cpu_seconds = thread_cpu_seconds() - cpu_start;
   return c;
 }
 
@@ -319,11 +332,13 @@ GhostAim ghost_aim(const Setup& st, const Scenario& s, int target_id, double spe
 Choice ghost_choice(const Setup& st, const Scenario& s, int target) {
   Choice c;
   const auto start = std::chrono::steady_clock::now();
+  const double cpu_start = thread_cpu_seconds();
   const GhostAim g = ghost_aim(st, s, target, kGhostSpeed);
   c.found = g.found;
   c.action = g.action;
   c.what = g.found ? "ghost " + s.table.pockets[static_cast<std::size_t>(g.pocket)].name : "no clear pocket";
   c.seconds = seconds_since(start);
+  c.cpu_seconds = thread_cpu_seconds() - cpu_start;
   return c;
 }
 
@@ -336,6 +351,7 @@ struct ExhaustiveStats {
 Choice exhaustive_choice(const Setup& st, const Scenario& s, int target_id, std::uint64_t screen_seed, ExhaustiveStats& stats) {
   Choice c;
   const auto start = std::chrono::steady_clock::now();
+  const double cpu_start = thread_cpu_seconds();
   const double R = st.radius;
   const Vec2 C = s.balls[index_of(s, 0)].state.position, O = s.balls[index_of(s, target_id)].state.position;
   const double d = norm(O - C);
@@ -417,6 +433,7 @@ Choice exhaustive_choice(const Setup& st, const Scenario& s, int target_id, std:
   }
   c.what = c.found ? fmt("grid: speed %.2f side %.2f height %.2f", c.action.speed, c.action.side, c.action.height) : "no potting cell";
   c.seconds = seconds_since(start);
+  c.cpu_seconds = thread_cpu_seconds() - cpu_start;
   return c;
 }
 
@@ -426,6 +443,7 @@ struct MethodResult {
   double p = 0.0;  // measured success probability (0 without a shot)
   int simulations = 0;
   double seconds = 0.0;
+  double cpu_seconds = 0.0;
   bool found = false;
   std::string what;
   ShotAction action;
@@ -445,6 +463,7 @@ MethodResult measured(const Scenario& s, const Choice& c, int repeats, std::uint
   r.found = c.found;
   r.simulations = c.simulations;
   r.seconds = c.seconds;
+  r.cpu_seconds = c.cpu_seconds;
   r.what = c.what;
   r.action = c.action;
   if (c.found) {
@@ -477,7 +496,7 @@ struct RackRecord {
   int potted = 0;        // object balls potted by the planner's run
   int shots = 0;         // planned shots played
   Stop stop = Stop::miss;
-  std::vector<double> decision_seconds;
+  std::vector<double> decision_seconds, decision_cpu_seconds;
   long long simulations = 0;
   std::string detail;
 };
@@ -580,6 +599,7 @@ RackRecord run_rack(const Setup& st, std::uint64_t seed, int planner_simulations
       return rec;
     }
     rec.decision_seconds.push_back(c.seconds);
+    rec.decision_cpu_seconds.push_back(c.cpu_seconds);
     rec.simulations += c.simulations;
     if (!c.found) {
       rec.stop = Stop::no_feasible_shot;
@@ -796,28 +816,32 @@ int run(const Options& o) {
     const double wall = seconds_since(start);
     std::printf("\nsingle pots: %d layouts (seeds %llu..%llu), %.1f s\n", o.layouts, static_cast<unsigned long long>(o.seed),
                 static_cast<unsigned long long>(o.seed + static_cast<std::uint64_t>(o.layouts) - 1), wall);
-    std::printf("  %-11s %9s %8s %9s %12s %10s %10s\n", "method", "mean p", "s.e.", "no shot", "sims/dec", "median s", "mean s");
+    std::printf("  %-11s %9s %8s %9s %12s %12s %10s %10s\n", "method", "mean p", "s.e.", "no shot", "sims/dec", "median cpu s",
+                "median s", "mean s");
     double mean_p[3], mean_sims[3], med_s[3];
     json += " \"single\": {\n";
     json += fmt("  \"layouts\": %d, \"wall_seconds\": %s,\n  \"methods\": {\n", o.layouts, num(wall).c_str());
     for (int m = 0; m < 3; ++m) {
-      std::vector<double> p, sims, secs;
+      std::vector<double> p, sims, secs, cpu;
       int none = 0;
       for (const SingleRecord& r : recs) {
         p.push_back(r.m[m].p);
         sims.push_back(r.m[m].simulations);
         secs.push_back(r.m[m].seconds);
+        cpu.push_back(r.m[m].cpu_seconds);
         none += r.m[m].found ? 0 : 1;
       }
       mean_p[m] = mean(p);
       mean_sims[m] = mean(sims);
-      med_s[m] = median(secs);
-      std::printf("  %-11s %9.4f %8.4f %9d %12.0f %10.4f %10.4f\n", kMethodNames[m], mean_p[m], standard_error(p), none, mean_sims[m],
-                  med_s[m], mean(secs));
+      med_s[m] = median(cpu);
+      std::printf("  %-11s %9.4f %8.4f %9d %12.0f %12.4f %10.4f %10.4f\n", kMethodNames[m], mean_p[m], standard_error(p), none,
+                  mean_sims[m], med_s[m], median(secs), mean(secs));
       json += fmt("   \"%s\": {\"mean_success\": %s, \"standard_error\": %s, \"no_shot\": %d, \"mean_simulations\": %s, "
-                  "\"median_simulations\": %s, \"median_seconds\": %s, \"mean_seconds\": %s}%s\n",
+                  "\"median_simulations\": %s, \"median_cpu_seconds\": %s, \"mean_cpu_seconds\": %s, \"median_seconds\": %s, "
+                  "\"mean_seconds\": %s}%s\n",
                   kMethodNames[m], num(mean_p[m]).c_str(), num(standard_error(p)).c_str(), none, num(mean_sims[m]).c_str(),
-                  num(median(sims)).c_str(), num(med_s[m]).c_str(), num(mean(secs)).c_str(), m < 2 ? "," : "");
+                  num(median(sims)).c_str(), num(med_s[m]).c_str(), num(mean(cpu)).c_str(), num(median(secs)).c_str(),
+                  num(mean(secs)).c_str(), m < 2 ? "," : "");
     }
     json += "  },\n";
     // Paired differences and the goals.
@@ -834,7 +858,7 @@ int run(const Options& o) {
     std::printf("  planner - exhaustive: %+.4f +- %.4f (paired); planner / exhaustive = %.3f (goal >= 0.98)\n", mean(d_ex),
                 standard_error(d_ex), ratio);
     std::printf("  planner - ghost_ball: %+.4f +- %.4f (paired)\n", mean(d_gh), standard_error(d_gh));
-    std::printf("  exhaustive / planner simulations = %.1f (goal >= 50); planner median decision %.4f s (goal < 0.1 s)\n", sims_ratio,
+    std::printf("  exhaustive / planner simulations = %.1f (goal >= 50); planner median decision %.4f s CPU (goal < 0.1 s)\n", sims_ratio,
                 med_s[0]);
     std::printf("  layouts where one beats the other by > 0.05: planner %d, exhaustive %d\n", planner_better, exhaustive_better);
     json += fmt("  \"planner_minus_exhaustive\": %s, \"planner_minus_exhaustive_se\": %s, \"planner_minus_ghost_ball\": %s, "
@@ -851,8 +875,8 @@ int run(const Options& o) {
       json += fmt("   {\"seed\": %llu, \"others\": %d, \"grid_cells\": %d, \"grid_simulated\": %d, \"grid_potting\": %d",
                   static_cast<unsigned long long>(r.seed), r.others, r.grid.cells, r.grid.simulated, r.grid.potting);
       for (int m = 0; m < 3; ++m)
-        json += fmt(", \"%s\": {\"p\": %s, \"simulations\": %d, \"seconds\": %s, \"shot\": %s, \"action\": %s}", kMethodNames[m],
-                    num(r.m[m].p).c_str(), r.m[m].simulations, num(r.m[m].seconds).c_str(), quoted(r.m[m].what).c_str(),
+        json += fmt(", \"%s\": {\"p\": %s, \"simulations\": %d, \"seconds\": %s, \"cpu_seconds\": %s, \"shot\": %s, \"action\": %s}",
+                    kMethodNames[m], num(r.m[m].p).c_str(), r.m[m].simulations, num(r.m[m].seconds).c_str(), num(r.m[m].cpu_seconds).c_str(), quoted(r.m[m].what).c_str(),
                     r.m[m].found ? action_json(r.m[m].action).c_str() : "null");
       json += k + 1 < recs.size() ? "},\n" : "}\n";
     }
@@ -867,7 +891,7 @@ int run(const Options& o) {
     });
     const double wall = seconds_since(start);
     int stops[kStops] = {};
-    std::vector<double> potted, secs, shots, on_break;
+    std::vector<double> potted, secs, cpu, shots, on_break;
     long long sims = 0;
     for (const RackRecord& r : recs) {
       ++stops[static_cast<int>(r.stop)];
@@ -875,6 +899,7 @@ int run(const Options& o) {
       shots.push_back(r.shots);
       on_break.push_back(r.on_break);
       secs.insert(secs.end(), r.decision_seconds.begin(), r.decision_seconds.end());
+      cpu.insert(cpu.end(), r.decision_cpu_seconds.begin(), r.decision_cpu_seconds.end());
       sims += r.simulations;
     }
     const double fraction = static_cast<double>(stops[0]) / o.racks;
@@ -882,17 +907,18 @@ int run(const Options& o) {
                 static_cast<unsigned long long>(o.seed + static_cast<std::uint64_t>(o.racks) - 1), wall);
     std::printf("  run out %.3f +- %.3f (goal >= 0.40); balls potted per rack %.2f (plus %.2f on the break); shots %.2f\n", fraction,
                 std::sqrt(fraction * (1.0 - fraction) / o.racks), mean(potted), mean(on_break), mean(shots));
-    std::printf("  median decision %.4f s, %.0f simulations per decision\n", median(secs),
+    std::printf("  median decision %.4f s CPU (%.4f s wall), %.0f simulations per decision\n", median(cpu), median(secs),
                 secs.empty() ? 0.0 : static_cast<double>(sims) / static_cast<double>(secs.size()));
     std::printf("  ended by:");
     for (int k = 0; k < kStops; ++k) std::printf(" %s %d%s", kStopNames[k], stops[k], k + 1 < kStops ? "," : "\n");
     json += first_suite ? "" : ",\n";
     json += " \"runout\": {\n";
     json += fmt("  \"racks\": %d, \"wall_seconds\": %s, \"run_out_fraction\": %s, \"run_out_standard_error\": %s, "
-                "\"mean_balls_potted\": %s, \"mean_potted_on_break\": %s, \"mean_shots\": %s, \"median_decision_seconds\": %s, "
+                "\"mean_balls_potted\": %s, \"mean_potted_on_break\": %s, \"mean_shots\": %s, \"median_decision_cpu_seconds\": %s, "
+                "\"median_decision_seconds\": %s, "
                 "\"mean_simulations_per_decision\": %s, \"goal_met\": %s,\n",
                 o.racks, num(wall).c_str(), num(fraction).c_str(), num(std::sqrt(fraction * (1.0 - fraction) / o.racks)).c_str(),
-                num(mean(potted)).c_str(), num(mean(on_break)).c_str(), num(mean(shots)).c_str(), num(median(secs)).c_str(),
+                num(mean(potted)).c_str(), num(mean(on_break)).c_str(), num(mean(shots)).c_str(), num(median(cpu)).c_str(), num(median(secs)).c_str(),
                 num(secs.empty() ? 0.0 : static_cast<double>(sims) / static_cast<double>(secs.size())).c_str(),
                 fraction >= 0.4 ? "true" : "false");
     json += "  \"ended_by\": {";

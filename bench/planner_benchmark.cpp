@@ -99,13 +99,19 @@ constexpr double kInHandBack = 0.3;
 // Seed streams: layout seed x -> planner seed x, screen seed mix(x, 1), measurement seed mix(x, 2).
 constexpr std::uint64_t kScreenStream = 1, kMeasureStream = 2, kBreakStream = 3;
 
+// printf into a std::string of any length (checked by the compiler like printf).
 __attribute__((format(printf, 1, 2))) std::string fmt(const char* format, ...) {
-  char buf[1024];
   va_list args;
   va_start(args, format);
-  std::vsnprintf(buf, sizeof buf, format, args);
+  va_list again;
+  va_copy(again, args);
+  const int n = std::vsnprintf(nullptr, 0, format, args);
   va_end(args);
-  return buf;
+  std::string out(static_cast<std::size_t>(std::max(n, 0)) + 1, '\0');
+  std::vsnprintf(out.data(), out.size(), format, again);
+  va_end(again);
+  out.resize(static_cast<std::size_t>(std::max(n, 0)));
+  return out;
 }
 
 std::uint64_t splitmix64(std::uint64_t x) {
@@ -276,9 +282,9 @@ Choice planner_choice(const Scenario& s, int target, std::uint64_t seed, int sim
     c.simulations = r.simulations;
     c.what = fmt("%s %s%s%s", to_string(r.shot.kind), r.shot.pocket_name.c_str(), r.shot.cushion.empty() ? "" : " off ",
                  r.shot.cushion.c_str());
-  } catch (const NoFeasibleShot&) {
+  } catch (const NoFeasibleShot& e) {
     c.simulations = simulations;  // the API does not report them: its budget is the upper bound
-    c.what = "no feasible shot";
+    c.what = std::string(e.what()).substr(0, 2000);  // "no feasible shot pots ball 1 (12 candidates: ...)"
   }
   c.seconds = seconds_since(start);
   c.cpu_seconds = thread_cpu_seconds() - cpu_start;
@@ -603,7 +609,7 @@ RackRecord run_rack(const Setup& st, std::uint64_t seed, int planner_simulations
     rec.simulations += c.simulations;
     if (!c.found) {
       rec.stop = Stop::no_feasible_shot;
-      rec.detail = fmt("no feasible shot on the %d", target);
+      rec.detail = c.what;
       return rec;
     }
     ManyOptions o;

@@ -1,0 +1,960 @@
+// cueball-planner-benchmark: how good are plan_shot's choices, and at what
+// cost? (issue 13, item 4). Method and measured results: docs/planner-benchmark.md.
+//
+// Suite "single": layouts of the cue ball (id 0), the target (id 1) and 0-5
+// other balls (ids 2..6) placed uniformly at random on the 9-ft pool table
+// (the default pool preset), layout k from seed S + k (splitmix64 into
+// std::mt19937_64, uniforms from the 53 high bits, as stress/stress.cpp does).
+// Three methods choose a strike on each layout:
+//   planner     plan_shot (shot_planner.hpp) with its defaults (direct and
+//               bank, tournament noise, centre ball then draw/follow) and
+//               --planner-simulations engine runs, seeded with the layout's seed;
+//   ghost_ball  ghost-ball aiming (D. G. Alciatore, "The Illustrated
+//               Principles of Pool and Billiards", 2004): the cue ball aimed
+//               at the ghost ball G = O - 2R u for the pocket whose straight
+//               paths are clear of the other balls and whose small-angle
+//               aim tolerance cos(cut) / (|CG| |OP|) is largest (cut <= 80
+//               deg, as the planner), centre ball, cue speed kGhostSpeed,
+//               the lowest elevation of kElevationsDeg the cue clears at
+//               (cue_obstructed); no simulation;
+//   exhaustive  a dense grid (aims every kGridAimStepDeg over every direction
+//               in which the cue ball meets the target first in a straight
+//               line, x kGridSpeeds x kGridSpins, each at the lowest clear
+//               elevation), in three stages: (1) every cell simulated once
+//               noise-free; (2) in each (speed, spin) slice the aim whose
+//               Gaussian-smoothed pot indicator (sigma = the aim noise) is
+//               highest, and the kScreenSlices best slices; (3) each of those
+//               screened with kScreenShots noisy shots on common draws; the
+//               best screened cell is the choice.
+// The success probability of each choice is then measured by --repeats
+// independent noisy repeats (tournament_noise(), simulate_many) on a seed
+// stream different from the planner's and the screens' own. A shot succeeds
+// when the cue ball's first contact is the target, the target drops (in any
+// pocket: 9-ball is not call-pocket) and the cue ball is not pocketed; a
+// miscue or an event-limit failure is a miss. A method without a shot scores 0.
+//
+// Suite "runout": 9-ball racks (rack_nine_ball with random gaps), broken by
+// the engine (a seeded break: cue ball behind the head string, aimed at the 1
+// with a small jitter, 6.5-8.5 m/s), then cue ball in hand placed by a rule
+// (a straight-in on the 1, kInHandBack behind the ghost ball of the easiest
+// clear pocket). The planner then shoots the lowest-numbered ball, the
+// planned strike played once with tournament noise, until the 9 drops
+// (a run-out), or a shot is a foul (wrong first contact, scratch), pots
+// nothing, or no feasible shot exists. A 9 potted on the break is spotted.
+//
+// Everything is seeded: the same flags give the same choices and
+// probabilities whatever --threads (the timings of course vary).
+// Uses only the public API.
+#include <algorithm>
+#include <atomic>
+#include <chrono>
+#include <cmath>
+#include <cstdarg>
+#include <cstdint>
+#include <cstdio>
+#include <cstdlib>
+#include <exception>
+#include <fstream>
+#include <limits>
+#include <numbers>
+#include <random>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include <time.h>  // clock_gettime(CLOCK_THREAD_CPUTIME_ID): the calling thread's CPU time
+
+#include "cueball/batch.hpp"
+#include "cueball/errors.hpp"
+#include "cueball/rack.hpp"
+#include "cueball/scenario.hpp"
+#include "cueball/shot_planner.hpp"
+#include "cueball/table.hpp"
+#include "cueball/vec.hpp"
+
+namespace {
+
+using namespace cueball;
+
+constexpr double kPi = std::numbers::pi;
+constexpr double kDeg = kPi / 180.0;
+
+// The ghost-ball baseline's cue speed, m/s (a medium pace, inside the
+// 1.4-2.3 m/s the planner chose on the first layouts).
+constexpr double kGhostSpeed = 1.5;
+// Elevations tried, lowest first, until the cue clears (the planner's limit is 30 deg).
+constexpr double kElevationsDeg[] = {0.0, 2.0, 5.0, 10.0, 15.0, 20.0, 25.0, 30.0};
+// The exhaustive grid.
+constexpr double kGridAimStepDeg = 0.05;  // 0.4 sigma of the tournament aim noise
+constexpr double kGridSpeeds[] = {1.0, 1.5, 2.0, 2.5, 3.0, 4.0, 5.0, 6.5};  // cue speed, m/s
+struct Spin {
+  double side, height;  // ball radii
+};
+constexpr Spin kGridSpins[] = {{0.0, 0.0},   {0.0, -0.35}, {0.0, 0.35},  {-0.2, 0.0}, {0.2, 0.0},
+                               {-0.2, -0.3}, {0.2, -0.3},  {-0.2, 0.3}, {0.2, 0.3}};
+constexpr int kScreenSlices = 16;
+constexpr int kScreenShots = 200;
+// Ball in hand: the cue ball this far behind the ghost ball, m.
+constexpr double kInHandBack = 0.3;
+// Seed streams: layout seed x -> planner seed x, screen seed mix(x, 1), measurement seed mix(x, 2).
+constexpr std::uint64_t kScreenStream = 1, kMeasureStream = 2, kBreakStream = 3;
+
+// printf into a std::string of any length (checked by the compiler like printf).
+__attribute__((format(printf, 1, 2))) std::string fmt(const char* format, ...) {
+  va_list args;
+  va_start(args, format);
+  va_list again;
+  va_copy(again, args);
+  const int n = std::vsnprintf(nullptr, 0, format, args);
+  va_end(args);
+  std::string out(static_cast<std::size_t>(std::max(n, 0)) + 1, '\0');
+  std::vsnprintf(out.data(), out.size(), format, again);
+  va_end(again);
+  out.resize(static_cast<std::size_t>(std::max(n, 0)));
+  return out;
+}
+
+std::uint64_t splitmix64(std::uint64_t x) {
+  x += 0x9e3779b97f4a7c15ULL;
+  x = (x ^ (x >> 30)) * 0xbf58476d1ce4e5b9ULL;
+  x = (x ^ (x >> 27)) * 0x94d049bb133111ebULL;
+  return x ^ (x >> 31);
+}
+std::uint64_t stream_seed(std::uint64_t seed, std::uint64_t stream) { return splitmix64(splitmix64(seed) ^ (stream * 0x632be59bd9b4e019ULL)); }
+
+class Rng {
+ public:
+  explicit Rng(std::uint64_t seed) : engine_(splitmix64(seed)) {}
+  std::uint64_t bits() { return engine_(); }
+  double unit() { return static_cast<double>(engine_() >> 11) * 0x1.0p-53; }
+  double uniform(double lo, double hi) { return lo + (hi - lo) * unit(); }
+  int integer(int lo, int hi) { return lo + static_cast<int>(unit() * static_cast<double>(hi - lo + 1)); }
+
+ private:
+  std::mt19937_64 engine_;
+};
+
+double seconds_since(std::chrono::steady_clock::time_point t) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
+}
+// CPU time of the calling thread, s: a decision's cost on one core, whatever
+// else the machine runs (the wall-clock time is reported too).
+double thread_cpu_seconds() {
+  timespec t{};
+  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
+  return static_cast<double>(t.tv_sec) + 1e-9 * static_cast<double>(t.tv_nsec);
+}
+
+double angle_deg(Vec2 v) { return std::atan2(v.y, v.x) / kDeg; }
+
+// ------------------------------------------------------------------ table and balls
+
+struct Setup {
+  Scenario base;  // pool_9ft, pool preset, tournament noise, cue ball 0, no balls
+  double radius = 0.0;
+};
+
+Setup make_setup() {
+  Setup s;
+  s.base = default_scenario();
+  s.base.balls.clear();
+  s.base.cue = ShotStrike{};
+  s.base.cue->ball = 0;
+  s.base.noise = tournament_noise();
+  s.radius = s.base.settings.parameters.ball.radius;
+  return s;
+}
+
+// Room around centre p beyond every cushion's and jaw's contact distance and every pocket's capture circle.
+double clearance(const Table& t, Vec2 p, double radius) {
+  double c = std::min({p.x, t.length - p.x, p.y, t.width - p.y});
+  for (const CushionSegment& s : t.cushions) c = std::min(c, distance_to_segment(s, p) - cushion_contact_distance(s.contact_height, radius));
+  for (const JawArc& j : t.jaws) c = std::min(c, norm(p - j.centre) - jaw_contact_distance(j, radius));
+  for (const Pocket& q : t.pockets) c = std::min(c, norm(p - q.centre) - q.radius);
+  return c;
+}
+
+bool placeable(const Setup& st, const std::vector<SimulationBall>& balls, Vec2 p) {
+  if (!ball_on_table(st.base.table, p, st.radius) || clearance(st.base.table, p, st.radius) < 0.0) return false;
+  for (const SimulationBall& b : balls)
+    if (norm(p - b.state.position) < 2.0 * st.radius) return false;
+  return true;
+}
+
+void add_ball(std::vector<SimulationBall>& balls, int id, Vec2 p) {
+  SimulationBall b;
+  b.id = id;
+  b.name = id == 0 ? "cue" : std::to_string(id);
+  b.state.position = p;
+  balls.push_back(b);
+}
+
+Vec2 random_spot(const Setup& st, const std::vector<SimulationBall>& balls, Rng& rng) {
+  const Table& t = st.base.table;
+  for (int attempt = 0; attempt < 100000; ++attempt) {
+    const Vec2 p{rng.uniform(0.0, t.length), rng.uniform(0.0, t.width)};
+    if (placeable(st, balls, p)) return p;
+  }
+  throw std::runtime_error("could not place a ball");
+}
+
+// Single-pot layout k: cue ball, target, then 0-5 others, uniform on the bed.
+Scenario single_layout(const Setup& st, std::uint64_t seed, int& others) {
+  Rng rng(seed);
+  others = rng.integer(0, 5);
+  Scenario s = st.base;
+  for (int id = 0; id < 2 + others; ++id) add_ball(s.balls, id, random_spot(st, s.balls, rng));
+  return s;
+}
+
+std::size_t index_of(const Scenario& s, int id) {
+  for (std::size_t i = 0; i < s.balls.size(); ++i)
+    if (s.balls[i].id == id) return i;
+  return s.balls.size();
+}
+
+double distance_to_path(Vec2 p, Vec2 a, Vec2 b) {
+  const Vec2 ab = b - a;
+  const double len2 = dot(ab, ab);
+  const double t = len2 > 0.0 ? std::clamp(dot(p - a, ab) / len2, 0.0, 1.0) : 0.0;
+  return norm(p - (a + t * ab));
+}
+
+// The lowest elevation of kElevationsDeg at which the cue clears, or NaN.
+double clear_elevation(const Setup& st, const Scenario& s, ShotAction a) {
+  for (const double e : kElevationsDeg) {
+    a.elevation_deg = e;
+    if (!cue_obstructed(s.table, s.balls, 0, to_strike(a, st.radius), s.settings.parameters.ball)) return e;
+  }
+  return std::numeric_limits<double>::quiet_NaN();
+}
+
+// ------------------------------------------------------------------ measuring
+
+struct Hits {
+  int hits = 0;
+  int shots = 0;
+};
+
+bool success(const ManyResult& m, std::size_t k, std::size_t cue, std::size_t target, int target_id) {
+  const auto n = static_cast<std::size_t>(m.balls);
+  return !m.miscue[k] && !m.failure[k] && m.first_contact[k] == target_id && m.pocketed[k * n + target] &&
+         !m.pocketed[k * n + cue];
+}
+
+// Successes of `shots` noisy copies of `a` drawn from (seed, 0 ..).
+Hits noisy_hits(const Scenario& s, const ShotAction& a, int shots, std::uint64_t seed, int target_id) {
+  const std::vector<ShotAction> actions(static_cast<std::size_t>(shots), a);
+  ManyOptions o;
+  o.seed = seed;
+  o.noise = true;
+  const ManyResult m = simulate_many(s, actions, {}, o);
+  Hits h;
+  h.shots = shots;
+  const std::size_t cue = index_of(s, 0), target = index_of(s, target_id);
+  for (std::size_t k = 0; k < static_cast<std::size_t>(shots); ++k) h.hits += success(m, k, cue, target, target_id) ? 1 : 0;
+  return h;
+}
+
+// ------------------------------------------------------------------ the methods
+
+struct Choice {
+  bool found = false;
+  ShotAction action;
+  int simulations = 0;
+  double seconds = 0.0;      // wall clock
+  double cpu_seconds = 0.0;  // the thread's CPU time
+  std::string what;          // kind and pocket, for the per-layout record
+};
+
+Choice planner_choice(const Scenario& s, int target, std::uint64_t seed, int simulations) {
+  Choice c;
+  const auto start = std::chrono::steady_clock::now();
+  const double cpu_start = thread_cpu_seconds();
+  PlanRequest q;
+  q.target = target;
+  q.seed = seed;
+  q.simulations = simulations;
+  try {
+    const ShotPlanResult r = plan_shot(s, q);
+    c.found = true;
+    c.action = r.shot.strike;
+    c.simulations = r.simulations;
+    c.what = fmt("%s %s%s%s", to_string(r.shot.kind), r.shot.pocket_name.c_str(), r.shot.cushion.empty() ? "" : " off ",
+                 r.shot.cushion.c_str());
+  } catch (const NoFeasibleShot& e) {
+    c.simulations = simulations;  // the API does not report them: its budget is the upper bound
+    c.what = std::string(e.what()).substr(0, 2000);  // "no feasible shot pots ball 1 (12 candidates: ...)"
+  }
+  c.seconds = seconds_since(start);
+  c.cpu_seconds = thread_cpu_seconds() - cpu_start;
+  return c;
+}
+
+// The ghost-ball aim of the easiest clear pocket (header comment).
+struct GhostAim {
+  bool found = false;
+  int pocket = -1;
+  ShotAction action;
+};
+
+GhostAim ghost_aim(const Setup& st, const Scenario& s, int target_id, double speed) {
+  GhostAim best;
+  const double R = st.radius;
+  const Vec2 C = s.balls[index_of(s, 0)].state.position, O = s.balls[index_of(s, target_id)].state.position;
+  double best_score = -1.0;
+  for (std::size_t p = 0; p < s.table.pockets.size(); ++p) {
+    const Vec2 P = s.table.pockets[p].centre;
+    const double op = norm(P - O);
+    if (op <= 0.0) continue;
+    const Vec2 u = (P - O) / op;
+    const Vec2 G = O - 2.0 * R * u;
+    const double cg = norm(G - C);
+    if (cg <= 0.0) continue;
+    const double cos_cut = dot((G - C) / cg, u);
+    if (cos_cut < std::cos(80.0 * kDeg)) continue;
+    bool blocked = false;
+    for (const SimulationBall& b : s.balls) {
+      if (b.id == 0 || b.id == target_id) continue;
+      if (distance_to_path(b.state.position, C, G) < 2.0 * R || distance_to_path(b.state.position, O, P) < 2.0 * R) blocked = true;
+    }
+    if (blocked) continue;
+    ShotAction a;
+    a.speed = speed;
+    a.aim_deg = angle_deg(G - C);
+    a.elevation_deg = clear_elevation(st, s, a);
+    if (std::isnan(a.elevation_deg)) continue;
+    const double score = cos_cut / (cg * op);
+    if (score > best_score) {
+      best_score = score;
+      best.found = true;
+      best.pocket = static_cast<int>(p);
+      best.action = a;
+    }
+  }
+  return best;
+}
+
+Choice ghost_choice(const Setup& st, const Scenario& s, int target) {
+  Choice c;
+  const auto start = std::chrono::steady_clock::now();
+  const double cpu_start = thread_cpu_seconds();
+  const GhostAim g = ghost_aim(st, s, target, kGhostSpeed);
+  c.found = g.found;
+  c.action = g.action;
+  c.what = g.found ? "ghost " + s.table.pockets[static_cast<std::size_t>(g.pocket)].name : "no clear pocket";
+  c.seconds = seconds_since(start);
+  c.cpu_seconds = thread_cpu_seconds() - cpu_start;
+  return c;
+}
+
+struct ExhaustiveStats {
+  int cells = 0;      // grid cells
+  int simulated = 0;  // cells the cue clears (simulated noise-free)
+  int potting = 0;    // of those, cells that pot noise-free
+};
+
+Choice exhaustive_choice(const Setup& st, const Scenario& s, int target_id, std::uint64_t screen_seed, ExhaustiveStats& stats) {
+  Choice c;
+  const auto start = std::chrono::steady_clock::now();
+  const double cpu_start = thread_cpu_seconds();
+  const double R = st.radius;
+  const Vec2 C = s.balls[index_of(s, 0)].state.position, O = s.balls[index_of(s, target_id)].state.position;
+  const double d = norm(O - C);
+  const double half = std::asin(std::min(1.0, 2.0 * R / d)) / kDeg;
+  const int J = static_cast<int>(std::floor(half / kGridAimStepDeg));
+  const int aims = 2 * J + 1;
+  constexpr int kSpeeds = static_cast<int>(std::size(kGridSpeeds));
+  constexpr int kSpins = static_cast<int>(std::size(kGridSpins));
+  const double centre = angle_deg(O - C);
+  // Stage 1: every cell the cue clears, noise-free. Cell (spin, speed, aim).
+  std::vector<ShotAction> actions;
+  std::vector<int> cell_of;  // action -> cell
+  stats.cells = aims * kSpeeds * kSpins;
+  for (int k = 0; k < kSpins; ++k)
+    for (int i = 0; i < aims; ++i) {
+      ShotAction a;
+      a.aim_deg = centre + (i - J) * kGridAimStepDeg;
+      a.side = kGridSpins[k].side;
+      a.height = kGridSpins[k].height;
+      a.speed = kGridSpeeds[0];
+      a.elevation_deg = clear_elevation(st, s, a);
+      if (std::isnan(a.elevation_deg)) continue;
+      for (int v = 0; v < kSpeeds; ++v) {
+        a.speed = kGridSpeeds[v];
+        actions.push_back(a);
+        cell_of.push_back((k * kSpeeds + v) * aims + i);
+      }
+    }
+  std::vector<char> pots(static_cast<std::size_t>(stats.cells), 0);
+  std::vector<ShotAction> cell_action(static_cast<std::size_t>(stats.cells));
+  stats.simulated = static_cast<int>(actions.size());
+  if (!actions.empty()) {
+    const ManyResult m = simulate_many(s, actions, {}, ManyOptions{});
+    const std::size_t cue = index_of(s, 0), target = index_of(s, target_id);
+    for (std::size_t k = 0; k < actions.size(); ++k) {
+      const auto cell = static_cast<std::size_t>(cell_of[k]);
+      cell_action[cell] = actions[k];
+      pots[cell] = success(m, k, cue, target, target_id) ? 1 : 0;
+      stats.potting += pots[cell];
+    }
+  }
+  c.simulations = stats.simulated;
+  // Stage 2: per (spin, speed) slice, the aim with the highest pot indicator
+  // smoothed by a Gaussian of the aim noise's sigma; the best slices.
+  const double sigma_cells = s.noise.aim / kDeg / kGridAimStepDeg;
+  const int reach = static_cast<int>(std::ceil(3.0 * sigma_cells));
+  std::vector<double> w(static_cast<std::size_t>(2 * reach + 1));
+  double wsum = 0.0;
+  for (int j = -reach; j <= reach; ++j) wsum += (w[static_cast<std::size_t>(j + reach)] = std::exp(-0.5 * j * j / (sigma_cells * sigma_cells)));
+  struct Slice {
+    double score;
+    int cell;
+  };
+  std::vector<Slice> slices;
+  for (int sl = 0; sl < kSpins * kSpeeds; ++sl) {
+    Slice best{0.0, -1};
+    for (int i = 0; i < aims; ++i) {
+      if (!pots[static_cast<std::size_t>(sl * aims + i)]) continue;
+      double sum = 0.0;
+      for (int j = -reach; j <= reach; ++j)
+        if (i + j >= 0 && i + j < aims) sum += w[static_cast<std::size_t>(j + reach)] * pots[static_cast<std::size_t>(sl * aims + i + j)];
+      if (sum / wsum > best.score) best = {sum / wsum, sl * aims + i};
+    }
+    if (best.cell >= 0) slices.push_back(best);
+  }
+  std::stable_sort(slices.begin(), slices.end(), [](const Slice& a, const Slice& b) { return a.score > b.score; });
+  if (slices.size() > static_cast<std::size_t>(kScreenSlices)) slices.resize(kScreenSlices);
+  // Stage 3: the noisy screen on common draws.
+  int best_hits = -1;
+  for (const Slice& sl : slices) {
+    const ShotAction& a = cell_action[static_cast<std::size_t>(sl.cell)];
+    const Hits h = noisy_hits(s, a, kScreenShots, screen_seed, target_id);
+    c.simulations += kScreenShots;
+    if (h.hits > best_hits) {
+      best_hits = h.hits;
+      c.found = true;
+      c.action = a;
+    }
+  }
+  c.what = c.found ? fmt("grid: speed %.2f side %.2f height %.2f", c.action.speed, c.action.side, c.action.height) : "no potting cell";
+  c.seconds = seconds_since(start);
+  c.cpu_seconds = thread_cpu_seconds() - cpu_start;
+  return c;
+}
+
+// ------------------------------------------------------------------ single pots
+
+struct MethodResult {
+  double p = 0.0;  // measured success probability (0 without a shot)
+  int simulations = 0;
+  double seconds = 0.0;
+  double cpu_seconds = 0.0;
+  bool found = false;
+  std::string what;
+  ShotAction action;
+};
+
+struct SingleRecord {
+  std::uint64_t seed = 0;
+  int others = 0;
+  MethodResult m[3];  // planner, ghost_ball, exhaustive
+  ExhaustiveStats grid;
+};
+
+const char* const kMethodNames[3] = {"planner", "ghost_ball", "exhaustive"};
+
+MethodResult measured(const Scenario& s, const Choice& c, int repeats, std::uint64_t seed) {
+  MethodResult r;
+  r.found = c.found;
+  r.simulations = c.simulations;
+  r.seconds = c.seconds;
+  r.cpu_seconds = c.cpu_seconds;
+  r.what = c.what;
+  r.action = c.action;
+  if (c.found) {
+    const Hits h = noisy_hits(s, c.action, repeats, seed, 1);
+    r.p = static_cast<double>(h.hits) / h.shots;
+  }
+  return r;
+}
+
+SingleRecord run_single(const Setup& st, std::uint64_t seed, int repeats, int planner_simulations) {
+  SingleRecord rec;
+  rec.seed = seed;
+  const Scenario s = single_layout(st, seed, rec.others);
+  const std::uint64_t measure = stream_seed(seed, kMeasureStream);
+  rec.m[0] = measured(s, planner_choice(s, 1, seed, planner_simulations), repeats, measure);
+  rec.m[1] = measured(s, ghost_choice(st, s, 1), repeats, measure);
+  rec.m[2] = measured(s, exhaustive_choice(st, s, 1, stream_seed(seed, kScreenStream), rec.grid), repeats, measure);
+  return rec;
+}
+
+// ------------------------------------------------------------------ run-outs
+
+enum class Stop { run_out, miss, scratch, wrong_first_contact, no_feasible_shot, miscue, failure, rejected };
+const char* const kStopNames[] = {"run_out", "miss", "scratch", "wrong_first_contact", "no_feasible_shot", "miscue", "failure", "rejected_layout"};
+constexpr int kStops = 8;
+
+struct RackRecord {
+  std::uint64_t seed = 0;
+  int on_break = 0;      // object balls potted on the break (a potted 9 spotted, not counted)
+  int potted = 0;        // object balls potted by the planner's run
+  int shots = 0;         // planned shots played
+  Stop stop = Stop::miss;
+  std::vector<double> decision_seconds, decision_cpu_seconds;
+  long long simulations = 0;
+  std::string detail;
+};
+
+Scenario with_balls_at(const Scenario& s, const ManyResult& m, std::size_t shot, std::vector<int>& potted_ids) {
+  Scenario out = s;
+  out.balls.clear();
+  const auto n = static_cast<std::size_t>(m.balls);
+  for (std::size_t j = 0; j < n; ++j) {
+    if (m.pocketed[shot * n + j]) {
+      potted_ids.push_back(s.balls[j].id);
+      continue;
+    }
+    SimulationBall b = s.balls[j];
+    b.state = BallState{};
+    b.state.position = {m.final_position[(shot * n + j) * 2], m.final_position[(shot * n + j) * 2 + 1]};
+    out.balls.push_back(b);
+  }
+  return out;
+}
+
+// The rack after the engine's break, the cue ball in hand by the rule.
+Scenario broken_rack(const Setup& st, std::uint64_t seed, int& on_break) {
+  Rng rng(stream_seed(seed, kBreakStream));
+  RackOptions ro;
+  ro.gap_sigma = rng.uniform(0.0, 5e-4);
+  ro.seed = rng.bits() & 0x7fffffffULL;
+  Scenario s = st.base;
+  for (const PlacedBall& b : rack_nine_ball(s.table, ro)) add_ball(s.balls, b.id, b.position);
+  SimulationBall& cue = s.balls[index_of(s, 0)];
+  cue.state.position.y += rng.uniform(-0.25, 0.25);
+  const Vec2 one = s.balls[index_of(s, 1)].state.position;
+  ShotAction brk;
+  brk.speed = rng.uniform(6.5, 8.5);
+  brk.aim_deg = angle_deg(one - cue.state.position) + rng.uniform(-0.5, 0.5);
+  brk.elevation_deg = 2.0;
+  brk.height = rng.uniform(-0.1, 0.1);
+  const ManyResult m = simulate_many(s, std::vector<ShotAction>{brk}, {}, ManyOptions{});
+  if (m.failure[0]) throw std::runtime_error("break failed");
+  std::vector<int> potted;
+  Scenario after = with_balls_at(s, m, 0, potted);
+  on_break = 0;
+  for (const int id : potted) {
+    if (id == 9) {  // spotted on the foot spot, or behind it on the long string
+      Vec2 p = foot_spot(after.table);
+      while (!placeable(st, after.balls, p)) p.x += 0.005;
+      add_ball(after.balls, 9, p);
+    } else if (id != 0) {
+      ++on_break;
+    }
+  }
+  // Ball in hand: a straight-in on the lowest ball, kInHandBack behind the
+  // ghost ball of the easiest clear pocket (ghost_aim's ranking, every
+  // pocket tried in that order); else a random free spot.
+  std::vector<SimulationBall> objects;
+  for (const SimulationBall& b : after.balls)
+    if (b.id != 0) objects.push_back(b);
+  int lowest = 99;
+  for (const SimulationBall& b : objects) lowest = std::min(lowest, b.id);
+  const Vec2 O = after.balls[index_of(after, lowest)].state.position;
+  struct Place {
+    double score;
+    Vec2 p;
+  };
+  std::vector<Place> places;
+  for (const Pocket& q : after.table.pockets) {
+    const double op = norm(q.centre - O);
+    const Vec2 u = (q.centre - O) / op;
+    const Vec2 C = O - (2.0 * st.radius + kInHandBack) * u;
+    if (!placeable(st, objects, C)) continue;
+    bool blocked = false;
+    for (const SimulationBall& b : objects)
+      if (b.id != lowest && (distance_to_path(b.state.position, C, O) < 2.0 * st.radius ||
+                             distance_to_path(b.state.position, O, q.centre) < 2.0 * st.radius))
+        blocked = true;
+    if (!blocked) places.push_back({1.0 / op, C});
+  }
+  std::stable_sort(places.begin(), places.end(), [](const Place& a, const Place& b) { return a.score > b.score; });
+  Scenario out = after;
+  out.balls = objects;
+  add_ball(out.balls, 0, places.empty() ? random_spot(st, objects, rng) : places.front().p);
+  std::rotate(out.balls.rbegin(), out.balls.rbegin() + 1, out.balls.rend());  // the cue ball first
+  return out;
+}
+
+RackRecord run_rack(const Setup& st, std::uint64_t seed, int planner_simulations) {
+  RackRecord rec;
+  rec.seed = seed;
+  Scenario s = broken_rack(st, seed, rec.on_break);
+  for (;;) {
+    int target = 99;
+    for (const SimulationBall& b : s.balls)
+      if (b.id != 0) target = std::min(target, b.id);
+    Choice c;
+    try {
+      c = planner_choice(s, target, stream_seed(seed, 100 + static_cast<std::uint64_t>(rec.shots)), planner_simulations);
+    } catch (const std::exception& e) {  // the layout the engine left (never seen)
+      rec.stop = Stop::rejected;
+      rec.detail = e.what();
+      return rec;
+    }
+    rec.decision_seconds.push_back(c.seconds);
+    rec.decision_cpu_seconds.push_back(c.cpu_seconds);
+    rec.simulations += c.simulations;
+    if (!c.found) {
+      rec.stop = Stop::no_feasible_shot;
+      rec.detail = c.what;
+      return rec;
+    }
+    ManyOptions o;
+    o.noise = true;
+    o.seed = stream_seed(seed, kMeasureStream);
+    o.first_shot = static_cast<std::uint64_t>(rec.shots);
+    ManyResult m;
+    try {
+      m = simulate_many(s, std::vector<ShotAction>{c.action}, {}, o);
+    } catch (const std::exception& e) {
+      rec.stop = Stop::rejected;
+      rec.detail = e.what();
+      return rec;
+    }
+    ++rec.shots;
+    if (m.miscue[0]) {
+      rec.stop = Stop::miscue;
+      return rec;
+    }
+    if (m.failure[0]) {
+      rec.stop = Stop::failure;
+      return rec;
+    }
+    if (m.first_contact[0] != target) {
+      rec.stop = Stop::wrong_first_contact;
+      rec.detail = fmt("aimed at the %d, hit %d first", target, m.first_contact[0]);
+      return rec;
+    }
+    if (m.pocketed[index_of(s, 0)]) {
+      rec.stop = Stop::scratch;
+      rec.detail = fmt("scratch on the %d", target);
+      return rec;
+    }
+    std::vector<int> potted;
+    s = with_balls_at(s, m, 0, potted);
+    rec.potted += static_cast<int>(potted.size());
+    if (potted.empty()) {
+      rec.stop = Stop::miss;
+      rec.detail = fmt("missed the %d (%s)", target, c.what.c_str());
+      return rec;
+    }
+    if (std::find(potted.begin(), potted.end(), 9) != potted.end()) {
+      rec.stop = Stop::run_out;
+      return rec;
+    }
+  }
+}
+
+// ------------------------------------------------------------------ statistics
+
+double mean(const std::vector<double>& x) {
+  double s = 0.0;
+  for (const double v : x) s += v;
+  return x.empty() ? 0.0 : s / static_cast<double>(x.size());
+}
+double standard_error(const std::vector<double>& x) {
+  if (x.size() < 2) return 0.0;
+  const double m = mean(x);
+  double s = 0.0;
+  for (const double v : x) s += (v - m) * (v - m);
+  return std::sqrt(s / static_cast<double>(x.size() - 1) / static_cast<double>(x.size()));
+}
+double median(std::vector<double> x) {
+  if (x.empty()) return 0.0;
+  std::sort(x.begin(), x.end());
+  const std::size_t n = x.size();
+  return n % 2 ? x[n / 2] : 0.5 * (x[n / 2 - 1] + x[n / 2]);
+}
+std::string num(double x) {
+  if (!std::isfinite(x)) return "null";
+  return fmt("%.6g", x);
+}
+std::string quoted(const std::string& s) {
+  std::string out = "\"";
+  for (const char ch : s) {
+    if (ch == '"' || ch == '\\') out += '\\';
+    if (static_cast<unsigned char>(ch) >= 0x20) out += ch;
+  }
+  return out + "\"";
+}
+
+// ------------------------------------------------------------------ flags
+
+[[noreturn]] void bad_flag(const std::string& flag, const std::string& value, const std::string& allowed) {
+  std::fprintf(stderr, "cueball-planner-benchmark: error: %s = '%s' is not allowed; allowed: %s\n", flag.c_str(), value.c_str(),
+               allowed.c_str());
+  std::exit(2);
+}
+
+long long integer_flag(const std::string& flag, const std::string& value, long long lo, long long hi) {
+  const std::string range = "an integer in [" + std::to_string(lo) + ", " + std::to_string(hi) + "]";
+  if (value.empty() || value.find_first_not_of("0123456789") != std::string::npos || value.size() > 18) bad_flag(flag, value, range);
+  const long long x = std::stoll(value);
+  if (x < lo || x > hi) bad_flag(flag, value, range);
+  return x;
+}
+
+struct Options {
+  int layouts = 1000;
+  int racks = 1000;
+  int repeats = 2000;
+  std::uint64_t seed = 1;
+  bool single = true, runout = true;
+  int threads = 1;
+  int planner_simulations = 4000;
+  std::string json;
+  std::string suite = "all";
+};
+
+void usage() {
+  std::printf(
+      "usage: cueball-planner-benchmark [--suite single|runout|all] [--layouts N] [--racks N] [--repeats N]\n"
+      "                                 [--seed S] [--planner-simulations N] [--threads T] [--json FILE]\n"
+      "The shot planner against a ghost-ball baseline and an exhaustive grid search (docs/planner-benchmark.md).\n"
+      "  --suite S                single, runout or all (default all)\n"
+      "  --layouts N              single-pot layouts, [1, 1000000] (default 1000); layout k from seed S + k\n"
+      "  --racks N                9-ball racks for the run-outs, [1, 1000000] (default 1000); rack k from seed S + k\n"
+      "  --repeats N              noisy repeats measuring each chosen shot, [10, 1000000] (default 2000)\n"
+      "  --seed S                 first seed, [0, 1e18] (default 1)\n"
+      "  --planner-simulations N  plan_shot's budget, [%d, %d] (default 4000, the planner's default)\n"
+      "  --threads T              layouts in parallel, [1, 256] (default 1); results do not depend on it, timings do\n"
+      "  --json FILE              also write the results as JSON\n"
+      "Exit status: 0 done, 1 an engine error, 2 bad flags.\n",
+      kMinPlanSimulations, kMaxPlanSimulations);
+}
+
+Options parse(int argc, char** argv) {
+  Options o;
+  for (int i = 1; i < argc; ++i) {
+    const std::string flag = argv[i];
+    if (flag == "--help" || flag == "-h") {
+      usage();
+      std::exit(0);
+    }
+    static const char* const known[] = {"--suite", "--layouts", "--racks", "--repeats", "--seed", "--planner-simulations", "--threads", "--json"};
+    if (std::find_if(std::begin(known), std::end(known), [&](const char* k) { return flag == k; }) == std::end(known))
+      bad_flag("flag", flag, "--suite, --layouts, --racks, --repeats, --seed, --planner-simulations, --threads, --json, --help");
+    if (i + 1 >= argc) bad_flag(flag, "", "a value after the flag");
+    const std::string value = argv[++i];
+    if (flag == "--suite") {
+      if (value != "single" && value != "runout" && value != "all") bad_flag(flag, value, "single, runout, all");
+      o.suite = value;
+      o.single = value != "runout";
+      o.runout = value != "single";
+    } else if (flag == "--layouts") {
+      o.layouts = static_cast<int>(integer_flag(flag, value, 1, 1000000));
+    } else if (flag == "--racks") {
+      o.racks = static_cast<int>(integer_flag(flag, value, 1, 1000000));
+    } else if (flag == "--repeats") {
+      o.repeats = static_cast<int>(integer_flag(flag, value, 10, 1000000));
+    } else if (flag == "--seed") {
+      o.seed = static_cast<std::uint64_t>(integer_flag(flag, value, 0, 1000000000000000000LL));
+    } else if (flag == "--planner-simulations") {
+      o.planner_simulations = static_cast<int>(integer_flag(flag, value, kMinPlanSimulations, kMaxPlanSimulations));
+    } else if (flag == "--threads") {
+      o.threads = static_cast<int>(integer_flag(flag, value, 1, 256));
+    } else {
+      if (value.empty()) bad_flag(flag, value, "a file path");
+      o.json = value;
+    }
+  }
+  return o;
+}
+
+// Runs job(k) for k in [0, n) on `threads` workers; the first exception is rethrown.
+template <class Job>
+void parallel_for(int n, int threads, const Job& job) {
+  std::atomic<int> next{0};
+  std::exception_ptr error;
+  std::atomic<bool> failed{false};
+  const auto work = [&]() {
+    for (int k = next++; k < n && !failed; k = next++) {
+      try {
+        job(k);
+      } catch (...) {
+        if (!failed.exchange(true)) error = std::current_exception();
+      }
+    }
+  };
+  std::vector<std::thread> workers;
+  for (int t = 1; t < threads; ++t) workers.emplace_back(work);
+  work();
+  for (std::thread& w : workers) w.join();
+  if (error) std::rethrow_exception(error);
+}
+
+std::string action_json(const ShotAction& a) {
+  return fmt("[%.9g, %.9g, %.4g, %.4g, %.4g]", a.speed, a.aim_deg, a.elevation_deg, a.side, a.height);
+}
+
+int run(const Options& o) {
+  const Setup st = make_setup();
+  std::string json = "{\n \"tool\": \"cueball-planner-benchmark\",\n";
+  json += fmt(" \"options\": {\"suite\": \"%s\", \"layouts\": %d, \"racks\": %d, \"repeats\": %d, \"seed\": %llu, "
+              "\"planner_simulations\": %d, \"threads\": %d},\n",
+              o.suite.c_str(), o.layouts, o.racks, o.repeats, static_cast<unsigned long long>(o.seed), o.planner_simulations,
+              o.threads);
+  const CueStrikeNoise& n = st.base.noise;
+  json += fmt(" \"noise\": {\"speed\": %g, \"aim_deg\": %g, \"elevation_deg\": %g, \"side\": %g, \"height\": %g},\n", n.speed,
+              n.aim / kDeg, n.elevation / kDeg, n.side_offset / st.radius, n.height_offset / st.radius);
+  std::printf("cueball-planner-benchmark: seed %llu, %d repeats per measured shot, planner budget %d, %d thread%s\n",
+              static_cast<unsigned long long>(o.seed), o.repeats, o.planner_simulations, o.threads, o.threads == 1 ? "" : "s");
+  bool first_suite = true;
+  if (o.single) {
+    const auto start = std::chrono::steady_clock::now();
+    std::vector<SingleRecord> recs(static_cast<std::size_t>(o.layouts));
+    parallel_for(o.layouts, o.threads, [&](int k) {
+      recs[static_cast<std::size_t>(k)] = run_single(st, o.seed + static_cast<std::uint64_t>(k), o.repeats, o.planner_simulations);
+    });
+    const double wall = seconds_since(start);
+    std::printf("\nsingle pots: %d layouts (seeds %llu..%llu), %.1f s\n", o.layouts, static_cast<unsigned long long>(o.seed),
+                static_cast<unsigned long long>(o.seed + static_cast<std::uint64_t>(o.layouts) - 1), wall);
+    std::printf("  %-11s %9s %8s %9s %12s %12s %10s %10s\n", "method", "mean p", "s.e.", "no shot", "sims/dec", "median cpu s",
+                "median s", "mean s");
+    double mean_p[3], mean_sims[3], med_s[3];
+    json += " \"single\": {\n";
+    json += fmt("  \"layouts\": %d, \"wall_seconds\": %s,\n  \"methods\": {\n", o.layouts, num(wall).c_str());
+    for (int m = 0; m < 3; ++m) {
+      std::vector<double> p, sims, secs, cpu;
+      int none = 0;
+      for (const SingleRecord& r : recs) {
+        p.push_back(r.m[m].p);
+        sims.push_back(r.m[m].simulations);
+        secs.push_back(r.m[m].seconds);
+        cpu.push_back(r.m[m].cpu_seconds);
+        none += r.m[m].found ? 0 : 1;
+      }
+      mean_p[m] = mean(p);
+      mean_sims[m] = mean(sims);
+      med_s[m] = median(cpu);
+      std::printf("  %-11s %9.4f %8.4f %9d %12.0f %12.4f %10.4f %10.4f\n", kMethodNames[m], mean_p[m], standard_error(p), none,
+                  mean_sims[m], med_s[m], median(secs), mean(secs));
+      json += fmt("   \"%s\": {\"mean_success\": %s, \"standard_error\": %s, \"no_shot\": %d, \"mean_simulations\": %s, "
+                  "\"median_simulations\": %s, \"median_cpu_seconds\": %s, \"mean_cpu_seconds\": %s, \"median_seconds\": %s, "
+                  "\"mean_seconds\": %s}%s\n",
+                  kMethodNames[m], num(mean_p[m]).c_str(), num(standard_error(p)).c_str(), none, num(mean_sims[m]).c_str(),
+                  num(median(sims)).c_str(), num(med_s[m]).c_str(), num(mean(cpu)).c_str(), num(median(secs)).c_str(),
+                  num(mean(secs)).c_str(), m < 2 ? "," : "");
+    }
+    json += "  },\n";
+    // Paired differences and the goals.
+    std::vector<double> d_ex, d_gh;
+    int planner_better = 0, exhaustive_better = 0;
+    for (const SingleRecord& r : recs) {
+      d_ex.push_back(r.m[0].p - r.m[2].p);
+      d_gh.push_back(r.m[0].p - r.m[1].p);
+      planner_better += r.m[0].p > r.m[2].p + 0.05 ? 1 : 0;
+      exhaustive_better += r.m[2].p > r.m[0].p + 0.05 ? 1 : 0;
+    }
+    const double ratio = mean_p[2] > 0.0 ? mean_p[0] / mean_p[2] : 0.0;
+    const double sims_ratio = mean_sims[0] > 0.0 ? mean_sims[2] / mean_sims[0] : 0.0;
+    std::printf("  planner - exhaustive: %+.4f +- %.4f (paired); planner / exhaustive = %.3f (goal >= 0.98)\n", mean(d_ex),
+                standard_error(d_ex), ratio);
+    std::printf("  planner - ghost_ball: %+.4f +- %.4f (paired)\n", mean(d_gh), standard_error(d_gh));
+    std::printf("  exhaustive / planner simulations = %.1f (goal >= 50); planner median decision %.4f s CPU (goal < 0.1 s)\n", sims_ratio,
+                med_s[0]);
+    std::printf("  layouts where one beats the other by > 0.05: planner %d, exhaustive %d\n", planner_better, exhaustive_better);
+    json += fmt("  \"planner_minus_exhaustive\": %s, \"planner_minus_exhaustive_se\": %s, \"planner_minus_ghost_ball\": %s, "
+                "\"planner_minus_ghost_ball_se\": %s,\n",
+                num(mean(d_ex)).c_str(), num(standard_error(d_ex)).c_str(), num(mean(d_gh)).c_str(), num(standard_error(d_gh)).c_str());
+    json += fmt("  \"layouts_planner_better\": %d, \"layouts_exhaustive_better\": %d,\n", planner_better, exhaustive_better);
+    json += fmt("  \"goals\": {\"success_ratio\": %s, \"success_ratio_met\": %s, \"simulation_ratio\": %s, \"simulation_ratio_met\": %s, "
+                "\"above_ghost_ball\": %s, \"median_seconds_met\": %s},\n",
+                num(ratio).c_str(), ratio >= 0.98 ? "true" : "false", num(sims_ratio).c_str(), sims_ratio >= 50.0 ? "true" : "false",
+                mean(d_gh) > 2.0 * standard_error(d_gh) ? "true" : "false", med_s[0] < 0.1 ? "true" : "false");
+    json += "  \"per_layout\": [\n";
+    for (std::size_t k = 0; k < recs.size(); ++k) {
+      const SingleRecord& r = recs[k];
+      json += fmt("   {\"seed\": %llu, \"others\": %d, \"grid_cells\": %d, \"grid_simulated\": %d, \"grid_potting\": %d",
+                  static_cast<unsigned long long>(r.seed), r.others, r.grid.cells, r.grid.simulated, r.grid.potting);
+      for (int m = 0; m < 3; ++m)
+        json += fmt(", \"%s\": {\"p\": %s, \"simulations\": %d, \"seconds\": %s, \"cpu_seconds\": %s, \"shot\": %s, \"action\": %s}",
+                    kMethodNames[m], num(r.m[m].p).c_str(), r.m[m].simulations, num(r.m[m].seconds).c_str(), num(r.m[m].cpu_seconds).c_str(), quoted(r.m[m].what).c_str(),
+                    r.m[m].found ? action_json(r.m[m].action).c_str() : "null");
+      json += k + 1 < recs.size() ? "},\n" : "}\n";
+    }
+    json += "  ]\n }";
+    first_suite = false;
+  }
+  if (o.runout) {
+    const auto start = std::chrono::steady_clock::now();
+    std::vector<RackRecord> recs(static_cast<std::size_t>(o.racks));
+    parallel_for(o.racks, o.threads, [&](int k) {
+      recs[static_cast<std::size_t>(k)] = run_rack(st, o.seed + static_cast<std::uint64_t>(k), o.planner_simulations);
+    });
+    const double wall = seconds_since(start);
+    int stops[kStops] = {};
+    std::vector<double> potted, secs, cpu, shots, on_break;
+    long long sims = 0;
+    for (const RackRecord& r : recs) {
+      ++stops[static_cast<int>(r.stop)];
+      potted.push_back(r.potted);
+      shots.push_back(r.shots);
+      on_break.push_back(r.on_break);
+      secs.insert(secs.end(), r.decision_seconds.begin(), r.decision_seconds.end());
+      cpu.insert(cpu.end(), r.decision_cpu_seconds.begin(), r.decision_cpu_seconds.end());
+      sims += r.simulations;
+    }
+    const double fraction = static_cast<double>(stops[0]) / o.racks;
+    std::printf("\nrun-outs: %d racks (seeds %llu..%llu), %.1f s\n", o.racks, static_cast<unsigned long long>(o.seed),
+                static_cast<unsigned long long>(o.seed + static_cast<std::uint64_t>(o.racks) - 1), wall);
+    std::printf("  run out %.3f +- %.3f (goal >= 0.40); balls potted per rack %.2f (plus %.2f on the break); shots %.2f\n", fraction,
+                std::sqrt(fraction * (1.0 - fraction) / o.racks), mean(potted), mean(on_break), mean(shots));
+    std::printf("  median decision %.4f s CPU (%.4f s wall), %.0f simulations per decision\n", median(cpu), median(secs),
+                secs.empty() ? 0.0 : static_cast<double>(sims) / static_cast<double>(secs.size()));
+    std::printf("  ended by:");
+    for (int k = 0; k < kStops; ++k) std::printf(" %s %d%s", kStopNames[k], stops[k], k + 1 < kStops ? "," : "\n");
+    json += first_suite ? "" : ",\n";
+    json += " \"runout\": {\n";
+    json += fmt("  \"racks\": %d, \"wall_seconds\": %s, \"run_out_fraction\": %s, \"run_out_standard_error\": %s, "
+                "\"mean_balls_potted\": %s, \"mean_potted_on_break\": %s, \"mean_shots\": %s, \"median_decision_cpu_seconds\": %s, "
+                "\"median_decision_seconds\": %s, "
+                "\"mean_simulations_per_decision\": %s, \"goal_met\": %s,\n",
+                o.racks, num(wall).c_str(), num(fraction).c_str(), num(std::sqrt(fraction * (1.0 - fraction) / o.racks)).c_str(),
+                num(mean(potted)).c_str(), num(mean(on_break)).c_str(), num(mean(shots)).c_str(), num(median(cpu)).c_str(), num(median(secs)).c_str(),
+                num(secs.empty() ? 0.0 : static_cast<double>(sims) / static_cast<double>(secs.size())).c_str(),
+                fraction >= 0.4 ? "true" : "false");
+    json += "  \"ended_by\": {";
+    for (int k = 0; k < kStops; ++k) json += fmt("\"%s\": %d%s", kStopNames[k], stops[k], k + 1 < kStops ? ", " : "},\n");
+    json += "  \"per_rack\": [\n";
+    for (std::size_t k = 0; k < recs.size(); ++k) {
+      const RackRecord& r = recs[k];
+      json += fmt("   {\"seed\": %llu, \"on_break\": %d, \"potted\": %d, \"shots\": %d, \"ended_by\": \"%s\", \"detail\": %s}%s\n",
+                  static_cast<unsigned long long>(r.seed), r.on_break, r.potted, r.shots, kStopNames[static_cast<int>(r.stop)],
+                  quoted(r.detail).c_str(), k + 1 < recs.size() ? "," : "");
+    }
+    json += "  ]\n }";
+  }
+  json += "\n}\n";
+  if (!o.json.empty()) {
+    std::ofstream out(o.json);
+    if (!out) bad_flag("--json", o.json, "a writable file path");
+    out << json;
+  }
+  return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  const Options o = parse(argc, argv);
+  try {
+    return run(o);
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "cueball-planner-benchmark: error: %s\n", e.what());
+    return 1;
+  }
+}

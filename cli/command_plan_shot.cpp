@@ -3,12 +3,14 @@
 #include <cmath>
 #include <cstdio>
 #include <memory>
+#include <optional>
 #include <sstream>
 #include <string>
 #include <vector>
 
 #include "common.hpp"
 #include "cueball/errors.hpp"
+#include "cueball/position_play.hpp"
 #include "cueball/scenario.hpp"
 #include "cueball/shot_planner.hpp"
 #include "viewer_page.hpp"
@@ -29,7 +31,22 @@ struct PlanShotFlags {
   std::string html;
   SigmaFlags sigma;
   bool json = false;
+  bool position = false;
+  std::optional<int> next;        // none: the lowest id left
+  double next_simulations = kMinPlanSimulations;
 };
+
+nlohmann::ordered_json leave_json(const Leave& l, int next) {
+  nlohmann::ordered_json j;
+  j["next"] = next >= 0 ? nlohmann::ordered_json(next) : nlohmann::ordered_json(nullptr);
+  j["cue_ball"] = {l.cue_ball.x, l.cue_ball.y};
+  j["next_feasible"] = l.next_feasible;
+  j["next_success_probability"] = l.next_success_probability;
+  j["next_kind"] = l.next_kind.empty() ? nlohmann::ordered_json(nullptr) : nlohmann::ordered_json(l.next_kind);
+  j["next_pocket"] = l.next_pocket.empty() ? nlohmann::ordered_json(nullptr) : nlohmann::ordered_json(l.next_pocket);
+  j["score"] = l.score;
+  return j;
+}
 
 // The viewer page of the planned shot, noise-free, with its aim line and
 // ghost ball drawn (aim_overlay_json, viewer_page.hpp).
@@ -116,13 +133,29 @@ void run_plan_shot(const PlanShotFlags& f, std::ostream& out, std::ostream& err)
   }
   if (q.kinds.empty()) throw UsageError("--kinds = " + quote_input(f.kinds) + " names no kind; allowed: direct, bank");
 
+  if (!f.position && f.next) throw UsageError("--next = " + std::to_string(*f.next) + " needs --position");
+  check_flag("--next-simulations", f.next_simulations, kMinPlanSimulations, kMaxPlanSimulations,
+             "engine runs of each next-shot plan");
+  if (f.next_simulations != std::floor(f.next_simulations))
+    throw UsageError("--next-simulations = " + format_number(f.next_simulations) + " is not a whole number");
   ShotPlanResult plan;
+  PositionPlanResult position;
   try {
-    plan = plan_shot(s, q);
+    if (f.position) {
+      PositionRequest p;
+      p.shot = q;
+      p.next_target = f.next;
+      p.next_simulations = static_cast<int>(f.next_simulations);
+      position = plan_shot_for_position(s, p);
+      plan = position.plan;
+    } else {
+      plan = plan_shot(s, q);
+    }
   } catch (const InvalidArgument& e) {
-    // The library's "target = 4 ..." is the flag's "--ball = 4 ...".
+    // The library's "target = 4 ..." is the flag's "--ball = 4 ...", "next = ..." is "--next = ...".
     const std::string message = e.what();
     if (e.field() == "target" && message.rfind("target", 0) == 0) throw UsageError("--ball" + message.substr(6));
+    if (e.field() == "next" && message.rfind("next", 0) == 0) throw UsageError("--next" + message.substr(4));
     throw;
   }
   if (!f.scenario_out.empty())
@@ -131,10 +164,14 @@ void run_plan_shot(const PlanShotFlags& f, std::ostream& out, std::ostream& err)
   if (!f.html.empty()) write_plan_page(f.html, scenario_with_shot(s, plan.cue_ball, plan.shot, q.noise), plan.cue_ball);
   if (f.json) {
     nlohmann::ordered_json j = shot_json(s, plan.cue_ball, plan.shot, q.noise);
+    if (f.position) j["position"] = leave_json(position.leave, position.next_target);
     j["simulations"] = plan.simulations;
     j["seconds"] = plan.seconds;
     nlohmann::ordered_json alternatives = nlohmann::ordered_json::array();
-    for (const PlannedShot& a : plan.alternatives) alternatives.push_back(shot_json(s, plan.cue_ball, a, q.noise));
+    for (std::size_t k = 0; k < plan.alternatives.size(); ++k) {
+      alternatives.push_back(shot_json(s, plan.cue_ball, plan.alternatives[k], q.noise));
+      if (f.position) alternatives.back()["position"] = leave_json(position.alternative_leaves[k], position.next_target);
+    }
     j["alternatives"] = alternatives;
     j["rejected"] = plan.rejected;
     out << j.dump(2) << '\n';
@@ -154,11 +191,26 @@ void run_plan_shot(const PlanShotFlags& f, std::ostream& out, std::ostream& err)
       << "] deg, speed [" << fixed(b.speed_window[0], 2) << ", " << fixed(b.speed_window[1], 2) << "] m/s\n";
   out << "  robot      level cue: tip height " << fixed(b.robot.tip_height * 1000.0, 1) << " mm, cue speed "
       << fixed(b.robot.cue_speed, 3) << " m/s\n";
-  out << "  cost       " << plan.simulations << " simulations, " << fixed(plan.seconds, 3) << " s\n";
-  for (const PlannedShot& alt : plan.alternatives)
+  const auto leave_line = [&](const Leave& l) {
+    std::string line = "leaves the cue ball at (" + fixed(l.cue_ball.x, 3) + ", " + fixed(l.cue_ball.y, 3) + ")";
+    if (position.next_target < 0) return line + "; no ball left after this one";
+    line += ": ball " + std::to_string(position.next_target) + " next, ";
+    line += l.next_feasible ? "P = " + fixed(l.next_success_probability, 3) + " (" + l.next_kind + " into " +
+                                  l.next_pocket + ")"
+                            : "no feasible shot";
+    return line + "; P(both) = " + fixed(l.score, 3);
+  };
+  if (f.position) out << "  position   " << leave_line(position.leave) << "\n";
+  out << "  cost       " << plan.simulations << (f.position ? " simulations at most, " : " simulations, ")
+      << fixed(plan.seconds, 3) << " s\n";
+  for (std::size_t k = 0; k < plan.alternatives.size(); ++k) {
+    const PlannedShot& alt = plan.alternatives[k];
     out << "  also       " << describe(alt) << ": P = " << fixed(alt.success_probability, 3) << " +- "
         << fixed(alt.success_standard_error, 3) << " (" << alt.noisy_shots << " shots), aim "
-        << fixed(alt.strike.aim_deg, 3) << " deg, speed " << fixed(alt.strike.speed, 3) << " m/s\n";
+        << fixed(alt.strike.aim_deg, 3) << " deg, speed " << fixed(alt.strike.speed, 3) << " m/s, height "
+        << fixed(alt.strike.height, 2) << "\n";
+    if (f.position) out << "             " << leave_line(position.alternative_leaves[k]) << "\n";
+  }
   if (!f.scenario_out.empty()) out << "  scenario written to " << f.scenario_out << " (cueball simulate replays it)\n";
   if (!f.html.empty()) out << "  viewer written to " << f.html << " (the shot with its aim line and ghost ball)\n";
   (void)err;
@@ -194,6 +246,13 @@ Command add_plan_shot_command(CLI::App& app) {
   sub->add_option("--html", flags->html,
                   "Write the viewer page of the planned shot (noise-free) with the aim line and ghost ball");
   sub->add_flag("--json", flags->json, "Print one JSON object");
+  sub->add_flag("--position", flags->position,
+                "Play for position: among the shots that pot (centre ball, draw, follow), the one that leaves\n"
+                "the best next shot, scored P(this pot) x P(next pot) on the table each leaves");
+  sub->add_option("--next", flags->next, "With --position: id of the next ball (default: the lowest id left)");
+  sub->add_option("--next-simulations", flags->next_simulations,
+                  "With --position: engine runs of each next-shot plan, [500, 1e6]")
+      ->capture_default_str();
   return [flags](std::ostream& out, std::ostream& err) { run_plan_shot(*flags, out, err); };
 }
 

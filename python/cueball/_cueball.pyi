@@ -1012,13 +1012,18 @@ def plan_shot(
     simulations: _Int = 4000,
     side: _Float = 0.0,
     height: _Float | None = None,
+    position: bool = False,
+    next: _Int | None = None,
+    next_simulations: _Int = 500,
 ) -> dict[str, Any]:
     """The strike that pots ball `target` (cueball plan-shot): the dict of `plan-shot --json`
     (cue in degrees and ball radii, kind, pocket, success_probability and its standard error,
     aim_window_deg, speed_window m/s, robot, predicted, alternatives, rejected) and `scenario`,
     the Scenario with the planned cue. noise 'tournament', 'none', 'scenario' or a dict of sigmas
     as the scenario's "noise" (speed m/s, aim_deg, elevation_deg, side, height ball radii); raises
-    NoFeasibleShot when nothing pots. Releases the GIL."""
+    NoFeasibleShot when nothing pots. position=True plays for position (plan-shot --position):
+    each shot's dict gains `position` (next, cue_ball, next_feasible, next_success_probability,
+    next_kind, next_pocket, score). Releases the GIL."""
 
 def _time_run_scenario(scenario: _Scenario = None, repetitions: _Int = 100) -> float:
     """Benchmark hook: seconds per run of the library's run_scenario(), timed in C++."""

@@ -8,6 +8,7 @@
 
 #include "bindings.hpp"
 #include "cueball/errors.hpp"
+#include "cueball/position_play.hpp"
 #include "cueball/shot_planner.hpp"
 
 namespace cueball_python {
@@ -104,6 +105,18 @@ py::dict shot_dict(const Scenario& s, int cue_ball, const PlannedShot& shot, con
   return d;
 }
 
+py::dict leave_dict(const cueball::Leave& l, int next) {
+  py::dict d;
+  d["next"] = next >= 0 ? py::object(py::int_(next)) : py::object(py::none());
+  d["cue_ball"] = to_tuple(l.cue_ball);
+  d["next_feasible"] = l.next_feasible;
+  d["next_success_probability"] = l.next_success_probability;
+  d["next_kind"] = l.next_kind.empty() ? py::object(py::none()) : py::object(py::str(l.next_kind));
+  d["next_pocket"] = l.next_pocket.empty() ? py::object(py::none()) : py::object(py::str(l.next_pocket));
+  d["score"] = l.score;
+  return d;
+}
+
 }  // namespace
 
 void bind_shot_planner(py::module_& m) {
@@ -111,7 +124,8 @@ void bind_shot_planner(py::module_& m) {
       "plan_shot",
       [](const py::object& scenario, int target, std::optional<int> cue_ball, const py::object& pocket,
          const std::vector<std::string>& kinds, const py::object& noise, std::uint64_t seed, long long simulations,
-         double side, std::optional<double> height) {
+         double side, std::optional<double> height, bool position, std::optional<int> next,
+         long long next_simulations) {
         if (simulations < cueball::kMinPlanSimulations || simulations > cueball::kMaxPlanSimulations)
           throw cueball::InvalidArgument("simulations", static_cast<double>(simulations),
                                          "[" + std::to_string(cueball::kMinPlanSimulations) + ", " +
@@ -129,23 +143,46 @@ void bind_shot_planner(py::module_& m) {
         q.simulations = static_cast<int>(simulations);
         q.side = side;
         q.height = height;
+        if (!position && next)
+          throw cueball::InvalidArgument("next", "next = " + std::to_string(*next) + " needs position=True");
+        if (next_simulations < cueball::kMinPlanSimulations || next_simulations > cueball::kMaxPlanSimulations)
+          throw cueball::InvalidArgument("next_simulations", static_cast<double>(next_simulations),
+                                         "[" + std::to_string(cueball::kMinPlanSimulations) + ", " +
+                                             cueball::format_number(cueball::kMaxPlanSimulations) + "]",
+                                         "engine runs of each next-shot plan");
         cueball::ShotPlanResult plan;
+        cueball::PositionPlanResult played;
         {
           py::gil_scoped_release release;
-          plan = cueball::plan_shot(*s, q);
+          if (position) {
+            cueball::PositionRequest p;
+            p.shot = q;
+            p.next_target = next;
+            p.next_simulations = static_cast<int>(next_simulations);
+            played = cueball::plan_shot_for_position(*s, p);
+            plan = played.plan;
+          } else {
+            plan = cueball::plan_shot(*s, q);
+          }
         }
         py::dict out = shot_dict(*s, plan.cue_ball, plan.shot, q.noise);
+        if (position) out["position"] = leave_dict(played.leave, played.next_target);
         out["simulations"] = plan.simulations;
         out["seconds"] = plan.seconds;
         py::list alternatives;
-        for (const PlannedShot& a : plan.alternatives) alternatives.append(shot_dict(*s, plan.cue_ball, a, q.noise));
+        for (std::size_t k = 0; k < plan.alternatives.size(); ++k) {
+          py::dict a = shot_dict(*s, plan.cue_ball, plan.alternatives[k], q.noise);
+          if (position) a["position"] = leave_dict(played.alternative_leaves[k], played.next_target);
+          alternatives.append(a);
+        }
         out["alternatives"] = alternatives;
         out["rejected"] = plan.rejected;
         return out;
       },
       "scenario"_a, "target"_a, py::kw_only(), "cue_ball"_a = py::none(), "pocket"_a = "any",
       "kinds"_a = std::vector<std::string>{"direct", "bank"}, "noise"_a = "tournament", "seed"_a = 0,
-      "simulations"_a = 4000, "side"_a = 0.0, "height"_a = py::none(),
+      "simulations"_a = 4000, "side"_a = 0.0, "height"_a = py::none(), "position"_a = false, "next"_a = py::none(),
+      "next_simulations"_a = cueball::kMinPlanSimulations,
       "Plans the strike that pots ball `target` (cueball plan-shot, shot_planner.hpp): ghost-ball\n"
       "(direct) and mirror-point (one-cushion bank) geometry for a first aim, blocked paths and an\n"
       "obstructed cue skipped, the aim then solved on the exact simulation (throw, the cloth, the\n"
@@ -159,7 +196,12 @@ void bind_shot_planner(py::module_& m) {
       "of `cueball plan-shot --json` (cue in the scenario's units, kind, pocket, cushion,\n"
       "success_probability, success_standard_error, noisy_shots, aim_window_deg, speed_window (m/s),\n"
       "robot {tip_height m, cue_speed m/s}, predicted, simulations, seconds, alternatives, rejected)\n"
-      "and `scenario`, the Scenario with the planned cue (simulate() replays the plan). Raises\n"
+      "and `scenario`, the Scenario with the planned cue (simulate() replays the plan). position=True\n"
+      "plays for position (position_play.hpp; cueball plan-shot --position): the shots at centre ball,\n"
+      "draw and follow, the one played maximising P(pot) x P(next ball's pot) on the table it leaves;\n"
+      "next: the next ball's id (None: the lowest id left); next_simulations: each next plan's budget;\n"
+      "each shot's dict then has `position` (next, cue_ball, next_feasible, next_success_probability,\n"
+      "next_kind, next_pocket, score). Raises\n"
       "NoFeasibleShot when no candidate pots. Releases the GIL while planning.");
 }
 

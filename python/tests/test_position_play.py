@@ -1,0 +1,60 @@
+"""plan_shot(position=True) from Python: each shot's leave, the choice by score, the CLI's plan, errors."""
+
+import json
+import os
+import pathlib
+import subprocess
+import unittest
+
+import cueball
+
+CUT = pathlib.Path(__file__).resolve().parents[2] / "docs" / "example-cut-shot.json"
+
+
+class PositionPlayTest(unittest.TestCase):
+    @classmethod
+    def setUpClass(cls) -> None:
+        # Pot the 1 with the 9 next (the lowest id left after the 1).
+        cls.plan = cueball.plan_shot(CUT, 1, simulations=1000, position=True)
+
+    def test_every_shot_has_its_leave_and_the_best_score_is_played(self) -> None:
+        p = self.plan["position"]
+        self.assertEqual(p["next"], 9)
+        self.assertEqual(p["score"], self.plan["success_probability"] * p["next_success_probability"])
+        cue_end = [b["position"] for b in self.plan["predicted"] if b["id"] == 0][0]
+        self.assertEqual(tuple(p["cue_ball"]), tuple(cue_end))
+        for alt in self.plan["alternatives"]:
+            self.assertLessEqual(alt["position"]["score"], p["score"])
+        # The leave's next probability is that of a plan of the 9 on the table the shot leaves.
+        r = cueball.simulate(self.plan["scenario"])
+        ids = list(r.balls["id"])
+        left = {"table": "pool_9ft", "balls": [
+            {"id": int(i), "position": [float(x), float(y)]}
+            for i, (x, y), down in zip(ids, r.balls["position"], r.balls["pocketed"]) if not down]}
+        if p["next_feasible"]:
+            nxt = cueball.plan_shot(left, 9, cue_ball=0, simulations=500)
+            self.assertEqual(nxt["success_probability"], p["next_success_probability"])
+
+    def test_the_same_plan_as_the_cli(self) -> None:
+        binary = os.environ.get("CUEBALL_BIN")
+        if not binary:
+            self.skipTest("CUEBALL_BIN not set")
+        out = subprocess.run([binary, "plan-shot", str(CUT), "--ball", "1", "--simulations", "1000", "--position",
+                              "--json"], check=True, capture_output=True, text=True).stdout
+        cli = json.loads(out)
+        for key in ("kind", "pocket", "success_probability", "cue"):
+            self.assertEqual(cli[key], self.plan[key], key)
+        self.assertEqual(cli["position"]["score"], self.plan["position"]["score"])
+
+    def test_bad_input_names_the_argument(self) -> None:
+        for kwargs, field in (({"position": True, "next": 7}, "next"),
+                              ({"position": True, "next": 1}, "next"),
+                              ({"next": 9}, "next"),
+                              ({"position": True, "next_simulations": 10}, "next_simulations")):
+            with self.assertRaises(ValueError) as e:
+                cueball.plan_shot(CUT, 1, simulations=1000, **kwargs)
+            self.assertIn(field, str(e.exception))
+
+
+if __name__ == "__main__":
+    unittest.main()

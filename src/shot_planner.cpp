@@ -512,8 +512,8 @@ void geometric_candidates(const Scenario& s, const PlanRequest& q, std::size_t c
       }
       const double incidence = std::max(first.incidence_deg(O, X1), second.incidence_deg(X1, X2));
       if (incidence > kMaxIncidenceDeg) {
-        rejected.push_back(c.what + ": the object ball would meet a cushion at " +
-                           format_number(std::round(incidence)) + " deg from its normal (> 75)");
+        rejected.push_back(c.what + ": the object ball would meet the cushion at " +
+                           format_number(std::round(incidence)) + " deg from its normal (> 75), first or second bank");
         continue;
       }
       consider(c, {C, ghost(O, X1)}, {}, {O, X1, X2, P}, out);

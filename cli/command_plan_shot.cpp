@@ -162,13 +162,12 @@ Command add_plan_shot_command(CLI::App& app) {
       "plan-shot",
       "Plans the strike that pots ball --ball: ghost-ball (direct, combination) and mirror-point (bank\n"
       "off one or two cushions, kick) geometry for a first aim, blocked paths and an obstructed cue\n"
-      "skipped, the aim then corrected\n"
-      "on the exact simulation (throw, the cloth, the cushion), the aim and speed windows that still\n"
-      "pot found, and the success probability estimated from noisy simulations (--noise tournament:\n"
-      "sigma 0.125 deg aim, 0.1 deg elevation, 0.075 m/s speed, 0.5 mm tip). A pot needs the ball in\n"
-      "the intended pocket, the cue ball touching it first (a combination: the intermediate ball) and\n"
-      "not pocketed. The scenario's own cue\n"
-      "strike is ignored. --scenario-out writes the scenario with the planned cue (cueball simulate\n"
+      "skipped, the aim then corrected on the exact simulation (throw, the cloth, the cushions), the\n"
+      "aim and speed windows that still pot found, and the success probability estimated from noisy\n"
+      "simulations (--noise tournament: sigma 0.125 deg aim, 0.1 deg elevation, 0.075 m/s speed, 0.5\n"
+      "mm tip). A pot needs the ball in the intended pocket, the cue ball touching it first (for a\n"
+      "combination: the intermediate ball) and not pocketed. The scenario's own cue strike is\n"
+      "ignored. --scenario-out writes the scenario with the planned cue (cueball simulate\n"
       "replays it). Exit status 3 when no shot is feasible.");
   sub->add_option("scenario", flags->scenario, "Scenario JSON file (default: the built-in 9-ball break)");
   sub->add_option("--ball", flags->ball, "Id of the ball to pot")->required();

@@ -68,7 +68,10 @@ nlohmann::ordered_json shot_json(const Scenario& s, int cue_ball, const PlannedS
   j["cue"] = scenario["cue"];
   j["kind"] = to_string(shot.kind);
   j["pocket"] = shot.pocket_name;
-  if (shot.kind == ShotKind::bank) j["cushion"] = shot.cushion;
+  if (!shot.cushion.empty()) j["cushion"] = shot.cushion;
+  j["cushions"] = shot.cushions;
+  j["intermediate_ball"] = shot.intermediate_ball >= 0 ? nlohmann::ordered_json(shot.intermediate_ball)
+                                                       : nlohmann::ordered_json(nullptr);
   j["success_probability"] = shot.success_probability;
   j["success_standard_error"] = shot.success_standard_error;
   j["noisy_shots"] = shot.noisy_shots;
@@ -78,6 +81,7 @@ nlohmann::ordered_json shot_json(const Scenario& s, int cue_ball, const PlannedS
   j["ball_speed"] = shot.ball_speed;
   j["geometric_aim_deg"] = shot.geometric_aim_deg;
   j["cut_deg"] = shot.cut_deg;
+  if (shot.kind == ShotKind::combination) j["combination_cut_deg"] = shot.combination_cut_deg;
   nlohmann::ordered_json predicted = nlohmann::ordered_json::array();
   for (const PredictedBall& b : shot.predicted) {
     nlohmann::ordered_json p{{"id", b.id}, {"position", {b.position.x, b.position.y}}, {"pocketed", b.pocketed}};
@@ -91,8 +95,10 @@ nlohmann::ordered_json shot_json(const Scenario& s, int cue_ball, const PlannedS
 }
 
 std::string describe(const PlannedShot& shot) {
-  return std::string(to_string(shot.kind)) + (shot.kind == ShotKind::bank ? " off the " + shot.cushion : std::string()) +
-         " into " + shot.pocket_name;
+  std::string off;
+  for (const std::string& c : shot.cushions) off += (off.empty() ? " off the " : ", then the ") + c;
+  if (shot.intermediate_ball >= 0) off = " via ball " + std::to_string(shot.intermediate_ball);
+  return std::string(to_string(shot.kind)) + off + " into " + shot.pocket_name;
 }
 
 void run_plan_shot(const PlanShotFlags& f, std::ostream& out, std::ostream& err) {
@@ -126,12 +132,15 @@ void run_plan_shot(const PlanShotFlags& f, std::ostream& out, std::ostream& err)
   q.kinds.clear();
   std::stringstream kinds(f.kinds);
   for (std::string kind; std::getline(kinds, kind, ',');) {
-    if (kind == "direct") q.kinds.push_back(ShotKind::direct);
-    else if (kind == "bank") q.kinds.push_back(ShotKind::bank);
-    else throw UsageError("--kinds = " + quote_input(f.kinds) + ": " + quote_input(kind) +
-                          " is not a kind; allowed: a comma-separated list of direct, bank");
+    const std::optional<ShotKind> k = shot_kind_from_string(kind);
+    if (!k)
+      throw UsageError("--kinds = " + quote_input(f.kinds) + ": " + quote_input(kind) +
+                       " is not a kind; allowed: a comma-separated list of " + shot_kind_names());
+    q.kinds.push_back(*k);
   }
-  if (q.kinds.empty()) throw UsageError("--kinds = " + quote_input(f.kinds) + " names no kind; allowed: direct, bank");
+  if (q.kinds.empty())
+    throw UsageError("--kinds = " + quote_input(f.kinds) + " names no kind; allowed: a comma-separated list of " +
+                     shot_kind_names());
 
   if (!f.position && f.next) throw UsageError("--next = " + std::to_string(*f.next) + " needs --position");
   check_flag("--next-simulations", f.next_simulations, kMinPlanSimulations, kMaxPlanSimulations,
@@ -222,19 +231,23 @@ Command add_plan_shot_command(CLI::App& app) {
   auto flags = std::make_shared<PlanShotFlags>();
   CLI::App* sub = app.add_subcommand(
       "plan-shot",
-      "Plans the strike that pots ball --ball: ghost-ball (direct) and mirror-point (one-cushion bank)\n"
-      "geometry for a first aim, blocked paths and an obstructed cue skipped, the aim then corrected\n"
-      "on the exact simulation (throw, the cloth, the cushion), the aim and speed windows that still\n"
-      "pot found, and the success probability estimated from noisy simulations (--noise tournament:\n"
-      "sigma 0.125 deg aim, 0.1 deg elevation, 0.075 m/s speed, 0.5 mm tip). A pot needs the ball in\n"
-      "the intended pocket, the cue ball touching it first and not pocketed. The scenario's own cue\n"
-      "strike is ignored. --scenario-out writes the scenario with the planned cue (cueball simulate\n"
+      "Plans the strike that pots ball --ball: ghost-ball (direct, combination) and mirror-point (bank\n"
+      "off one or two cushions, kick) geometry for a first aim, blocked paths and an obstructed cue\n"
+      "skipped, the aim then corrected on the exact simulation (throw, the cloth, the cushions), the\n"
+      "aim and speed windows that still pot found, and the success probability estimated from noisy\n"
+      "simulations (--noise tournament: sigma 0.125 deg aim, 0.1 deg elevation, 0.075 m/s speed, 0.5\n"
+      "mm tip). A pot needs the ball in the intended pocket, the cue ball touching it first (for a\n"
+      "combination: the intermediate ball) and not pocketed. The scenario's own cue strike is\n"
+      "ignored. --scenario-out writes the scenario with the planned cue (cueball simulate\n"
       "replays it); --html the viewer page of the planned shot with its aim line and ghost ball. The\n"
-      "--sigma-* flags replace single sigmas of the --noise model. Exit status 3 when no shot is feasible.");
+      "--sigma-* flags replace single sigmas of the --noise model; --position plays for position.\n"
+      "Exit status 3 when no shot is feasible.");
   sub->add_option("scenario", flags->scenario, "Scenario JSON file (default: the built-in 9-ball break)");
   sub->add_option("--ball", flags->ball, "Id of the ball to pot")->required();
   sub->add_option("--pocket", flags->pocket, "Pocket name (e.g. top-right), or any")->capture_default_str();
-  sub->add_option("--kinds", flags->kinds, "Kinds of shot to consider: direct, bank (comma-separated)")
+  sub->add_option("--kinds", flags->kinds,
+                  "Kinds of shot to consider, comma-separated: direct, bank (off one or two cushions), kick (the "
+                  "cue ball off a cushion first), combination (the cue ball sends another ball into the target)")
       ->capture_default_str();
   sub->add_option("--noise", flags->noise, "Execution noise: tournament, none, or scenario (the scenario's \"noise\")")
       ->capture_default_str();

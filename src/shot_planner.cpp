@@ -1,8 +1,8 @@
 // The shot planner: ghost-ball and mirror geometry, corrected on the exact
 // simulation, scored under execution noise; see shot_planner.hpp.
 //
-// Sources: ghost-ball aiming and the mirror system of banks (D. G. Alciatore,
-// "The Illustrated Principles of Pool and Billiards", 2004); the secant
+// Sources: ghost-ball aiming and the mirror systems of banks and kicks (D. G.
+// Alciatore, "The Illustrated Principles of Pool and Billiards", 2004); the secant
 // method with a bisection fallback once the root is bracketed (the safeguard
 // of Dekker's method: R. P. Brent, "Algorithms for Minimization without
 // Derivatives", 1973, ch. 4); the tournament noise of Archibald et al. 2010.
@@ -14,6 +14,7 @@
 #include <limits>
 #include <numbers>
 #include <string>
+#include <string_view>
 #include <utility>
 
 #include "cueball/errors.hpp"
@@ -65,13 +66,17 @@ std::size_t index_of(const std::vector<SimulationBall>& balls, int id) {
 // One candidate as geometry describes it.
 struct Candidate {
   ShotKind kind = ShotKind::direct;
+  std::string what;         // "bank off <cushion>, then <cushion> into <pocket>", ...
   std::size_t pocket = 0;
-  std::size_t cushion = 0;  // bank only
-  Vec2 ghost;               // cue ball centre at contact
+  std::vector<std::size_t> cushions;  // bank: the object ball's, in order; kick: the cue ball's
+  std::size_t first_ball = 0;         // index of the ball the cue ball must meet first
+  std::optional<std::size_t> intermediate;  // combination: index of ball A
   Vec2 last_leg;            // unit direction of the object ball's last leg into the pocket
   double aim_deg = 0.0;
-  double cut_deg = 0.0;
+  double cut_deg = 0.0;     // the cue ball's cut on first_ball
+  double combination_cut_deg = 0.0;  // A's cut on the target
   double cue_path = 0.0;    // m
+  double middle_path = 0.0; // A's path to the target, m
   double object_path = 0.0; // m
   double ease = 0.0;        // order of the search: larger first
 };
@@ -80,7 +85,7 @@ struct Candidate {
 struct Trial {
   bool simulated = false;
   bool success = false;
-  bool touched = false;     // the cue ball's first contact is the target
+  bool touched = false;     // the cue ball's first contact is the intended ball (the target, or A)
   bool short_of_pocket = false;
   double lateral = kNaN;    // signed miss of the pocket centre across the last leg, m
   SimulationResult result;
@@ -96,7 +101,9 @@ class Planner {
 
   int runs() const { return runs_; }
 
-  Trial play(const ShotAction& a, std::size_t pocket, Vec2 last_leg) {
+  Trial play(const ShotAction& a, const Candidate& c) {
+    const std::size_t pocket = c.pocket;
+    const Vec2 last_leg = c.last_leg;
     if (runs_ >= most_runs_) throw BudgetSpent{};
     ++runs_;
     Trial t;
@@ -111,9 +118,14 @@ class Planner {
     t.simulated = true;
     ShotOutcome o;
     outcome_from_result(t.result, s_.balls[cue_].id, o);
-    t.touched = o.first_contact == s_.balls[target_].id;
+    t.touched = o.first_contact == s_.balls[c.first_ball].id;
     t.success = t.touched && o.pocket[target_] == static_cast<int>(pocket) && !o.pocketed[cue_];
     if (!t.touched) return t;
+    // A combination's A that missed the target: no miss to measure.
+    const BallTrajectory& moved = t.result.balls[target_];
+    if (!moved.pocketed && moved.final_state.position.x == s_.balls[target_].state.position.x &&
+        moved.final_state.position.y == s_.balls[target_].state.position.y)
+      return t;
     // The target's closest approach to the pocket's centre, over its exact
     // trajectory: each segment sampled, the best sample refined by golden
     // section (the distance is smooth within a segment).
@@ -164,7 +176,7 @@ class Planner {
     double best_miss = std::numeric_limits<double>::infinity();
     const auto run = [&](double x, double& f) {
       a.aim_deg = x;
-      const Trial t = play(a, c.pocket, c.last_leg);
+      const Trial t = play(a, c);
       short_of_pocket = t.short_of_pocket;
       f = t.lateral;
       if (t.success && std::abs(f) < best_miss) best = x, best_miss = std::abs(f);
@@ -210,7 +222,7 @@ class Planner {
       double x = in + direction * step;
       if ((x - limit) * direction >= 0.0) x = limit;
       set(a, x);
-      if (!play(a, c.pocket, c.last_leg).success) {
+      if (!play(a, c).success) {
         out = x;
         break;
       }
@@ -222,7 +234,7 @@ class Planner {
     while (std::abs(out - in) > tol) {
       const double mid = 0.5 * (in + out);
       set(a, mid);
-      if (play(a, c.pocket, c.last_leg).success) in = mid;
+      if (play(a, c).success) in = mid;
       else out = mid;
     }
     return in;
@@ -255,6 +267,38 @@ std::optional<double> clearing_elevation(const Scenario& s, std::size_t cue, dou
   return std::nullopt;
 }
 
+// A cushion's line: where the centre of a ball touching the cushion is (the
+// nose line moved in by the contact distance, header comment).
+struct CushionLine {
+  Vec2 start, along;  // along: unit, start -> end
+  double length = 0.0;
+  Vec2 normal;        // into the table
+  double contact = 0.0;
+  CushionLine(const CushionSegment& seg, double R)
+      : start(seg.start), along((seg.end - seg.start) / norm(seg.end - seg.start)), length(norm(seg.end - seg.start)),
+        normal(inward_normal(seg)), contact(cushion_contact_distance(seg.contact_height, R)) {}
+  // Positive on the table's side of the line.
+  double signed_distance(Vec2 x) const { return dot(x - start, normal) - contact; }
+  Vec2 mirror(Vec2 x) const { return x - 2.0 * signed_distance(x) * normal; }
+  // Where a -> b crosses the line (a on the table's side, b beyond it).
+  Vec2 crossing(Vec2 a, Vec2 b) const {
+    const double sa = signed_distance(a), sb = signed_distance(b);
+    return a + sa / (sa - sb) * (b - a);
+  }
+  // A point of the line that is on the cushion, 3R clear of its ends.
+  bool on_cushion(Vec2 x, double R) const {
+    const double foot = dot(x - start, along);
+    return foot >= 3.0 * R && foot <= length - 3.0 * R;
+  }
+  // Degrees from the normal at which a ball coming from `from` meets the line at x.
+  double incidence_deg(Vec2 from, Vec2 x) const {
+    return std::acos(std::clamp(dot((from - x) / norm(from - x), normal), -1.0, 1.0)) / kDegree;
+  }
+};
+
+// The largest angle from its normal at which a ball may be sent into a cushion, degrees.
+constexpr double kMaxIncidenceDeg = 75.0;
+
 // Candidates of one kind for one pocket, with the reasons others were dropped.
 void geometric_candidates(const Scenario& s, const PlanRequest& q, std::size_t cue, std::size_t target,
                           std::size_t pocket, ShotKind kind, std::vector<Candidate>& out,
@@ -265,48 +309,84 @@ void geometric_candidates(const Scenario& s, const PlanRequest& q, std::size_t c
   const Vec2 O = s.balls[target].state.position;
   const Vec2 P = table.pockets[pocket].centre;
   const std::string pocket_name = table.pockets[pocket].name;
-  // The first ball (other than the cue ball and the target) whose centre is
-  // within 2R of the path a -> b, or "".
-  const auto blocker = [&](Vec2 a, Vec2 b) -> std::string {
+  const auto unit = [](Vec2 v) { return v / norm(v); };
+  const auto angle_between_deg = [](Vec2 a, Vec2 b) {
+    return std::acos(std::clamp(dot(a, b), -1.0, 1.0)) / kDegree;
+  };
+  const auto cut_text = [](double deg) {
+    return format_number(std::round(deg * 10) / 10) + " deg > " + format_number(kMaxCutDeg) + " deg";
+  };
+  // The first ball (other than the cue ball, the target and `also`) whose
+  // centre is within 2R of the path a -> b, or "".
+  const auto blocker = [&](Vec2 a, Vec2 b, std::optional<std::size_t> also) -> std::string {
     for (std::size_t i = 0; i < s.balls.size(); ++i) {
-      if (i == cue || i == target) continue;
+      if (i == cue || i == target || (also && i == *also)) continue;
       if (distance_to_path(s.balls[i].state.position, a, b) < 2.0 * R) return "ball " + std::to_string(s.balls[i].id);
     }
     return {};
   };
-  // Legs of the object ball: O -> P, or O -> X -> P.
-  const auto consider = [&](Candidate c, const std::string& what, const std::vector<Vec2>& legs) {
-    const Vec2 first = (legs[1] - legs[0]) / norm(legs[1] - legs[0]);
-    c.ghost = O - 2.0 * R * first;
-    const Vec2 to_ghost = c.ghost - C;
-    const double cue_path = norm(to_ghost);
-    if (cue_path < 1e-9) {
-      rejected.push_back(what + ": the cue ball is on the ghost ball");
-      return;
-    }
-    const Vec2 w = to_ghost / cue_path;
-    c.cut_deg = std::acos(std::clamp(dot(w, first), -1.0, 1.0)) / kDegree;
+  const auto length = [](const std::vector<Vec2>& legs) {
+    double l = 0.0;
+    for (std::size_t i = 0; i + 1 < legs.size(); ++i) l += norm(legs[i + 1] - legs[i]);
+    return l;
+  };
+  // The legs of the cue ball (C -> ... -> its ghost ball of c.first_ball), of
+  // A (combination: A -> the target's ghost ball) and of the target (O ->
+  // ... -> P): checked, and pushed to `into` when clear.
+  const auto consider = [&](Candidate c, const std::vector<Vec2>& cue_legs, const std::vector<Vec2>& middle_legs,
+                            const std::vector<Vec2>& object_legs, std::vector<Candidate>& into) {
+    const std::string& what = c.what;
+    for (std::size_t i = 0; i + 1 < cue_legs.size(); ++i)
+      if (norm(cue_legs[i + 1] - cue_legs[i]) < 1e-9) {
+        rejected.push_back(what + ": the cue ball is on the ghost ball");
+        return;
+      }
+    const std::vector<Vec2>& first_ball_legs = middle_legs.empty() ? object_legs : middle_legs;
+    const Vec2 first = unit(first_ball_legs[1] - first_ball_legs[0]);
+    const Vec2 w = unit(cue_legs.back() - cue_legs[cue_legs.size() - 2]);
+    c.cut_deg = angle_between_deg(w, first);
     if (c.cut_deg > kMaxCutDeg) {
-      rejected.push_back(what + ": cut " + format_number(std::round(c.cut_deg * 10) / 10) + " deg > " +
-                         format_number(kMaxCutDeg) + " deg");
+      rejected.push_back(what + ": cut " + cut_text(c.cut_deg));
       return;
     }
-    if (const std::string b = blocker(C, c.ghost); !b.empty()) {
-      rejected.push_back(what + ": the cue ball's path is blocked by " + b);
-      return;
-    }
-    for (std::size_t i = 0; i + 1 < legs.size(); ++i) {
-      const std::string b = blocker(legs[i], legs[i + 1]);
-      if (!b.empty()) {
-        rejected.push_back(what + ": the object ball's path is blocked by " + b);
+    if (!middle_legs.empty()) {
+      c.combination_cut_deg = angle_between_deg(unit(middle_legs.back() - middle_legs[middle_legs.size() - 2]),
+                                                unit(object_legs[1] - object_legs[0]));
+      if (c.combination_cut_deg > kMaxCutDeg) {
+        rejected.push_back(what + ": cut of ball " + std::to_string(s.balls[*c.intermediate].id) + " on the target " +
+                           cut_text(c.combination_cut_deg));
         return;
       }
     }
-    c.aim_deg = angle_deg(w);
-    c.cue_path = cue_path;
-    c.object_path = 0.0;
-    for (std::size_t i = 0; i + 1 < legs.size(); ++i) c.object_path += norm(legs[i + 1] - legs[i]);
-    c.last_leg = (legs.back() - legs[legs.size() - 2]) / norm(legs.back() - legs[legs.size() - 2]);
+    for (std::size_t i = 0; i + 1 < cue_legs.size(); ++i) {
+      if (const std::string b = blocker(cue_legs[i], cue_legs[i + 1], c.intermediate); !b.empty()) {
+        rejected.push_back(what + ": the cue ball's path is blocked by " + b);
+        return;
+      }
+      // The cue ball must not meet the target first (a combination's
+      // target, a kick's target before the cushion).
+      const bool last = i + 2 == cue_legs.size();
+      if ((c.intermediate || !last) &&
+          distance_to_path(O, cue_legs[i], cue_legs[i + 1]) < 2.0 * R) {
+        rejected.push_back(what + ": the cue ball's path is blocked by the target");
+        return;
+      }
+    }
+    for (std::size_t i = 0; i + 1 < middle_legs.size(); ++i)
+      if (const std::string b = blocker(middle_legs[i], middle_legs[i + 1], c.intermediate); !b.empty()) {
+        rejected.push_back(what + ": ball " + std::to_string(s.balls[*c.intermediate].id) + "'s path is blocked by " + b);
+        return;
+      }
+    for (std::size_t i = 0; i + 1 < object_legs.size(); ++i)
+      if (const std::string b = blocker(object_legs[i], object_legs[i + 1], c.intermediate); !b.empty()) {
+        rejected.push_back(what + ": the object ball's path is blocked by " + b);
+        return;
+      }
+    c.aim_deg = angle_deg(cue_legs[1] - cue_legs[0]);
+    c.cue_path = length(cue_legs);
+    c.middle_path = length(middle_legs);
+    c.object_path = length(object_legs);
+    c.last_leg = unit(object_legs.back() - object_legs[object_legs.size() - 2]);
     // The cue must reach the ball (at some tip height tried).
     bool clear = false;
     for (double height : tip_heights(q))
@@ -316,51 +396,155 @@ void geometric_candidates(const Scenario& s, const PlanRequest& q, std::size_t c
                          format_number(kMaxPlanElevationDeg) + " deg");
       return;
     }
-    c.ease = std::cos(c.cut_deg * kDegree) / (c.cue_path + c.object_path) * (c.kind == ShotKind::bank ? 0.5 : 1.0);
-    out.push_back(c);
+    // Each cushion halves the ease, a combination's second collision more.
+    double factor = 1.0;
+    if (c.kind == ShotKind::bank || c.kind == ShotKind::kick) factor = std::pow(0.5, static_cast<double>(c.cushions.size()));
+    if (c.kind == ShotKind::combination) factor = 0.35 * std::cos(c.combination_cut_deg * kDegree);
+    c.ease = std::cos(c.cut_deg * kDegree) / (c.cue_path + c.middle_path + c.object_path) * factor;
+    into.push_back(c);
   };
+  // The cue ball's ghost ball for a ball at b sent towards `towards`.
+  const auto ghost = [&](Vec2 b, Vec2 towards) { return b - 2.0 * R * unit(towards - b); };
 
   Candidate base;
   base.kind = kind;
   base.pocket = pocket;
+  base.first_ball = target;
+  // The cushions a ball may be banked or kicked off (not the pocket facings
+  // and short pieces).
+  std::vector<std::size_t> rails;
+  for (std::size_t k = 0; k < table.cushions.size(); ++k)
+    if (norm(table.cushions[k].end - table.cushions[k].start) >= 8.0 * R) rails.push_back(k);
+
   if (kind == ShotKind::direct) {
-    consider(base, "direct into " + pocket_name, {O, P});
+    base.what = "direct into " + pocket_name;
+    consider(base, {C, ghost(O, P)}, {}, {O, P}, out);
     return;
   }
-  for (std::size_t k = 0; k < table.cushions.size(); ++k) {
-    const CushionSegment& seg = table.cushions[k];
-    const Vec2 along = seg.end - seg.start;
-    const double len = norm(along);
-    if (len < 8.0 * R) continue;  // pocket facings and short pieces
-    const std::string what = "bank off " + cushion_name(table, k) + " into " + pocket_name;
-    const Vec2 n = inward_normal(seg);
-    const double dc = cushion_contact_distance(seg.contact_height, R);
-    const auto sd = [&](Vec2 x) { return dot(x - seg.start, n) - dc; };
-    const double sp = sd(P), so = sd(O);
+  if (kind == ShotKind::kick) {
+    const Vec2 G = ghost(O, P);
+    for (std::size_t k : rails) {
+      const CushionLine line(table.cushions[k], R);
+      if (line.signed_distance(C) <= 0.0 || line.signed_distance(G) <= 0.0) continue;
+      Candidate c = base;
+      c.cushions = {k};
+      c.what = "kick off " + cushion_name(table, k) + " into " + pocket_name;
+      const Vec2 Y = line.crossing(C, line.mirror(G));
+      if (!line.on_cushion(Y, R)) {
+        rejected.push_back(c.what + ": the cue ball's bank point is not on the cushion");
+        continue;
+      }
+      if (const double incidence = line.incidence_deg(C, Y); incidence > kMaxIncidenceDeg) {
+        rejected.push_back(c.what + ": the cue ball would meet the cushion at " + format_number(std::round(incidence)) +
+                           " deg from its normal (> 75)");
+        continue;
+      }
+      consider(c, {C, Y, G}, {}, {O, P}, out);
+    }
+    return;
+  }
+  if (kind == ShotKind::combination) {
+    const Vec2 GT = ghost(O, P);
+    std::vector<Candidate> combinations;
+    for (std::size_t i = 0; i < s.balls.size(); ++i) {
+      if (i == cue || i == target) continue;
+      const Vec2 A = s.balls[i].state.position;
+      if (norm(GT - A) < 1e-9) continue;
+      Candidate c = base;
+      c.first_ball = i;
+      c.intermediate = i;
+      c.what = "combination via ball " + std::to_string(s.balls[i].id) + " into " + pocket_name;
+      consider(c, {C, ghost(A, GT)}, {A, GT}, {O, P}, combinations);
+    }
+    // The few with the smallest combined cut.
+    std::stable_sort(combinations.begin(), combinations.end(), [](const Candidate& a, const Candidate& b) {
+      return a.cut_deg + a.combination_cut_deg < b.cut_deg + b.combination_cut_deg;
+    });
+    for (std::size_t i = 0; i < combinations.size(); ++i) {
+      if (i < kMaxCombinationBalls) out.push_back(combinations[i]);
+      else
+        rejected.push_back(combinations[i].what + ": not among the " + std::to_string(kMaxCombinationBalls) +
+                           " with the smallest combined cut");
+    }
+    return;
+  }
+  // Banks: off one cushion, then off two.
+  for (std::size_t k : rails) {
+    const CushionLine line(table.cushions[k], R);
+    const double sp = line.signed_distance(P), so = line.signed_distance(O);
     if (sp < 4.0 * R || so <= 0.0) continue;  // the pocket is on this cushion's rail
-    const Vec2 mirror = P - 2.0 * sp * n;
-    const double t = so / (so + sp);
-    const Vec2 X = O + t * (mirror - O);
-    const double foot = dot(X - seg.start, along) / len;
-    if (foot < 3.0 * R || foot > len - 3.0 * R) {
-      rejected.push_back(what + ": the bank point is not on the cushion");
+    Candidate c = base;
+    c.cushions = {k};
+    c.what = "bank off " + cushion_name(table, k) + " into " + pocket_name;
+    const Vec2 X = line.crossing(O, line.mirror(P));
+    if (!line.on_cushion(X, R)) {
+      rejected.push_back(c.what + ": the bank point is not on the cushion");
       continue;
     }
-    const double incidence = std::acos(std::clamp(dot((O - X) / norm(O - X), n), -1.0, 1.0)) / kDegree;
-    if (incidence > 75.0) {
-      rejected.push_back(what + ": the object ball would meet the cushion at " +
+    if (const double incidence = line.incidence_deg(O, X); incidence > kMaxIncidenceDeg) {
+      rejected.push_back(c.what + ": the object ball would meet the cushion at " +
                          format_number(std::round(incidence)) + " deg from its normal (> 75)");
       continue;
     }
-    Candidate c = base;
-    c.cushion = k;
-    consider(c, what, {O, X, P});
+    consider(c, {C, ghost(O, X)}, {}, {O, X, P}, out);
+  }
+  for (std::size_t k1 : rails) {
+    const CushionLine first(table.cushions[k1], R);
+    for (std::size_t k2 : rails) {
+      const CushionLine second(table.cushions[k2], R);
+      // Two pieces of one rail (either side of a side pocket) are one line.
+      if (k1 == k2 || dot(first.normal, second.normal) > 0.99) continue;
+      // P1, P mirrored in the second line; P2, P1 in the first.
+      if (second.signed_distance(P) < 4.0 * R) continue;  // the pocket is on the second cushion's rail
+      const Vec2 P1 = second.mirror(P);
+      if (first.signed_distance(O) <= 0.0 || first.signed_distance(P1) <= 0.0 || second.signed_distance(O) <= 0.0)
+        continue;
+      const Vec2 X1 = first.crossing(O, first.mirror(P1));
+      if (second.signed_distance(X1) <= 0.0) continue;  // the second line would come first
+      const Vec2 X2 = second.crossing(X1, P1);
+      if (first.signed_distance(X2) <= 0.0) continue;
+      Candidate c = base;
+      c.cushions = {k1, k2};
+      c.what = "bank off " + cushion_name(table, k1) + ", then " + cushion_name(table, k2) + " into " + pocket_name;
+      if (!first.on_cushion(X1, R) || !second.on_cushion(X2, R)) {
+        rejected.push_back(c.what + ": a bank point is not on its cushion");
+        continue;
+      }
+      const double incidence = std::max(first.incidence_deg(O, X1), second.incidence_deg(X1, X2));
+      if (incidence > kMaxIncidenceDeg) {
+        rejected.push_back(c.what + ": the object ball would meet the cushion at " +
+                           format_number(std::round(incidence)) + " deg from its normal (> 75), first or second bank");
+        continue;
+      }
+      consider(c, {C, ghost(O, X1)}, {}, {O, X1, X2, P}, out);
+    }
   }
 }
 
 }  // namespace
 
-const char* to_string(ShotKind kind) { return kind == ShotKind::direct ? "direct" : "bank"; }
+const char* to_string(ShotKind kind) {
+  switch (kind) {
+    case ShotKind::direct: return "direct";
+    case ShotKind::bank: return "bank";
+    case ShotKind::kick: return "kick";
+    case ShotKind::combination: return "combination";
+  }
+  return "direct";
+}
+
+std::optional<ShotKind> shot_kind_from_string(std::string_view name) {
+  for (ShotKind kind : kShotKinds)
+    if (name == to_string(kind)) return kind;
+  return std::nullopt;
+}
+
+std::string shot_kind_names(std::string_view quote) {
+  std::string names;
+  for (ShotKind kind : kShotKinds)
+    names += (names.empty() ? "" : ", ") + std::string(quote) + to_string(kind) + std::string(quote);
+  return names;
+}
 
 CueStrikeNoise tournament_noise() {
   CueStrikeNoise n;
@@ -451,7 +635,7 @@ ShotPlanResult plan_shot(const Scenario& table_state, const PlanRequest& q) {
   if (q.pocket && (*q.pocket < 0 || static_cast<std::size_t>(*q.pocket) >= s.table.pockets.size()))
     throw InvalidArgument("pocket", static_cast<double>(*q.pocket),
                           "[0, " + std::to_string(s.table.pockets.size() - 1) + "]", "index into the table's pockets");
-  if (q.kinds.empty()) throw InvalidArgument("kinds", "kinds is empty; give direct, bank or both");
+  if (q.kinds.empty()) throw InvalidArgument("kinds", "kinds is empty; give one or more of " + shot_kind_names());
   if (q.simulations < kMinPlanSimulations || q.simulations > kMaxPlanSimulations)
     throw InvalidArgument("simulations", static_cast<double>(q.simulations),
                           "[" + std::to_string(kMinPlanSimulations) + ", " + std::to_string(kMaxPlanSimulations) + "]",
@@ -475,7 +659,7 @@ ShotPlanResult plan_shot(const Scenario& table_state, const PlanRequest& q) {
   std::vector<Candidate> candidates;
   for (std::size_t k = 0; k < s.table.pockets.size(); ++k) {
     if (q.pocket && static_cast<std::size_t>(*q.pocket) != k) continue;
-    for (ShotKind kind : {ShotKind::direct, ShotKind::bank})
+    for (ShotKind kind : kShotKinds)
       if (std::find(q.kinds.begin(), q.kinds.end(), kind) != q.kinds.end())
         geometric_candidates(s, q, cue, target, k, kind, candidates, result.rejected);
   }
@@ -494,12 +678,19 @@ ShotPlanResult plan_shot(const Scenario& table_state, const PlanRequest& q) {
   // speed chosen; nullopt and `why` when it does not pot.
   const auto search = [&](const Candidate& c, double height, std::string& why) -> std::optional<PlannedShot> {
     // First speed: the object ball arriving at about kArrivalSpeed, rolling
-    // (5/7 of its speed kept after sliding), 95 % of the cue ball's speed
-    // along the line of centres passed on, a bank losing a quarter.
-    const double v_object = 1.4 * std::sqrt(kArrivalSpeed * kArrivalSpeed + 2.0 * roll * c.object_path) /
-                            (c.kind == ShotKind::bank ? 0.75 : 1.0);
+    // (5/7 of its speed kept after sliding), 95 % of the striking ball's
+    // speed along the line of centres passed on, each cushion losing a
+    // quarter (the object ball's of a bank, the cue ball's of a kick); a
+    // combination's ball A is the target's striking ball.
+    const double object_cushions = c.kind == ShotKind::bank ? static_cast<double>(c.cushions.size()) : 0.0;
+    double v_object = 1.4 * std::sqrt(kArrivalSpeed * kArrivalSpeed + 2.0 * roll * c.object_path) /
+                      std::pow(0.75, object_cushions);
+    if (c.kind == ShotKind::combination) {
+      const double v_middle = v_object / (0.95 * std::cos(c.combination_cut_deg * kDegree));
+      v_object = 1.4 * std::sqrt(v_middle * v_middle + 2.0 * roll * c.middle_path);
+    }
     const double v_cue = v_object / (0.95 * std::cos(c.cut_deg * kDegree));
-    const double v0 = 1.2 * std::sqrt(v_cue * v_cue + 2.0 * roll * c.cue_path);
+    const double v0 = 1.2 * std::sqrt(v_cue * v_cue + 2.0 * roll * c.cue_path) / (c.kind == ShotKind::kick ? 0.75 : 1.0);
     const double cue_speed_of = level_cue_speed(v0, height * R, ball, s.cue_parameters);
     const std::optional<double> elevation = clearing_elevation(s, cue, c.aim_deg, q.side, height);
     if (!elevation) {
@@ -542,9 +733,12 @@ ShotPlanResult plan_shot(const Scenario& table_state, const PlanRequest& q) {
     shot.kind = c.kind;
     shot.pocket = static_cast<int>(c.pocket);
     shot.pocket_name = s.table.pockets[c.pocket].name;
-    if (c.kind == ShotKind::bank) shot.cushion = cushion_name(s.table, c.cushion);
+    for (std::size_t k : c.cushions) shot.cushions.push_back(cushion_name(s.table, k));
+    if (!shot.cushions.empty()) shot.cushion = shot.cushions.front();
+    if (c.intermediate) shot.intermediate_ball = s.balls[*c.intermediate].id;
     shot.geometric_aim_deg = c.aim_deg;
     shot.cut_deg = c.cut_deg;
+    shot.combination_cut_deg = c.combination_cut_deg;
     shot.aim_window_deg = {planner.window_edge(a, c, a.aim_deg, -1.0, 0.1, kAimWindowTolDeg, a.aim_deg - 20.0, set_aim),
                            planner.window_edge(a, c, a.aim_deg, +1.0, 0.1, kAimWindowTolDeg, a.aim_deg + 20.0, set_aim)};
     // The window's middle: the most aim noise it can take either way.
@@ -556,7 +750,7 @@ ShotPlanResult plan_shot(const Scenario& table_state, const PlanRequest& q) {
       why = "the cue is obstructed at the corrected aim";
       return std::nullopt;
     }
-    const Trial final_trial = planner.play(a, c.pocket, c.last_leg);
+    const Trial final_trial = planner.play(a, c);
     if (!final_trial.success) {
       why = "the corrected strike does not pot it";
       return std::nullopt;
@@ -575,9 +769,7 @@ ShotPlanResult plan_shot(const Scenario& table_state, const PlanRequest& q) {
   // Centre ball first; a scratch or a miss there tries draw, then follow.
   const std::vector<double> heights = tip_heights(q);
   for (const Candidate& c : candidates) {
-    const std::string what = std::string(to_string(c.kind)) +
-                             (c.kind == ShotKind::bank ? " off " + cushion_name(s.table, c.cushion) : std::string()) +
-                             " into " + s.table.pockets[c.pocket].name;
+    const std::string& what = c.what;
     if (planner.runs() > 0 && planner.runs() + kCandidateRuns > search_budget) {
       result.rejected.push_back(what + ": not searched (the simulation budget is spent)");
       continue;
@@ -630,6 +822,7 @@ ShotPlanResult plan_shot(const Scenario& table_state, const PlanRequest& q) {
   noisy.cue->ball = cue_id;
   noisy.noise = q.noise;
   const auto successes = [&](const PlannedShot& shot, int shots, std::uint64_t first_shot) {
+    const int first_contact = shot.intermediate_ball >= 0 ? shot.intermediate_ball : q.target;
     const std::vector<ShotAction> actions(static_cast<std::size_t>(shots), shot.strike);
     ManyOptions options;
     options.seed = q.seed;
@@ -639,7 +832,7 @@ ShotPlanResult plan_shot(const Scenario& table_state, const PlanRequest& q) {
     const auto n = static_cast<std::size_t>(m.balls);
     int hits = 0;
     for (std::size_t k = 0; k < static_cast<std::size_t>(m.shots); ++k)
-      hits += !m.miscue[k] && !m.failure[k] && m.first_contact[k] == q.target &&
+      hits += !m.miscue[k] && !m.failure[k] && m.first_contact[k] == first_contact &&
                       m.pocket[k * n + target] == shot.pocket && !m.pocketed[k * n + cue]
                   ? 1
                   : 0;

@@ -1,6 +1,7 @@
 // Tests of `cueball plan-shot` (cli/command_plan_shot.cpp): the JSON's keys,
-// the replay of --scenario-out by `simulate`, bad input (exit 2, one line
-// naming the flag) and an infeasible layout (exit 3).
+// the replay of --scenario-out by `simulate`, the kinds kick and combination,
+// bad input (exit 2, one line naming the flag) and an infeasible layout
+// (exit 3).
 #include <gtest/gtest.h>
 
 #include <nlohmann/json.hpp>
@@ -29,6 +30,18 @@ constexpr const char* kCutShot = R"({
     {"id": 0, "name": "cue", "position": [1.55, 0.70]},
     {"id": 1, "name": "1", "position": [2.214, 0.944]},
     {"id": 9, "name": "9", "position": [0.8, 1.0]}
+  ]
+})";
+
+// A wall of three balls between the cue ball and the 1: only a kick reaches it.
+constexpr const char* kWalled = R"({
+  "table": "pool_9ft",
+  "balls": [
+    {"id": 0, "position": [1.0, 0.4]},
+    {"id": 1, "position": [1.9, 0.9]},
+    {"id": 2, "position": [1.479139, 0.597551]},
+    {"id": 3, "position": [1.45, 0.65]},
+    {"id": 4, "position": [1.420861, 0.702449]}
   ]
 })";
 
@@ -144,11 +157,51 @@ TEST(CliPlanShot, BadInputExits2NamingTheFlag) {
   expect_usage_error({"plan-shot", scenario, "--ball", "4"}, "--ball");
   expect_usage_error({"plan-shot", scenario, "--ball", "0"}, "--ball");
   expect_usage_error({"plan-shot", scenario, "--ball", "1", "--pocket", "middle"}, "--pocket");
-  expect_usage_error({"plan-shot", scenario, "--ball", "1", "--kinds", "direct,kick"}, "--kinds");
+  expect_usage_error({"plan-shot", scenario, "--ball", "1", "--kinds", "direct,masse"}, "--kinds");
+  expect_usage_error({"plan-shot", scenario, "--ball", "1", "--kinds", ","}, "--kinds");
   expect_usage_error({"plan-shot", scenario, "--ball", "1", "--noise", "loud"}, "--noise");
   expect_usage_error({"plan-shot", scenario, "--ball", "1", "--simulations", "10"}, "--simulations");
   expect_usage_error({"plan-shot", scenario, "--ball", "1", "--seed", "-1"}, "--seed");
   expect_usage_error({"plan-shot", scenario}, "--ball");
+}
+
+TEST(CliPlanShot, KindsKickAndCombinationArePlannedAndSaidInTheJson) {
+  const TempDir dir;
+  const std::string scenario = dir.write("walled.json", kWalled);
+  // Direct and bank: every straight path of the cue ball is blocked.
+  const CliRun blocked = run_cli({"plan-shot", scenario, "--ball", "1", "--simulations", "1000"});
+  EXPECT_EQ(blocked.status, 3) << blocked.err;
+  const CliRun r = run_cli({"plan-shot", scenario, "--ball", "1", "--kinds", "kick,combination", "--simulations",
+                            "1500", "--json"});
+  ASSERT_EQ(r.status, 0) << r.err;
+  const nlohmann::json j = nlohmann::json::parse(r.out);
+  // Both kinds planned (the wall's middle ball, in line with the 1 and the
+  // top-right pocket, makes a combination that beats the kicks).
+  std::vector<nlohmann::json> all{j};
+  for (const auto& a : j["alternatives"]) all.push_back(a);
+  bool kick = false, combination = false;
+  for (const auto& a : all) {
+    ASSERT_TRUE(a["kind"] == "kick" || a["kind"] == "combination") << a["kind"];
+    if (a["kind"] == "kick") {
+      kick = true;
+      ASSERT_EQ(a["cushions"].size(), 1u);
+      EXPECT_EQ(a["cushion"], a["cushions"][0]);
+      EXPECT_TRUE(a["intermediate_ball"].is_null());
+    } else {
+      combination = true;
+      EXPECT_TRUE(a["cushions"].empty());
+      EXPECT_FALSE(a.contains("cushion"));
+      ASSERT_TRUE(a["intermediate_ball"].is_number_integer());
+      const int via = a["intermediate_ball"].get<int>();
+      EXPECT_TRUE(via >= 2 && via <= 4) << via;
+      EXPECT_TRUE(a.contains("combination_cut_deg"));
+    }
+  }
+  EXPECT_TRUE(kick);
+  EXPECT_TRUE(combination);
+  const CliRun text = run_cli({"plan-shot", scenario, "--ball", "1", "--kinds", "kick", "--simulations", "1000"});
+  ASSERT_EQ(text.status, 0) << text.err;
+  EXPECT_NE(text.out.find("kick off the "), std::string::npos) << text.out;
 }
 
 TEST(CliPlanShot, AnInfeasibleLayoutExits3WithOneLine) {

@@ -1,6 +1,8 @@
 // Tests of the shot planner (src/shot_planner.cpp): straight-in and cut
 // shots found as direct pots with the aim corrected for throw, a bank when
-// the direct line is blocked, blocked lines and obstructed cues never
+// the direct line is blocked, a two-cushion bank when every direct and
+// one-cushion line is, a kick when the cue ball's straight paths are, a
+// combination when the target's ghost ball is taken by another ball, blocked lines and obstructed cues never
 // returned, the success probability against an independent noisy batch,
 // determinism, input validation and infeasible layouts.
 #include "cueball/shot_planner.hpp"
@@ -358,6 +360,202 @@ TEST(ShotPlanner, ABallBoxedInByOthersHasNoFeasibleShot) {
   } catch (const NoFeasibleShot& e) {
     EXPECT_NE(std::string(e.what()).find("blocked"), std::string::npos) << e.what();
   }
+}
+
+
+// The id of the cue ball's first ball and whether a cushion came before it.
+struct FirstContact {
+  int ball = -1;
+  std::vector<int> cushions_before;  // table indices
+};
+FirstContact first_contact(const SimulationResult& r, int cue_ball) {
+  FirstContact f;
+  for (const Event& e : r.events) {
+    if (e.type == EventType::ball_ball && (e.ball == cue_ball || e.other == cue_ball)) {
+      f.ball = e.ball == cue_ball ? e.other : e.ball;
+      return f;
+    }
+    if (e.type == EventType::ball_cushion && e.ball == cue_ball) f.cushions_before.push_back(e.other);
+  }
+  return f;
+}
+
+// The cushions (table indices) the ball met before it dropped.
+std::vector<int> cushions_before_pocket(const SimulationResult& r, int id) {
+  std::vector<int> k;
+  for (const Event& e : r.events) {
+    if (e.ball != id) continue;
+    if (e.type == EventType::ball_cushion) k.push_back(e.other);
+    if (e.type == EventType::ball_pocket) break;
+  }
+  return k;
+}
+
+TEST(ShotPlanner, KindNamesRoundTrip) {
+  for (ShotKind kind : kShotKinds) EXPECT_EQ(shot_kind_from_string(to_string(kind)), kind);
+  EXPECT_FALSE(shot_kind_from_string("masse").has_value());
+  EXPECT_FALSE(shot_kind_from_string("Bank").has_value());
+  EXPECT_FALSE(shot_kind_from_string("").has_value());
+  EXPECT_EQ(shot_kind_names(), "direct, bank, kick, combination");
+  EXPECT_EQ(shot_kind_names("'"), "'direct', 'bank', 'kick', 'combination'");
+}
+
+TEST(ShotPlanner, EveryDirectAndOneCushionLineBlockedIsSolvedAsATwoCushionBank) {
+  // Two balls 0.3 mm off the 1, either side of the line at 110 deg through
+  // it: the 1 can leave only within about 6 deg of that line, along which
+  // no pocket and no one-cushion mirror point lies (a search over the angle
+  // found it); the cue ball straight behind.
+  const Scenario table = layout({});
+  const double R = table.settings.parameters.ball.radius;
+  const Vec2 O{1.0, 0.55};
+  const Vec2 u = rotated(Vec2{1.0, 0.0}, 110.0), n{-u.y, u.x};
+  const double off = 2.0 * R * 1.005;
+  const Scenario s = layout({{0, O - 0.35 * u}, {1, O}, {2, O + off * n}, {3, O - off * n}});
+  PlanRequest q;
+  q.target = 1;
+  const ShotPlanResult plan = plan_shot(s, q);
+  // Every direct and one-cushion candidate was dropped by geometry (blocked,
+  // too thin, off the cushion), none searched on the simulation.
+  int one_cushion = 0;
+  for (const std::string& r : plan.rejected) {
+    if (r.find(", then ") != std::string::npos) continue;
+    ++one_cushion;
+    EXPECT_TRUE(r.find("blocked") != std::string::npos || r.find("deg > ") != std::string::npos ||
+                r.find("bank point") != std::string::npos || r.find("the cushion at") != std::string::npos)
+        << r;
+  }
+  EXPECT_GE(one_cushion, 6);
+  ASSERT_EQ(plan.shot.kind, ShotKind::bank);
+  ASSERT_EQ(plan.shot.cushions.size(), 2u);
+  EXPECT_EQ(plan.shot.cushion, plan.shot.cushions[0]);
+  EXPECT_NE(plan.shot.cushions[0], plan.shot.cushions[1]);
+  for (const PlannedShot& a : plan.alternatives) EXPECT_EQ(a.cushions.size(), 2u);
+  EXPECT_GT(plan.shot.success_probability, 0.0);
+  expect_pots(s, plan, q);
+  // The object ball met the two cushions, in that order, and then dropped.
+  const SimulationResult r = replay(s, plan, q);
+  const std::vector<int> met = cushions_before_pocket(r, 1);
+  ASSERT_GE(met.size(), 2u);
+  EXPECT_EQ(cushion_name(s.table, static_cast<std::size_t>(met[0])), plan.shot.cushions[0]);
+  EXPECT_EQ(cushion_name(s.table, static_cast<std::size_t>(met[1])), plan.shot.cushions[1]);
+  EXPECT_EQ(first_contact(r, 0).ball, 1);
+}
+
+TEST(ShotPlanner, EveryStraightCueBallPathBlockedIsSolvedAsAKickThatMeetsTheTargetFirst) {
+  // A wall of three balls between the cue ball and the 1: the cue ball's
+  // straight path to every ghost ball of the 1 is blocked.
+  const Vec2 C{1.0, 0.4}, O{1.9, 0.9};
+  const Vec2 d = unit(O - C), n{-d.y, d.x}, mid = 0.5 * (C + O);
+  const Scenario s =
+      layout({{0, C}, {1, O}, {2, mid - 0.06 * n}, {3, mid}, {4, mid + 0.06 * n}});
+  PlanRequest q;
+  q.target = 1;
+  q.kinds = {ShotKind::direct, ShotKind::bank};
+  try {
+    plan_shot(s, q);
+    ADD_FAILURE() << "expected every direct shot and bank to be infeasible";
+  } catch (const NoFeasibleShot& e) {
+    EXPECT_NE(std::string(e.what()).find("the cue ball's path is blocked"), std::string::npos) << e.what();
+  }
+  q.kinds = {ShotKind::direct, ShotKind::bank, ShotKind::kick};
+  const ShotPlanResult plan = plan_shot(s, q);
+  for (const std::string& r : plan.rejected)
+    if (r.rfind("direct", 0) == 0) {
+      EXPECT_TRUE(r.find("blocked") != std::string::npos || r.find("deg > ") != std::string::npos) << r;
+    }
+  ASSERT_EQ(plan.shot.kind, ShotKind::kick);
+  ASSERT_EQ(plan.shot.cushions.size(), 1u);
+  EXPECT_EQ(plan.shot.cushion, plan.shot.cushions[0]);
+  EXPECT_EQ(plan.shot.intermediate_ball, -1);
+  EXPECT_GT(plan.shot.success_probability, 0.0);
+  expect_pots(s, plan, q);
+  // The cue ball went off the planned cushion, then met the 1 first.
+  const SimulationResult r = replay(s, plan, q);
+  const FirstContact f = first_contact(r, 0);
+  EXPECT_EQ(f.ball, 1);
+  ASSERT_FALSE(f.cushions_before.empty());
+  EXPECT_EQ(cushion_name(s.table, static_cast<std::size_t>(f.cushions_before[0])), plan.shot.cushion);
+  // The kick's geometric aim is the mirror image's: away from the 1, not at it.
+  EXPECT_GT(std::abs(plan.shot.geometric_aim_deg - std::atan2(d.y, d.x) / kDeg), 10.0);
+}
+
+TEST(ShotPlanner, ADeadCombinationIsSolvedAsACombination) {
+  // The 2 almost lined up behind the 1 towards the top-right pocket, the cue
+  // ball behind the 2: the 1's ghost ball for that pocket is where the 2 is,
+  // its other pockets too thin or behind the 2.
+  const Scenario table = layout({});
+  const double R = table.settings.parameters.ball.radius;
+  const Vec2 u = unit(Vec2{1.0, 1.0}), n{-u.y, u.x};
+  const Vec2 O = pocket_centre(table, "top-right") - 0.35 * u;
+  const Vec2 A = O - 0.15 * u + 0.004 * n;
+  const Vec2 C = A - 0.5 * rotated(u, 10.0);
+  const Scenario s = layout({{0, C}, {1, O}, {2, A}});
+  PlanRequest q;
+  q.target = 1;
+  q.kinds = {ShotKind::direct};
+  try {
+    plan_shot(s, q);
+    ADD_FAILURE() << "expected every direct shot to be infeasible";
+  } catch (const NoFeasibleShot& e) {
+    EXPECT_NE(std::string(e.what()).find("direct into top-right: the cue ball's path is blocked by ball 2"),
+              std::string::npos)
+        << e.what();
+  }
+  q.kinds = {ShotKind::direct, ShotKind::combination};
+  const ShotPlanResult plan = plan_shot(s, q);
+  ASSERT_EQ(plan.shot.kind, ShotKind::combination);
+  EXPECT_EQ(plan.shot.pocket_name, "top-right");
+  EXPECT_EQ(plan.shot.intermediate_ball, 2);
+  EXPECT_TRUE(plan.shot.cushions.empty());
+  // Geometry: the 2 must be sent at the 1's ghost ball, about 1.5 deg off the line to the pocket.
+  const Vec2 ghost = O - 2.0 * R * u;
+  EXPECT_NEAR(plan.shot.combination_cut_deg,
+              std::acos(dot(unit(ghost - A), u)) / kDeg, 1e-9);
+  EXPECT_GT(plan.shot.success_probability, 0.3);
+  expect_pots(s, plan, q);
+  const SimulationResult r = replay(s, plan, q);
+  EXPECT_EQ(first_contact(r, 0).ball, 2);
+}
+
+TEST(ShotPlanner, ACombinationsSuccessNeedsTheIntermediateBallFirst) {
+  // The same dead combination: the planner's estimate counts the shots whose
+  // first contact is the 2 and which pot the 1; an independent noisy batch
+  // counted that way agrees, and counted with the 1 as first contact finds
+  // no success at all.
+  const Scenario table = layout({});
+  const Vec2 u = unit(Vec2{1.0, 1.0}), n{-u.y, u.x};
+  const Vec2 O = pocket_centre(table, "top-right") - 0.35 * u;
+  const Vec2 A = O - 0.15 * u + 0.004 * n;
+  const Vec2 C = A - 0.5 * rotated(u, 10.0);
+  const Scenario s = layout({{0, C}, {1, O}, {2, A}});
+  PlanRequest q;
+  q.target = 1;
+  q.kinds = {ShotKind::combination};
+  q.pocket = 3;
+  q.seed = 4;
+  const ShotPlanResult plan = plan_shot(s, q);
+  Scenario noisy = s;
+  noisy.noise = q.noise;
+  constexpr int kShots = 1000;
+  const std::vector<ShotAction> actions(kShots, plan.shot.strike);
+  ManyOptions options;
+  options.seed = 777;
+  options.noise = true;
+  const ManyResult m = simulate_many(noisy, actions, {}, options);
+  int via_two = 0, via_one = 0;
+  const auto n_balls = static_cast<std::size_t>(m.balls);
+  for (std::size_t k = 0; k < kShots; ++k) {
+    const bool pots = !m.miscue[k] && !m.failure[k] && m.pocket[k * n_balls + 1] == plan.shot.pocket &&
+                      !m.pocketed[k * n_balls + 0];
+    via_two += pots && m.first_contact[k] == 2;
+    via_one += pots && m.first_contact[k] == 1;
+  }
+  EXPECT_EQ(via_one, 0);
+  const double p = plan.shot.success_probability, independent = static_cast<double>(via_two) / kShots;
+  const double pooled = (p * plan.shot.noisy_shots + via_two) / (plan.shot.noisy_shots + kShots);
+  const double se = std::sqrt(pooled * (1 - pooled) * (1.0 / plan.shot.noisy_shots + 1.0 / kShots));
+  EXPECT_GT(p, 0.1);
+  EXPECT_LE(std::abs(p - independent), 3.0 * se + 1e-9) << p << " vs " << independent;
 }
 
 }  // namespace

@@ -1,29 +1,53 @@
 // The robot's 2D question on a real table: which strike pots this ball in
-// that pocket, and how sure is it? (issue 13, first slice: direct shots and
-// one-cushion banks of the object ball.)
+// that pocket, and how sure is it? (issue 13: direct shots, banks off one or
+// two cushions, kicks and combinations.)
 //
-// Method, per candidate (a pocket and a kind):
-//   1. Geometry gives the first aim. Direct: the ghost ball G = O - 2R u, u
-//      the unit vector from the object ball O to the pocket's capture centre
-//      P; the cue ball is aimed at G (ghost-ball aiming: D. G. Alciatore,
-//      "The Illustrated Principles of Pool and Billiards", 2004).
-//      Bank off one cushion: P is mirrored in the line the object ball's
-//      centre follows along that cushion (the nose line moved in by the
-//      contact distance sqrt(h (2R - h)), table.hpp), and the object ball
-//      is sent at the mirror point P' (the mirror system of bank shots,
-//      ibid.); the real rebound (Mathavan 2010) is not a mirror, which step
-//      3 fixes.
+// Method, per candidate (a pocket, a kind and its cushions or intermediate
+// ball):
+//   1. Geometry gives the first aim (the ghost-ball and mirror systems of D.
+//      G. Alciatore, "The Illustrated Principles of Pool and Billiards",
+//      2004). A cushion's "line" below is the line the centre of a ball
+//      touching it follows: the nose line moved in by the contact distance
+//      sqrt(h (2R - h)) (table.hpp); a point is mirrored in that line.
+//      direct: the ghost ball G = O - 2R u, u the unit vector from the
+//        object ball O to the pocket's capture centre P; the cue ball is
+//        aimed at G (ghost-ball aiming).
+//      bank off one cushion: P is mirrored in the cushion's line and the
+//        object ball sent at the mirror point P' (the mirror system of bank
+//        shots); the bank point X is where O -> P' crosses the line.
+//      bank off two cushions: P is mirrored in the second cushion's line
+//        (P1), P1 in the first's (P2); the object ball is sent at P2, meets
+//        the first line at X1 (on O -> P2), the second at X2 (on X1 -> P1),
+//        and goes on to P (mirror images twice, ibid.).
+//      kick: the target is potted directly, but the cue ball reaches its
+//        ghost ball G off one cushion: G is mirrored in that cushion's line
+//        (G') and the cue ball aimed at G'; it meets the line at Y (on
+//        C -> G') and goes on to G (the mirror system of kicks, ibid.).
+//      combination: the cue ball sends another ball A into the target,
+//        which goes in: A must reach the target's ghost ball G_T = O - 2R u,
+//        so along v = (G_T - A) / |G_T - A|, and the cue ball is aimed at A's
+//        ghost ball G_A = A - 2R v (the ghost ball applied twice, ibid.).
+//        Any other ball on the table may be A; for each pocket only the
+//        kMaxCombinationBalls with the smallest combined cut (the cue ball's
+//        on A plus A's on the target) are kept.
+//      The real rebound (Mathavan 2010) is not a mirror, nor is a real
+//      collision a ghost ball (throw); step 3 fixes both.
 //   2. Candidates whose straight paths are blocked are skipped: another
-//      ball's centre within 2R of the cue ball's path C -> G or of the object
-//      ball's path O -> P (O -> X -> P for a bank, X on the cushion), the
-//      swept-circle test. So is a candidate whose cut exceeds kMaxCutDeg,
-//      whose bank point is not on the cushion, or whose cue is obstructed
-//      at every elevation up to kMaxPlanElevationDeg (cue_obstructed()).
+//      ball's centre within 2R of a leg (the swept-circle test) of the cue
+//      ball (C -> G, C -> Y -> G for a kick, C -> G_A for a combination), of
+//      A (A -> G_T) or of the object ball (O -> P, O -> X -> P, O -> X1 ->
+//      X2 -> P); for a kick, the target within 2R of the cue ball's first leg
+//      (it would be hit before the cushion); for a combination, the target
+//      within 2R of the cue ball's path (it would be hit before A). So is a
+//      candidate whose cut (either cut of a combination) exceeds
+//      kMaxCutDeg, whose bank point is not on its cushion or meets it more
+//      than 75 deg from its normal, or whose cue is obstructed at every
+//      elevation up to kMaxPlanElevationDeg (cue_obstructed()).
 //   3. The aim is corrected on the exact simulation (noise-free): the
 //      target's signed lateral miss of P (its closest approach to P, measured
 //      across the intended last leg) is driven to zero by the secant method,
-//      so cut- and spin-induced throw, the cloth's curve and the cushion's
-//      rebound are in the answer. The speed window (cue speeds that still
+//      so cut- and spin-induced throw, the cloth's curve and the cushions'
+//      rebounds are in the answer. The speed window (cue speeds that still
 //      pot, the rest held) is found by bisection from there, each edge to
 //      kSpeedWindowTol, and the speed chosen in it: the first guess (the
 //      object ball reaching the pocket at about 1 m/s), but at least
@@ -41,8 +65,11 @@
 //      draws for the request's seed, so its estimate carries no selection
 //      bias), standard error sqrt(p (1 - p) / N).
 // A shot succeeds only when the target drops in the intended pocket, the
-// cue ball's first contact is the target and the cue ball is not pocketed
-// (a scratch); a miscue or an event-limit failure is a failure.
+// cue ball's first contact is the target (for a combination: ball A) and the
+// cue ball is not pocketed (a scratch); a miscue or an event-limit failure
+// is a failure. Kinds are tried only when asked for: the default is direct
+// and bank (the kicks and combinations of a full table add about as many
+// candidates again; see the README's "Planning a 2D shot").
 //
 // The strike is centre ball unless the request gives the tip height; a
 // centre-ball strike that misses or scratches (a straight-in's cue ball
@@ -68,10 +95,12 @@
 #pragma once
 
 #include <array>
+#include <cstddef>
 #include <cstdint>
 #include <optional>
 #include <stdexcept>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "cueball/batch.hpp"
@@ -87,10 +116,24 @@ class NoFeasibleShot : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
-enum class ShotKind { direct, bank };
+/// direct: the cue ball pots the target; bank: the target goes in off one
+/// or two cushions; kick: the cue ball reaches the target off a cushion;
+/// combination: the cue ball sends another ball into the target.
+enum class ShotKind { direct, bank, kick, combination };
 
-/// "direct" or "bank".
+/// Every kind, in the order of ShotKind.
+inline constexpr std::array<ShotKind, 4> kShotKinds{ShotKind::direct, ShotKind::bank, ShotKind::kick,
+                                                    ShotKind::combination};
+
+/// "direct", "bank", "kick" or "combination".
 const char* to_string(ShotKind kind);
+
+/// The kind with that name (to_string()), or nullopt.
+std::optional<ShotKind> shot_kind_from_string(std::string_view name);
+
+/// The names of kShotKinds, each between `quote`s, joined by ", ":
+/// "direct, bank, kick, combination".
+std::string shot_kind_names(std::string_view quote = "");
 
 /// The computational-pool tournaments' execution noise (Archibald, Altman,
 /// Greenspan & Shoham, "Computational Pool: A New Challenge for Game Theory
@@ -104,6 +147,9 @@ inline constexpr double kCueLength = 1.4732;
 inline constexpr double kCueTipRadius = 0.0065;
 /// Largest cut angle a candidate may need, degrees (thinner cuts are skipped).
 inline constexpr double kMaxCutDeg = 80.0;
+/// Most intermediate balls tried per pocket for a combination (those with the
+/// smallest combined cut).
+inline constexpr std::size_t kMaxCombinationBalls = 3;
 /// Highest elevation the planner raises the cue to, to clear an obstruction, degrees.
 inline constexpr double kMaxPlanElevationDeg = 30.0;
 /// Precision of the aim window's edges, degrees, and of the speed window's, m/s.
@@ -158,10 +204,15 @@ struct PlannedShot {
   ShotKind kind = ShotKind::direct;
   int pocket = -1;                  ///< index into table.pockets
   std::string pocket_name;
-  std::string cushion;              ///< bank: the cushion's name; direct: empty
+  std::string cushion;              ///< bank, kick: the (first) cushion's name; direct, combination: empty
+  /// The cushions in the order they are met: bank, the object ball's (one
+  /// or two); kick, the cue ball's (one); direct, combination: none.
+  std::vector<std::string> cushions;
+  int intermediate_ball = -1;       ///< combination: id of the ball the cue ball sends into the target; else -1
   ShotAction strike;                ///< in the scenario's "cue" units: cue speed m/s, aim_deg, elevation_deg, side, height
   double geometric_aim_deg = 0.0;   ///< the first guess from geometry (ghost ball, mirror point)
-  double cut_deg = 0.0;             ///< cut angle at the object ball (geometry), degrees
+  double cut_deg = 0.0;             ///< cut angle of the cue ball on the first ball it meets (geometry), degrees
+  double combination_cut_deg = 0.0; ///< combination: cut angle of ball A on the target (geometry), degrees; else 0
   double ball_speed = 0.0;          ///< cue ball speed just after the strike, m/s
   RobotForm robot;
   double success_probability = 0.0; ///< under the request's noise

@@ -1017,7 +1017,8 @@ def plan_shot(
     next_simulations: _Int = 500,
 ) -> dict[str, Any]:
     """The strike that pots ball `target` (cueball plan-shot): the dict of `plan-shot --json`
-    (cue in degrees and ball radii, kind, pocket, success_probability and its standard error,
+    (cue in degrees and ball radii, kind ('direct', 'bank' off one or two cushions, 'kick',
+    'combination'), pocket, cushion, cushions, intermediate_ball, success_probability and its standard error,
     aim_window_deg, speed_window m/s, robot, predicted, alternatives, rejected) and `scenario`,
     the Scenario with the planned cue. noise 'tournament', 'none', 'scenario' or a dict of sigmas
     as the scenario's "noise" (speed m/s, aim_deg, elevation_deg, side, height ball radii); raises

@@ -36,11 +36,14 @@ cueball::CueStrikeNoise noise_model(const py::object& noise, const Scenario& s) 
 std::vector<cueball::ShotKind> shot_kinds(const std::vector<std::string>& names) {
   std::vector<cueball::ShotKind> kinds;
   for (const std::string& k : names) {
-    if (k == "direct") kinds.push_back(cueball::ShotKind::direct);
-    else if (k == "bank") kinds.push_back(cueball::ShotKind::bank);
-    else throw cueball::InvalidArgument("kinds", "kinds: '" + k + "' is not a kind; allowed: 'direct', 'bank'");
+    const std::optional<cueball::ShotKind> kind = cueball::shot_kind_from_string(k);
+    if (!kind)
+      throw cueball::InvalidArgument("kinds", "kinds: '" + k + "' is not a kind; allowed: " +
+                                                  cueball::shot_kind_names("'"));
+    kinds.push_back(*kind);
   }
-  if (kinds.empty()) throw cueball::InvalidArgument("kinds", "kinds names no kind; allowed: 'direct', 'bank'");
+  if (kinds.empty())
+    throw cueball::InvalidArgument("kinds", "kinds names no kind; allowed: " + cueball::shot_kind_names("'"));
   return kinds;
 }
 
@@ -76,7 +79,9 @@ py::dict shot_dict(const Scenario& s, int cue_ball, const PlannedShot& shot, con
   d["cue"] = cue;
   d["kind"] = cueball::to_string(shot.kind);
   d["pocket"] = shot.pocket_name;
-  d["cushion"] = shot.kind == cueball::ShotKind::bank ? py::object(py::str(shot.cushion)) : py::object(py::none());
+  d["cushion"] = shot.cushion.empty() ? py::object(py::none()) : py::object(py::str(shot.cushion));
+  d["cushions"] = shot.cushions;
+  d["intermediate_ball"] = shot.intermediate_ball >= 0 ? py::object(py::int_(shot.intermediate_ball)) : py::object(py::none());
   d["success_probability"] = shot.success_probability;
   d["success_standard_error"] = shot.success_standard_error;
   d["noisy_shots"] = shot.noisy_shots;
@@ -89,6 +94,7 @@ py::dict shot_dict(const Scenario& s, int cue_ball, const PlannedShot& shot, con
   d["ball_speed"] = shot.ball_speed;
   d["geometric_aim_deg"] = shot.geometric_aim_deg;
   d["cut_deg"] = shot.cut_deg;
+  d["combination_cut_deg"] = shot.combination_cut_deg;
   py::list predicted;
   for (const cueball::PredictedBall& b : shot.predicted) {
     py::dict p;
@@ -184,16 +190,18 @@ void bind_shot_planner(py::module_& m) {
       "simulations"_a = 4000, "side"_a = 0.0, "height"_a = py::none(), "position"_a = false, "next"_a = py::none(),
       "next_simulations"_a = cueball::kMinPlanSimulations,
       "Plans the strike that pots ball `target` (cueball plan-shot, shot_planner.hpp): ghost-ball\n"
-      "(direct) and mirror-point (one-cushion bank) geometry for a first aim, blocked paths and an\n"
-      "obstructed cue skipped, the aim then solved on the exact simulation (throw, the cloth, the\n"
+      "(direct, combination) and mirror-point (bank off one or two cushions, kick) geometry for a\n"
+      "first aim, blocked paths and an obstructed cue skipped, the aim then solved on the exact simulation (throw, the cloth, the\n"
       "cushion), the aim and speed windows that still pot, and the success probability from noisy\n"
       "simulations. scenario: as simulate()'s (its own cue strike is ignored; None: the built-in\n"
-      "rack); pocket: 'any', a pocket's name or index; kinds: 'direct', 'bank'; noise: 'tournament'\n"
+      "rack); pocket: 'any', a pocket's name or index; kinds: any of 'direct', 'bank', 'kick',\n"
+      "'combination'; noise: 'tournament'\n"
       "(sigma 0.125 deg aim, 0.1 deg elevation, 0.075 m/s, 0.5 mm tip), 'none', 'scenario' (the\n"
       "scenario's own \"noise\") or a dict of sigmas as the scenario's \"noise\" takes them (speed m/s,\n"
       "aim_deg, elevation_deg, side and height in ball radii; missing keys 0); simulations: the budget of engine runs, [500, 1e6]; side, height:\n"
       "tip offsets in ball radii (height None: centre ball, then draw, then follow). Returns the dict\n"
-      "of `cueball plan-shot --json` (cue in the scenario's units, kind, pocket, cushion,\n"
+      "of `cueball plan-shot --json` (cue in the scenario's units, kind, pocket, cushion (the first),\n"
+      "cushions (in order), intermediate_ball (a combination's; else None), combination_cut_deg,\n"
       "success_probability, success_standard_error, noisy_shots, aim_window_deg, speed_window (m/s),\n"
       "robot {tip_height m, cue_speed m/s}, predicted, simulations, seconds, alternatives, rejected)\n"
       "and `scenario`, the Scenario with the planned cue (simulate() replays the plan). position=True\n"

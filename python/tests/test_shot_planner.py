@@ -66,9 +66,31 @@ class PlanShotTest(unittest.TestCase):
         r = cueball.simulate(bank["scenario"])
         self.assertTrue(r.balls["pocketed"][list(r.balls["id"]).index(1)])
 
+    def test_a_kick_when_every_straight_path_of_the_cue_ball_is_blocked(self) -> None:
+        walled = {"table": "pool_9ft", "balls": [
+            {"id": 0, "position": [1.0, 0.4]}, {"id": 1, "position": [1.9, 0.9]},
+            {"id": 2, "position": [1.479139, 0.597551]}, {"id": 3, "position": [1.45, 0.65]},
+            {"id": 4, "position": [1.420861, 0.702449]}]}
+        with self.assertRaises(cueball.NoFeasibleShot):
+            cueball.plan_shot(walled, 1, simulations=500)
+        kick = cueball.plan_shot(walled, 1, kinds=["kick"], simulations=1000)
+        self.assertEqual(kick["kind"], "kick")
+        self.assertEqual(len(kick["cushions"]), 1)
+        self.assertEqual(kick["cushion"], kick["cushions"][0])
+        self.assertIsNone(kick["intermediate_ball"])
+        r = cueball.simulate(kick["scenario"])
+        ids = list(r.balls["id"])
+        self.assertTrue(r.balls["pocketed"][ids.index(1)])
+        self.assertFalse(r.balls["pocketed"][ids.index(0)])
+        with self.assertRaises(ValueError) as e:
+            cueball.plan_shot(walled, 1, kinds=["kick", "jump"])
+        self.assertIn("kinds", str(e.exception))
+        self.assertIn("'combination'", str(e.exception))
+
     def test_bad_input_names_the_field(self) -> None:
         for kwargs, field in (({"simulations": 10}, "simulations"), ({"noise": "loud"}, "noise"),
-                              ({"kinds": ["kick"]}, "kinds"), ({"pocket": "nowhere"}, "pocket")):
+                              ({"kinds": ["masse"]}, "kinds"), ({"kinds": []}, "kinds"),
+                              ({"pocket": "nowhere"}, "pocket")):
             with self.subTest(field=field), self.assertRaises(cueball.InvalidArgument) as e:
                 cueball.plan_shot(CUT, 9, **kwargs)
             self.assertEqual(e.exception.field, field)

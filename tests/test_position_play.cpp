@@ -7,35 +7,19 @@
 
 #include <gtest/gtest.h>
 
-#include <cstdio>
 #include <random>
 #include <string>
 #include <vector>
 
+#include "ball_layout.hpp"
 #include "cueball/errors.hpp"
 #include "cueball/scenario.hpp"
 
 namespace cueball {
 namespace {
 
-struct Placed {
-  int id;
-  Vec2 p;
-};
-
-std::string exact(double v) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.17g", v);
-  return buf;
-}
-
-Scenario layout(const std::vector<Placed>& balls) {
-  std::string json = R"({"table": "pool_9ft", "balls": [)";
-  for (std::size_t i = 0; i < balls.size(); ++i)
-    json += (i ? ", " : "") + std::string(R"({"id": )") + std::to_string(balls[i].id) + R"(, "position": [)" +
-            exact(balls[i].p.x) + ", " + exact(balls[i].p.y) + "]}";
-  return scenario_from_json(json + "]}");
-}
+using test::layout;
+using test::Placed;
 
 // Cue ball 0, target 1 and the next ball 2 at random places on the 9-ft
 // table (at least 3 R from the cushions and 3 R apart), from `seed`.

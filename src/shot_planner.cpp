@@ -104,9 +104,14 @@ class Planner {
   Trial play(const ShotAction& a, const Candidate& c) {
     const std::size_t pocket = c.pocket;
     const Vec2 last_leg = c.last_leg;
+    Trial t;
+    // Never a non-finite strike into the engine (it would throw
+    // InvalidArgument): an unsimulated trial, which does not pot.
+    if (!std::isfinite(a.speed) || !std::isfinite(a.aim_deg) || !std::isfinite(a.elevation_deg) ||
+        !std::isfinite(a.side) || !std::isfinite(a.height))
+      return t;
     if (runs_ >= most_runs_) throw BudgetSpent{};
     ++runs_;
-    Trial t;
     std::vector<SimulationBall> balls = s_.balls;
     balls[cue_].state = strike_ball(to_strike(a, R_), balls[cue_].state.position, s_.settings.parameters.ball,
                                     s_.cue_parameters);
@@ -336,8 +341,22 @@ void geometric_candidates(const Scenario& s, const PlanRequest& q, std::size_t c
   const auto consider = [&](Candidate c, const std::vector<Vec2>& cue_legs, const std::vector<Vec2>& middle_legs,
                             const std::vector<Vec2>& object_legs, std::vector<Candidate>& into) {
     const std::string& what = c.what;
+    // A leg of no length has no direction (a ball frozen to the cushion it
+    // would be banked off meets that cushion where it is: its bank point is
+    // the ball itself, and the ghost ball O - 2R u of u = 0/0 is NaN).
+    const auto degenerate = [](const std::vector<Vec2>& legs) {
+      for (std::size_t i = 0; i < legs.size(); ++i) {
+        if (!std::isfinite(legs[i].x) || !std::isfinite(legs[i].y)) return true;
+        if (i + 1 < legs.size() && !(norm(legs[i + 1] - legs[i]) >= 1e-9)) return true;
+      }
+      return false;
+    };
+    if (degenerate(object_legs) || degenerate(middle_legs)) {
+      rejected.push_back(what + ": the object ball's path has a leg of no length (it touches the cushion)");
+      return;
+    }
     for (std::size_t i = 0; i + 1 < cue_legs.size(); ++i)
-      if (norm(cue_legs[i + 1] - cue_legs[i]) < 1e-9) {
+      if (!(norm(cue_legs[i + 1] - cue_legs[i]) >= 1e-9)) {
         rejected.push_back(what + ": the cue ball is on the ghost ball");
         return;
       }
@@ -695,6 +714,10 @@ ShotPlanResult plan_shot(const Scenario& table_state, const PlanRequest& q) {
     const std::optional<double> elevation = clearing_elevation(s, cue, c.aim_deg, q.side, height);
     if (!elevation) {
       why = "the cue is obstructed at every elevation up to " + format_number(kMaxPlanElevationDeg) + " deg";
+      return std::nullopt;
+    }
+    if (!std::isfinite(cue_speed_of) || !std::isfinite(c.aim_deg)) {
+      why = "no finite first speed or aim from geometry";
       return std::nullopt;
     }
     ShotAction a{std::clamp(cue_speed_of / std::cos(*elevation * kDegree), 0.3, 10.0), c.aim_deg, *elevation, q.side,

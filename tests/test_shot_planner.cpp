@@ -558,5 +558,34 @@ TEST(ShotPlanner, ACombinationsSuccessNeedsTheIntermediateBallFirst) {
   EXPECT_LE(std::abs(p - independent), 3.0 * se + 1e-9) << p << " vs " << independent;
 }
 
+// Regression (docs/planner-benchmark.md, run-out rack 270): the 1 ball lies
+// frozen to the right rail, so its bank off that rail has a bank point on
+// the ball itself; the ghost ball's direction was 0/0 and plan_shot threw
+// InvalidArgument "speed = -nan" from inside. It must plan or say
+// NoFeasibleShot, and never pass NaN into the engine.
+TEST(ShotPlanner, ABallFrozenToTheRailPlansOrHasNoFeasibleShotNeverInvalidArgument) {
+  const Scenario s = layout({{0, {2.4561610207254136, 0.66922320748580644}},
+                             {1, {2.5125495588605573, 0.31655274477737166}},
+                             {2, {2.3767717131680768, 0.42244982957238736}},
+                             {3, {2.3861597322587911, 0.86394925933100863}},
+                             {4, {0.33559884525300454, 0.91406298066433334}},
+                             {9, {2.1809082098633352, 0.686749627145958}},
+                             {6, {2.2887164539851956, 0.5413088491416217}},
+                             {7, {2.0888794929314471, 0.9539138261132587}},
+                             {8, {1.9966107662730643, 0.6462052639716801}}});
+  PlanRequest q;
+  q.target = 1;
+  q.simulations = 1000;
+  try {
+    const ShotPlanResult r = plan_shot(s, q);
+    EXPECT_LE(r.simulations, q.simulations);
+    EXPECT_TRUE(std::isfinite(r.shot.strike.speed));
+    expect_pots(s, r, q);
+  } catch (const NoFeasibleShot&) {
+  } catch (const InvalidArgument& e) {
+    ADD_FAILURE() << "InvalidArgument from inside the planner: " << e.what();
+  }
+}
+
 }  // namespace
 }  // namespace cueball

@@ -36,7 +36,7 @@ constexpr std::size_t kMaxScreened = 12;
 // shot's own speed; a variant's search may take kVariantRuns runs or so.
 constexpr std::size_t kVariantCandidates = 3;
 constexpr std::array<double, 3> kVariantHeights{-0.3, 0.0, 0.3};
-constexpr std::array<double, 2> kVariantSpeeds{1.0, 1.8};
+constexpr std::array<double, 3> kVariantSpeeds{0.7, 1.0, 1.8};
 constexpr int kVariantRuns = 60;
 // Engine runs one candidate's noise-free search may take.
 constexpr int kCandidateRuns = 120;
@@ -941,11 +941,15 @@ ShotPlanResult plan_shot(const Scenario& table_state, const PlanRequest& q) {
             spent = true;
             break;
           }
-          // Faster: at most 3 sigma of speed noise below the base's fastest pot.
           double speed = base.strike.speed * factor;
-          if (factor != 1.0) {
+          // Faster: at most 3 sigma of speed noise below the base's fastest
+          // pot; slower: at least 3 sigma above its slowest.
+          if (factor > 1.0) {
             speed = std::min(speed, base.speed_window[1] - 3.0 * q.noise.speed);
             if (speed < base.strike.speed * 1.2) continue;
+          } else if (factor < 1.0) {
+            speed = std::max(speed, base.speed_window[0] + 3.0 * q.noise.speed);
+            if (speed > base.strike.speed * 0.9) continue;
           }
           // A hard cap: this variant's screen and half the reserve stay free.
           planner.limit(q.simulations - screened_shots - screen - reserve / 2);

@@ -903,7 +903,7 @@ ShotPlanResult plan_shot(const Scenario& table_state, const PlanRequest& q) {
   }
   // Spin and speed under noise: unless the request fixes the tip height,
   // the kVariantCandidates best by the screen are tried again at each of
-  // kVariantHeights and kVariantSpeeds (the shot's cue speed, and faster),
+  // kVariantHeights and kVariantSpeeds (slower, the shot's cue speed, faster),
   // the aim solved and its window found on the exact simulation, and each
   // variant that pots screened on the same noise draws (common random
   // numbers, so the comparison is paired); all compete with the rest.

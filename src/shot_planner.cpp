@@ -813,7 +813,8 @@ ShotPlanResult plan_shot(const Scenario& table_state, const PlanRequest& q) {
       shot.predicted.push_back({b.id, b.final_state.position, b.pocketed, b.pocketed ? b.pocket : -1});
     return shot;
   };
-  // Centre ball first; a scratch or a miss there tries draw, then follow.
+  // Centre ball first; a scratch or a miss there tries draw, then follow (the
+  // spin and speed variants come after the screen, step 4).
   const std::vector<double> heights = tip_heights(q);
   std::vector<std::size_t> feasible_of;  // the candidate of each feasible shot
   for (std::size_t ci = 0; ci < candidates.size(); ++ci) {

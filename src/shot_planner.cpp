@@ -30,6 +30,14 @@ constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 // most candidates screened.
 constexpr int kScreenShots = kBatchBlockShots;
 constexpr std::size_t kMaxScreened = 12;
+// Spin and speed variants (step 4 of the header): of the kVariantCandidates
+// best screened candidates, each tip height of kVariantHeights (ball radii:
+// draw, centre, follow) at each cue-speed factor of kVariantSpeeds on the
+// shot's own speed; a variant's search may take kVariantRuns runs or so.
+constexpr std::size_t kVariantCandidates = 3;
+constexpr std::array<double, 3> kVariantHeights{-0.3, 0.0, 0.3};
+constexpr std::array<double, 3> kVariantSpeeds{0.7, 1.0, 1.8};
+constexpr int kVariantRuns = 60;
 // Engine runs one candidate's noise-free search may take.
 constexpr int kCandidateRuns = 120;
 // Where the screen's noise stream starts (the final estimate's starts at 0,
@@ -100,13 +108,20 @@ class Planner {
       : s_(s), cue_(cue), target_(target), R_(s.settings.parameters.ball.radius), most_runs_(most_runs) {}
 
   int runs() const { return runs_; }
+  // Lowers the most runs play() may take (in all).
+  void limit(int most_runs) { most_runs_ = std::min(most_runs_, most_runs); }
 
   Trial play(const ShotAction& a, const Candidate& c) {
     const std::size_t pocket = c.pocket;
     const Vec2 last_leg = c.last_leg;
+    Trial t;
+    // Never a non-finite strike into the engine (it would throw
+    // InvalidArgument): an unsimulated trial, which does not pot.
+    if (!std::isfinite(a.speed) || !std::isfinite(a.aim_deg) || !std::isfinite(a.elevation_deg) ||
+        !std::isfinite(a.side) || !std::isfinite(a.height))
+      return t;
     if (runs_ >= most_runs_) throw BudgetSpent{};
     ++runs_;
-    Trial t;
     std::vector<SimulationBall> balls = s_.balls;
     balls[cue_].state = strike_ball(to_strike(a, R_), balls[cue_].state.position, s_.settings.parameters.ball,
                                     s_.cue_parameters);
@@ -336,8 +351,22 @@ void geometric_candidates(const Scenario& s, const PlanRequest& q, std::size_t c
   const auto consider = [&](Candidate c, const std::vector<Vec2>& cue_legs, const std::vector<Vec2>& middle_legs,
                             const std::vector<Vec2>& object_legs, std::vector<Candidate>& into) {
     const std::string& what = c.what;
+    // A leg of no length has no direction (a ball frozen to the cushion it
+    // would be banked off meets that cushion where it is: its bank point is
+    // the ball itself, and the ghost ball O - 2R u of u = 0/0 is NaN).
+    const auto degenerate = [](const std::vector<Vec2>& legs) {
+      for (std::size_t i = 0; i < legs.size(); ++i) {
+        if (!std::isfinite(legs[i].x) || !std::isfinite(legs[i].y)) return true;
+        if (i + 1 < legs.size() && !(norm(legs[i + 1] - legs[i]) >= 1e-9)) return true;
+      }
+      return false;
+    };
+    if (degenerate(object_legs) || degenerate(middle_legs)) {
+      rejected.push_back(what + ": the object ball's path has a leg of no length (it touches the cushion)");
+      return;
+    }
     for (std::size_t i = 0; i + 1 < cue_legs.size(); ++i)
-      if (norm(cue_legs[i + 1] - cue_legs[i]) < 1e-9) {
+      if (!(norm(cue_legs[i + 1] - cue_legs[i]) >= 1e-9)) {
         rejected.push_back(what + ": the cue ball is on the ghost ball");
         return;
       }
@@ -676,7 +705,10 @@ ShotPlanResult plan_shot(const Scenario& table_state, const PlanRequest& q) {
   std::vector<PlannedShot> feasible;
   // One candidate at one tip height: the aim solved, the windows found, the
   // speed chosen; nullopt and `why` when it does not pot.
-  const auto search = [&](const Candidate& c, double height, std::string& why) -> std::optional<PlannedShot> {
+  // `fixed`: a variant's cue speed and the aim its solve starts from (the
+  // speed is then kept, not chosen).
+  const auto search = [&](const Candidate& c, double height, std::string& why,
+                          std::optional<std::pair<double, double>> fixed = std::nullopt) -> std::optional<PlannedShot> {
     // First speed: the object ball arriving at about kArrivalSpeed, rolling
     // (5/7 of its speed kept after sliding), 95 % of the striking ball's
     // speed along the line of centres passed on, each cushion losing a
@@ -697,9 +729,26 @@ ShotPlanResult plan_shot(const Scenario& table_state, const PlanRequest& q) {
       why = "the cue is obstructed at every elevation up to " + format_number(kMaxPlanElevationDeg) + " deg";
       return std::nullopt;
     }
+    if (!std::isfinite(cue_speed_of) || !std::isfinite(c.aim_deg)) {
+      why = "no finite first speed or aim from geometry";
+      return std::nullopt;
+    }
     ShotAction a{std::clamp(cue_speed_of / std::cos(*elevation * kDegree), 0.3, 10.0), c.aim_deg, *elevation, q.side,
                  height};
     std::optional<double> aim;
+    const auto set_speed = [](ShotAction& x, double v) { x.speed = v; };
+    const auto set_aim = [](ShotAction& x, double v) { x.aim_deg = v; };
+    if (fixed) {
+      a.speed = std::clamp(fixed->first, 0.3, kMaxCueSpeed);
+      a.aim_deg = fixed->second;
+      bool short_of_pocket = false;
+      aim = planner.solve_aim(a, c, short_of_pocket, 8);
+      if (!aim) {
+        why = "no aim pots it at this speed and spin";
+        return std::nullopt;
+      }
+      a.aim_deg = *aim;
+    }
     for (int tries = 0; tries < 4 && !aim; ++tries) {
       bool short_of_pocket = false;
       aim = planner.solve_aim(a, c, short_of_pocket, 12);
@@ -711,14 +760,12 @@ ShotPlanResult plan_shot(const Scenario& table_state, const PlanRequest& q) {
       return std::nullopt;
     }
     a.aim_deg = *aim;
-    const auto set_speed = [](ShotAction& x, double v) { x.speed = v; };
-    const auto set_aim = [](ShotAction& x, double v) { x.aim_deg = v; };
-    const double slowest = planner.window_edge(a, c, a.speed, -1.0, 0.25, kSpeedWindowTol, 0.05, set_speed);
-    const double fastest = planner.window_edge(a, c, a.speed, +1.0, 0.5, kSpeedWindowTol, kMaxCueSpeed, set_speed);
+    const double slowest = fixed ? 0.0 : planner.window_edge(a, c, a.speed, -1.0, 0.25, kSpeedWindowTol, 0.05, set_speed);
+    const double fastest = fixed ? 0.0 : planner.window_edge(a, c, a.speed, +1.0, 0.5, kSpeedWindowTol, kMaxCueSpeed, set_speed);
     // Speed: a margin above the slowest pot (speed noise and the roll-off
     // near the pocket), at most the window's middle.
     const double margin = std::max(0.3, 0.25 * slowest) + 3.0 * q.noise.speed;
-    const double chosen = std::min(std::max(a.speed, slowest + margin), 0.5 * (slowest + fastest));
+    const double chosen = fixed ? a.speed : std::min(std::max(a.speed, slowest + margin), 0.5 * (slowest + fastest));
     if (chosen != a.speed) {
       a.speed = chosen;
       bool short_of_pocket = false;
@@ -766,9 +813,12 @@ ShotPlanResult plan_shot(const Scenario& table_state, const PlanRequest& q) {
       shot.predicted.push_back({b.id, b.final_state.position, b.pocketed, b.pocketed ? b.pocket : -1});
     return shot;
   };
-  // Centre ball first; a scratch or a miss there tries draw, then follow.
+  // Centre ball first; a scratch or a miss there tries draw, then follow (the
+  // spin and speed variants come after the screen, step 4).
   const std::vector<double> heights = tip_heights(q);
-  for (const Candidate& c : candidates) {
+  std::vector<std::size_t> feasible_of;  // the candidate of each feasible shot
+  for (std::size_t ci = 0; ci < candidates.size(); ++ci) {
+    const Candidate& c = candidates[ci];
     const std::string& what = c.what;
     if (planner.runs() > 0 && planner.runs() + kCandidateRuns > search_budget) {
       result.rejected.push_back(what + ": not searched (the simulation budget is spent)");
@@ -792,6 +842,7 @@ ShotPlanResult plan_shot(const Scenario& table_state, const PlanRequest& q) {
     }
     shot->simulations = planner.runs() - runs_before;
     feasible.push_back(std::move(*shot));
+    feasible_of.push_back(ci);
   }
   result.simulations = planner.runs();
   if (feasible.empty()) {
@@ -849,15 +900,80 @@ ShotPlanResult plan_shot(const Scenario& table_state, const PlanRequest& q) {
       result.rejected.push_back(std::string(to_string(feasible[i].kind)) + " into " + feasible[i].pocket_name +
                                 ": not screened (more than " + std::to_string(kMaxScreened) + " feasible)");
     feasible.resize(kMaxScreened);
+    feasible_of.resize(kMaxScreened);
   }
+  // Spin and speed under noise: unless the request fixes the tip height,
+  // the kVariantCandidates best by the screen are tried again at each of
+  // kVariantHeights and kVariantSpeeds (slower, the shot's cue speed, faster),
+  // the aim solved and its window found on the exact simulation, and each
+  // variant that pots screened on the same noise draws (common random
+  // numbers, so the comparison is paired); all compete with the rest.
+  const std::size_t variant_candidates = q.height ? 0 : std::min(kVariantCandidates, feasible.size());
+  const std::size_t planned_variants = variant_candidates * (kVariantHeights.size() * kVariantSpeeds.size() - 1);
+  const std::size_t screened_count = feasible.size() + planned_variants;
   const int remaining = q.simulations - result.simulations;
-  const int screen = feasible.size() > 1 ? std::min(kScreenShots, remaining / (2 * static_cast<int>(feasible.size()))) : 0;
+  const int screen =
+      screened_count > 1 ? std::min(kScreenShots, remaining / (2 * static_cast<int>(screened_count))) : 0;
+  int screened_shots = 0;
   if (screen > 0) {
     for (PlannedShot& shot : feasible) {
       estimate(shot, successes(shot, screen, kScreenFirstShot), screen);
       shot.simulations += screen;
-      result.simulations += screen;
+      screened_shots += screen;
     }
+    std::vector<std::size_t> order(feasible.size());
+    for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
+    std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+      return feasible[a].success_probability > feasible[b].success_probability;
+    });
+    // The final estimate keeps at least a quarter of the budget.
+    const int reserve = q.simulations / 4;
+    bool spent = false;
+    for (std::size_t r = 0; r < variant_candidates && !spent; ++r) {
+      const std::size_t i = order[r];
+      if (feasible[i].success_probability >= 1.0) continue;  // nothing to gain
+      const PlannedShot base = feasible[i];
+      const Candidate& c = candidates[feasible_of[i]];
+      for (double height : kVariantHeights) {
+        for (double factor : kVariantSpeeds) {
+          if (height == base.strike.height && factor == 1.0) continue;  // the base shot itself
+          const int left = q.simulations - planner.runs() - screened_shots;
+          if (left < kVariantRuns + screen + reserve) {
+            spent = true;
+            break;
+          }
+          double speed = base.strike.speed * factor;
+          // Faster: at most 3 sigma of speed noise below the base's fastest
+          // pot; slower: at least 3 sigma above its slowest.
+          if (factor > 1.0) {
+            speed = std::min(speed, base.speed_window[1] - 3.0 * q.noise.speed);
+            if (speed < base.strike.speed * 1.2) continue;
+          } else if (factor < 1.0) {
+            speed = std::max(speed, base.speed_window[0] + 3.0 * q.noise.speed);
+            if (speed > base.strike.speed * 0.9) continue;
+          }
+          // A hard cap: this variant's screen and half the reserve stay free.
+          planner.limit(q.simulations - screened_shots - screen - reserve / 2);
+          const int runs_before = planner.runs();
+          std::string why;
+          std::optional<PlannedShot> v;
+          try {
+            v = search(c, height, why, std::pair<double, double>{speed, base.strike.aim_deg});
+          } catch (const BudgetSpent&) {
+            spent = true;
+            break;
+          }
+          if (!v) continue;
+          v->simulations = planner.runs() - runs_before;
+          estimate(*v, successes(*v, screen, kScreenFirstShot), screen);
+          v->simulations += screen;
+          screened_shots += screen;
+          feasible.push_back(std::move(*v));
+        }
+        if (spent) break;
+      }
+    }
+    result.simulations = planner.runs() + screened_shots;
     // Best first: the screened probability, then the wider aim window.
     std::stable_sort(feasible.begin(), feasible.end(), [](const PlannedShot& a, const PlannedShot& b) {
       if (a.success_probability != b.success_probability) return a.success_probability > b.success_probability;

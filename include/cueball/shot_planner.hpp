@@ -60,7 +60,16 @@
 //   4. The success probability is estimated from noisy copies of the strike
 //      (simulate_many with the request's CueStrikeNoise, batch.hpp): every
 //      feasible candidate (at most 12) is screened with up to 64 shots on common
-//      noise draws, and the best one by the screen is then measured with the
+//      noise draws. Spin and speed are then chosen under noise (unless the
+//      request gives the tip height): the 3 best candidates by the screen
+//      (one that pots on every screened shot excepted) are tried again with
+//      draw (-0.3), centre ball and follow (+0.3) at 0.7, 1 and 1.8 times
+//      their cue speed (kept 3 sigma of speed noise inside their speed
+//      window), each variant's aim solved and its windows found on the exact
+//      simulation as in step 3 (the speed held), and each variant that pots
+//      screened on the same draws (common random numbers: the comparisons
+//      are paired). Variants stop while a quarter of the budget is left.
+//      The best of all by the screen is then measured with the
 //      rest of the budget on fresh draws (the noise stream simulate_batch
 //      draws for the request's seed, so its estimate carries no selection
 //      bias), standard error sqrt(p (1 - p) / N).
@@ -71,9 +80,10 @@
 // and bank (the kicks and combinations of a full table add about as many
 // candidates again; see the README's "Planning a 2D shot").
 //
-// The strike is centre ball unless the request gives the tip height; a
-// centre-ball strike that misses or scratches (a straight-in's cue ball
-// following the object ball in) is tried again with draw, then follow. It is
+// The first strike of a candidate is centre ball unless the request gives
+// the tip height; a centre-ball strike that misses or scratches (a
+// straight-in's cue ball following the object ball in) is tried again with
+// draw, then follow; the spin and speed variants of step 4 follow. It is
 // level unless the cue must be raised to clear a ball or the rail; the butt
 // of a level cue is below the rail, so most strikes come out at 2 degrees.
 // Deterministic: the same scenario, request and seed give the same plan bit
@@ -180,7 +190,9 @@ struct PlanRequest {
   int simulations = 4000;                ///< engine runs at most, [kMinPlanSimulations, kMaxPlanSimulations]
   double side = 0.0;                     ///< tip offset to the right, ball radii (as the scenario's "cue")
   /// Tip offset above the centre, ball radii. None: centre ball, and where
-  /// that misses or scratches, draw (-0.3), then follow (+0.3).
+  /// that misses or scratches, draw (-0.3), then follow (+0.3); then draw,
+  /// centre and follow at three speeds screened under noise (header, step 4).
+  /// Given: that height only, no variants.
   std::optional<double> height;
 };
 

@@ -199,7 +199,7 @@ void bind_shot_planner(py::module_& m) {
       "(sigma 0.125 deg aim, 0.1 deg elevation, 0.075 m/s, 0.5 mm tip), 'none', 'scenario' (the\n"
       "scenario's own \"noise\") or a dict of sigmas as the scenario's \"noise\" takes them (speed m/s,\n"
       "aim_deg, elevation_deg, side and height in ball radii; missing keys 0); simulations: the budget of engine runs, [500, 1e6]; side, height:\n"
-      "tip offsets in ball radii (height None: centre ball, then draw, then follow). Returns the dict\n"
+      "tip offsets in ball radii (height None: centre ball, then draw, then follow; then draw, centre and follow at three speeds screened under noise; given: that height only). Returns the dict\n"
       "of `cueball plan-shot --json` (cue in the scenario's units, kind, pocket, cushion (the first),\n"
       "cushions (in order), intermediate_ball (a combination's; else None), combination_cut_deg,\n"
       "success_probability, success_standard_error, noisy_shots, aim_window_deg, speed_window (m/s),\n"

@@ -986,7 +986,18 @@ ShotPlanResult plan_shot(const Scenario& table_state, const PlanRequest& q) {
   best.simulations += final_shots;
   result.simulations += final_shots;
   result.shot = std::move(best);
-  for (std::size_t i = 1; i < feasible.size(); ++i) result.alternatives.push_back(std::move(feasible[i]));
+  // The alternatives: the best variant (tip height, speed) of each other
+  // shot, a shot being its kind, pocket, cushions and intermediate ball.
+  const auto same_shot = [](const PlannedShot& a, const PlannedShot& b) {
+    return a.kind == b.kind && a.pocket == b.pocket && a.cushions == b.cushions &&
+           a.intermediate_ball == b.intermediate_ball;
+  };
+  for (std::size_t i = 1; i < feasible.size(); ++i) {
+    const bool shown = same_shot(feasible[i], result.shot) ||
+                       std::any_of(result.alternatives.begin(), result.alternatives.end(),
+                                   [&](const PlannedShot& a) { return same_shot(a, feasible[i]); });
+    if (!shown) result.alternatives.push_back(std::move(feasible[i]));
+  }
   result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return result;
 }

@@ -10,11 +10,11 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <cstdio>
 #include <numbers>
 #include <string>
 #include <vector>
 
+#include "ball_layout.hpp"
 #include "cueball/batch.hpp"
 #include "cueball/errors.hpp"
 #include "cueball/scenario.hpp"
@@ -24,25 +24,8 @@ namespace {
 
 constexpr double kDeg = std::numbers::pi / 180.0;
 
-struct Placed {
-  int id;
-  Vec2 p;
-};
-
-std::string exact(double v) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.17g", v);
-  return buf;
-}
-
-Scenario layout(const std::vector<Placed>& balls) {
-  std::string json = R"({"table": "pool_9ft", "balls": [)";
-  for (std::size_t i = 0; i < balls.size(); ++i) {
-    json += (i ? ", " : "") + std::string(R"({"id": )") + std::to_string(balls[i].id) + R"(, "position": [)" +
-            exact(balls[i].p.x) + ", " + exact(balls[i].p.y) + "]}";
-  }
-  return scenario_from_json(json + "]}");
-}
+using test::layout;
+using test::Placed;
 
 Vec2 pocket_centre(const Scenario& s, const std::string& name) {
   for (const Pocket& p : s.table.pockets)

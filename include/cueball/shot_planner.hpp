@@ -238,7 +238,10 @@ struct PlannedShot {
 
 struct ShotPlanResult {
   PlannedShot shot;                       ///< the recommended one
-  std::vector<PlannedShot> alternatives;  ///< the other feasible candidates, best first (by screened probability)
+  /// The other feasible shots, best first (by screened probability): of each
+  /// (kind, pocket, cushions, intermediate ball) other than the chosen one's,
+  /// its best variant only.
+  std::vector<PlannedShot> alternatives;
   std::vector<std::string> rejected;      ///< each skipped candidate and why
   int cue_ball = 0;                       ///< id of the struck ball
   int simulations = 0;                    ///< engine runs in all (<= the request's budget)

@@ -450,6 +450,14 @@ void geometric_candidates(const Scenario& s, const PlanRequest& q, std::size_t c
     consider(base, {C, ghost(O, P)}, {}, {O, P}, out);
     return;
   }
+  // Rejects `c` (true) when `ball` meets a cushion more than
+  // kMaxIncidenceDeg from its normal.
+  const auto too_steep = [&](const Candidate& c, const char* ball, double incidence, const char* which) {
+    if (incidence <= kMaxIncidenceDeg) return false;
+    rejected.push_back(c.what + ": " + ball + " would meet the cushion at " + format_number(std::round(incidence)) +
+                       " deg from its normal (> " + format_number(kMaxIncidenceDeg) + ")" + which);
+    return true;
+  };
   if (kind == ShotKind::kick) {
     const Vec2 G = ghost(O, P);
     for (std::size_t k : rails) {
@@ -463,11 +471,7 @@ void geometric_candidates(const Scenario& s, const PlanRequest& q, std::size_t c
         rejected.push_back(c.what + ": the cue ball's bank point is not on the cushion");
         continue;
       }
-      if (const double incidence = line.incidence_deg(C, Y); incidence > kMaxIncidenceDeg) {
-        rejected.push_back(c.what + ": the cue ball would meet the cushion at " + format_number(std::round(incidence)) +
-                           " deg from its normal (> 75)");
-        continue;
-      }
+      if (too_steep(c, "the cue ball", line.incidence_deg(C, Y), "")) continue;
       consider(c, {C, Y, G}, {}, {O, P}, out);
     }
     return;
@@ -510,11 +514,7 @@ void geometric_candidates(const Scenario& s, const PlanRequest& q, std::size_t c
       rejected.push_back(c.what + ": the bank point is not on the cushion");
       continue;
     }
-    if (const double incidence = line.incidence_deg(O, X); incidence > kMaxIncidenceDeg) {
-      rejected.push_back(c.what + ": the object ball would meet the cushion at " +
-                         format_number(std::round(incidence)) + " deg from its normal (> 75)");
-      continue;
-    }
+    if (too_steep(c, "the object ball", line.incidence_deg(O, X), "")) continue;
     consider(c, {C, ghost(O, X)}, {}, {O, X, P}, out);
   }
   for (std::size_t k1 : rails) {
@@ -539,12 +539,9 @@ void geometric_candidates(const Scenario& s, const PlanRequest& q, std::size_t c
         rejected.push_back(c.what + ": a bank point is not on its cushion");
         continue;
       }
-      const double incidence = std::max(first.incidence_deg(O, X1), second.incidence_deg(X1, X2));
-      if (incidence > kMaxIncidenceDeg) {
-        rejected.push_back(c.what + ": the object ball would meet the cushion at " +
-                           format_number(std::round(incidence)) + " deg from its normal (> 75), first or second bank");
+      if (too_steep(c, "the object ball", std::max(first.incidence_deg(O, X1), second.incidence_deg(X1, X2)),
+                    ", first or second bank"))
         continue;
-      }
       consider(c, {C, ghost(O, X1)}, {}, {O, X1, X2, P}, out);
     }
   }

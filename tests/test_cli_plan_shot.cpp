@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "cli_runner.hpp"
+#include "plan_shot_scenarios.hpp"
 #include "temp_dir.hpp"
 
 namespace cueball {
@@ -22,16 +23,7 @@ using test::expect_usage_error;
 using test::run_cli;
 using test::TempDir;
 
-// The 1 ball 0.5 m from the top-right pocket, cut about 20 degrees, and the 9
-// out of the way.
-constexpr const char* kCutShot = R"({
-  "table": "pool_9ft",
-  "balls": [
-    {"id": 0, "name": "cue", "position": [1.55, 0.70]},
-    {"id": 1, "name": "1", "position": [2.214, 0.944]},
-    {"id": 9, "name": "9", "position": [0.8, 1.0]}
-  ]
-})";
+using test::kCutShot;
 
 // A wall of three balls between the cue ball and the 1: only a kick reaches it.
 constexpr const char* kWalled = R"({

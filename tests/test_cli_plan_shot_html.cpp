@@ -15,6 +15,7 @@
 
 #include "cli_runner.hpp"
 #include "cueball/scenario.hpp"
+#include "plan_shot_scenarios.hpp"
 #include "temp_dir.hpp"
 #include "viewer_page.hpp"
 
@@ -26,17 +27,7 @@ using test::expect_usage_error;
 using test::run_cli;
 using test::TempDir;
 
-// The cut shot of test_cli_plan_shot.cpp: the 1 ball 0.5 m from the
-// top-right pocket, cut about 20 degrees. The cue reaches no rail from here,
-// so the planned cue is level.
-constexpr const char* kCutShot = R"({
-  "table": "pool_9ft",
-  "balls": [
-    {"id": 0, "name": "cue", "position": [1.55, 0.70]},
-    {"id": 1, "name": "1", "position": [2.214, 0.944]},
-    {"id": 9, "name": "9", "position": [0.8, 1.0]}
-  ]
-})";
+using test::kCutShot;
 
 constexpr double kRadius = 0.028575;  // the pool ball
 

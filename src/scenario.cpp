@@ -8,6 +8,7 @@
 #include <initializer_list>
 #include <limits>
 #include <numbers>
+#include <optional>
 #include <set>
 
 #include <nlohmann/json.hpp>
@@ -128,6 +129,38 @@ Parameters read_parameters(const Reader& r, const Table& table) {
   return p;
 }
 
+// "cushion": the model by name, then its constants (each model's own
+// defaults, cushion_model.hpp).
+CushionSettings read_cushion(const Reader& r) {
+  r.allow_only({"model", "restitution", "friction", "solver", "paper_steps"});
+  const std::string name = r.text("model", to_string(CushionModel::mathavan_2010));
+  const std::optional<CushionModel> model = cushion_model_from_string(name);
+  if (!model)
+    throw InvalidArgument(r.field("model"), r.field("model") + " = " + quote_input(name) +
+                                                " is not known; allowed: " + cushion_model_names(""));
+  CushionSettings c = default_cushion_settings(*model);
+  if (*model == CushionModel::mathavan_2010) {
+    c.restitution = r.number("restitution", c.restitution, 1e-9, 1.0, "Mathavan e_e");
+    c.friction = r.number("friction", c.friction, 0.0, 0.43, "Mathavan mu_w, at most tan(theta)");
+    const std::string solver = r.text("solver", to_string(c.solver));
+    const std::optional<CushionSolver> chosen = cushion_solver_from_string(solver);
+    if (!chosen)
+      throw InvalidArgument(r.field("solver"), r.field("solver") + " = " + quote_input(solver) +
+                                                   " is not known; allowed: exact, paper");
+    c.solver = *chosen;
+    c.paper_steps = r.integer("paper_steps", c.paper_steps, 1, 1000000, "Euler steps per impact");
+    return c;
+  }
+  for (const char* key : {"solver", "paper_steps"}) {
+    if (r.has(key))
+      throw InvalidArgument(r.field(key), r.field(key) + " applies to the model \"mathavan_2010\" only, not to " +
+                                              quote_input(name));
+  }
+  c.restitution = r.number("restitution", c.restitution, 0.0, 1.0, "Han 2005 e");
+  c.friction = r.number("friction", c.friction, 0.0, 1.0, "Han 2005 mu");
+  return c;
+}
+
 std::vector<SimulationBall> read_rack(const Reader& r, const Table& table) {
   r.allow_only({"type", "gap_sigma", "seed"});
   RackOptions options;
@@ -244,6 +277,7 @@ InvalidArgument relabelled(const InvalidArgument& e, const Json& j, const std::v
     if (f == key) return at(std::string(key) == "mass" || std::string(key) == "radius" ? ball_field(key) : "scenario.parameters." + f);
   }
   if (f == "cushion_restitution" || f == "e_e") return at("scenario.cushion.restitution");
+  if (f == "cushion_paper_steps") return at("scenario.cushion.paper_steps");
   if (f == "cushion_friction" || f == "mu_w") {
     // mu_w's bounds depend on the contact angle (radius, cushion height) and on mu_s.
     if (given("cushion", "friction")) return at("scenario.cushion.friction");
@@ -336,7 +370,12 @@ Json scenario_json(const Scenario& s) {
   Json j;
   j["table"] = Json::parse(table_to_json(s.table));
   j["parameters"] = parameters_json(p);
-  j["cushion"] = {{"restitution", s.settings.cushion_restitution}, {"friction", s.settings.cushion_friction}};
+  const CushionSettings& cushion = s.settings.cushion;
+  j["cushion"] = {{"model", to_string(cushion.model)}, {"restitution", cushion.restitution}, {"friction", cushion.friction}};
+  if (cushion.model == CushionModel::mathavan_2010) {
+    j["cushion"]["solver"] = to_string(cushion.solver);
+    if (cushion.solver == CushionSolver::paper) j["cushion"]["paper_steps"] = cushion.paper_steps;
+  }
   const BallCollisionParameters& b = s.settings.ball_collision;
   j["ball_collision"] = {{"restitution", b.restitution},
                          {"friction", b.friction},
@@ -407,12 +446,7 @@ Scenario scenario_from_json(std::string_view json_text) {
     Reader(r.at("parameters"), "scenario.parameters").allow_only({"preset", "mass", "radius", "mu_s", "mu_r", "mu_sp", "g"});
   }
   s.settings.parameters = read_parameters(Reader(r.has("parameters") ? r.at("parameters") : empty, "scenario.parameters"), s.table);
-  if (r.has("cushion")) {
-    const Reader c(r.at("cushion"), "scenario.cushion");
-    c.allow_only({"restitution", "friction"});
-    s.settings.cushion_restitution = c.number("restitution", s.settings.cushion_restitution, 1e-9, 1.0, "Mathavan e_e");
-    s.settings.cushion_friction = c.number("friction", s.settings.cushion_friction, 0.0, 0.43, "Mathavan mu_w, at most tan(theta)");
-  }
+  if (r.has("cushion")) s.settings.cushion = read_cushion(Reader(r.at("cushion"), "scenario.cushion"));
   if (r.has("ball_collision")) {
     const Reader c(r.at("ball_collision"), "scenario.ball_collision");
     c.allow_only({"restitution", "friction", "friction_excess", "friction_decay"});
@@ -556,8 +590,9 @@ std::string result_to_json(const Scenario& s, const SimulationResult& r, double 
   Json out;
   out["table"] = Json::parse(table_to_json(s.table));
   out["parameters"] = parameters_json(p);
-  out["parameters"]["cushion_restitution"] = s.settings.cushion_restitution;
-  out["parameters"]["cushion_friction"] = s.settings.cushion_friction;
+  out["parameters"]["cushion_model"] = to_string(s.settings.cushion.model);
+  out["parameters"]["cushion_restitution"] = s.settings.cushion.restitution;
+  out["parameters"]["cushion_friction"] = s.settings.cushion.friction;
   if (s.cue) {
     const ShotStrike& c = *s.cue;
     const CueStrike k = resolved_strike(s, c.strike);

@@ -211,12 +211,11 @@ class Simulation {
  private:
   // The impact model of a cushion or jaw at this contact height. A table has
   // one height or a few: each model (and its validation) is built once.
-  CushionImpactModel model_for(double contact_height) {
+  CushionContact model_for(double contact_height) {
     for (const auto& [height, model] : models_by_height_) {
       if (height == contact_height) return model;
     }
-    const CushionImpactModel m =
-        cushion_impact_model(p_, {settings_.cushion_restitution, settings_.cushion_friction, contact_height});
+    const CushionContact m = cushion_contact(p_, settings_.cushion, contact_height);
     models_by_height_.emplace_back(contact_height, m);
     return m;
   }
@@ -564,17 +563,17 @@ class Simulation {
   }
 
   // A ball meeting a cushion or jaw whose inward normal at the contact is n:
-  // solved in the impact frame by the Mathavan model (exact solver).
-  BallState wall_impact(int i, const BallState& s, Vec2 n, const CushionImpactModel& model) const {
+  // solved in the impact frame by the chosen cushion model (cushion_model.hpp).
+  BallState wall_impact(int i, const BallState& s, Vec2 n, const CushionContact& model) const {
     if (-dot(s.velocity, n) < kPushSpeed) return rest_on_wall(i, s, n);
     const ImpactFrame frame(n);
     IncomingBall in;
     in.velocity = frame.to_frame(s.velocity, 0.0);
     in.angular_velocity = frame.to_frame(horizontal(s.angular_velocity), s.angular_velocity.z);
     if (!(in.velocity.y > 0.0)) return s;  // grazing by round-off: nothing to exchange
-    CushionImpactResult r;
+    CushionRebound r;
     try {
-      r = solve_cushion_impact_unchecked(in, model);  // models validated at construction
+      r = cushion_rebound(in, model);  // models validated at construction
     } catch (const InfeasibleShot&) {
       // The model has no rebound: the ball wedges between cushion and bed
       // (normal velocity never reverses). A resting contact.
@@ -584,6 +583,9 @@ class Simulation {
     out.velocity = frame.from_frame(r.velocity);
     const Vec2 w = frame.from_frame(r.angular_velocity);
     out.angular_velocity = {w.x, w.y, r.angular_velocity.z};
+    // A model may leave the ball pressing on (han_2005 with a small e): a
+    // resting contact from there.
+    if (!(dot(out.velocity, n) > 0.0)) return rest_on_wall(i, out, n);
     return out;
   }
 
@@ -604,8 +606,8 @@ class Simulation {
   const Parameters& p_;
   int n_;
   double now_ = 0.0;
-  std::vector<CushionImpactModel> cushion_models_, jaw_models_;
-  std::vector<std::pair<double, CushionImpactModel>> models_by_height_;  // model_for()'s cache
+  std::vector<CushionContact> cushion_models_, jaw_models_;
+  std::vector<std::pair<double, CushionContact>> models_by_height_;  // model_for()'s cache
   std::vector<ContactLine> cushion_lines_;
   std::vector<double> jaw_distance_;
   std::vector<PocketGroup> groups_;
@@ -659,17 +661,11 @@ void validate_simulation_input(const Table& table, const std::vector<SimulationB
   validate(settings.parameters);
   validate(table);
   validate(settings.ball_collision);
-  require_in_range("cushion_restitution", settings.cushion_restitution, 1e-9, 1.0, "Mathavan e_e");
-  require_in_range("cushion_friction", settings.cushion_friction, 0.0, 1.0, "Mathavan mu_w");
   if (settings.max_events < 1)
     throw InvalidArgument("max_events", static_cast<double>(settings.max_events), "[1, 2^31)");
   // The impact model of every cushion and jaw (the simulator builds them when it starts).
-  for (const CushionSegment& c : table.cushions)
-    (void)cushion_impact_model(settings.parameters,
-                               {settings.cushion_restitution, settings.cushion_friction, c.contact_height});
-  for (const JawArc& j : table.jaws)
-    (void)cushion_impact_model(settings.parameters,
-                               {settings.cushion_restitution, settings.cushion_friction, j.contact_height});
+  for (const CushionSegment& c : table.cushions) (void)cushion_contact(settings.parameters, settings.cushion, c.contact_height);
+  for (const JawArc& j : table.jaws) (void)cushion_contact(settings.parameters, settings.cushion, j.contact_height);
   const double radius = settings.parameters.ball.radius;
   for (std::size_t i = 0; i < balls.size(); ++i) {
     try {

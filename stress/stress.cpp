@@ -1137,8 +1137,9 @@ std::string scenario_json(const Shot& s) {
   out += " \"parameters\": {\"mass\": " + num(p.ball.mass) + ", \"radius\": " + num(p.ball.radius) +
          ", \"mu_s\": " + num(p.cloth.sliding_friction) + ", \"mu_r\": " + num(p.cloth.rolling_resistance) +
          ", \"mu_sp\": " + num(p.cloth.spin_friction) + ", \"g\": " + num(p.cloth.gravity) + "},\n";
-  out += " \"cushion\": {\"restitution\": " + num(s.settings.cushion_restitution) +
-         ", \"friction\": " + num(s.settings.cushion_friction) + "},\n";
+  out += " \"cushion\": {\"model\": \"" + std::string(to_string(s.settings.cushion.model)) +
+         "\", \"restitution\": " + num(s.settings.cushion.restitution) +
+         ", \"friction\": " + num(s.settings.cushion.friction) + "},\n";
   out += " \"ball_collision\": {\"restitution\": " + num(c.restitution) + ", \"friction\": " + num(c.friction) +
          ", \"friction_excess\": " + num(c.friction_excess) + ", \"friction_decay\": " + num(c.friction_decay) + "},\n";
   out += " \"max_events\": " + std::to_string(s.settings.max_events) + ",\n";

@@ -193,6 +193,7 @@ TEST(CliSimulate, ResultFileHasTheDocumentedStructure) {
   for (const char* key : {"mass", "radius", "mu_s", "mu_r", "mu_sp", "g", "cushion_restitution", "cushion_friction"})
     EXPECT_TRUE(j.at("parameters").at(key).is_number()) << key;
   EXPECT_DOUBLE_EQ(j.at("parameters").at("radius").get<double>(), 0.028575);
+  EXPECT_EQ(j.at("parameters").at("cushion_model"), "mathavan_2010");
 
   // Balls.
   const Json& balls = j.at("balls");

@@ -73,8 +73,8 @@ void expect_replays(const Scenario& s) {
   EXPECT_EQ(back.settings.parameters.cloth.rolling_resistance, s.settings.parameters.cloth.rolling_resistance);
   EXPECT_EQ(back.settings.parameters.cloth.spin_friction, s.settings.parameters.cloth.spin_friction);
   EXPECT_EQ(back.settings.parameters.cloth.gravity, s.settings.parameters.cloth.gravity);
-  EXPECT_EQ(back.settings.cushion_restitution, s.settings.cushion_restitution);
-  EXPECT_EQ(back.settings.cushion_friction, s.settings.cushion_friction);
+  EXPECT_EQ(back.settings.cushion.restitution, s.settings.cushion.restitution);
+  EXPECT_EQ(back.settings.cushion.friction, s.settings.cushion.friction);
   EXPECT_EQ(back.settings.ball_collision.restitution, s.settings.ball_collision.restitution);
   EXPECT_EQ(back.settings.ball_collision.friction, s.settings.ball_collision.friction);
   EXPECT_EQ(back.settings.ball_collision.friction_excess, s.settings.ball_collision.friction_excess);

@@ -118,6 +118,32 @@ TEST(Simulator, RandomBreaksStayPhysicalAtEveryEvent) {
   EXPECT_GT(events, shots * 20);
 }
 
+// The same invariants under every cushion model (the break's balls meet
+// cushions and jaws many times each).
+TEST(Simulator, BreaksStayPhysicalUnderEveryCushionModel) {
+  std::vector<CushionSettings> models;
+  for (const CushionModel model : {CushionModel::mathavan_2010, CushionModel::han_2005})
+    models.push_back(default_cushion_settings(model));
+  models.push_back(models.back());
+  models.back().restitution = 0.1;  // Han 2005 leaves such balls pressing on the cushion
+  for (const CushionSettings& cushion : models) {
+    const CushionModel model = cushion.model;
+    std::mt19937_64 rng(11);
+    std::uniform_real_distribution<double> speed(2.0, 11.0), offset(-0.3, 0.3);
+    int cushion_hits = 0;
+    for (int shot = 0; shot < 20; ++shot) {
+      Scenario s = scenario_from_json(break_json(speed(rng), 0.0, offset(rng), offset(rng), shot));
+      s.settings.cushion = cushion;
+      SCOPED_TRACE(std::string(to_string(model)) + " e = " + std::to_string(cushion.restitution) + " shot " +
+                   std::to_string(shot));
+      const SimulationResult r = run_scenario(s);
+      for (const Event& e : r.events) cushion_hits += e.type == EventType::ball_cushion || e.type == EventType::ball_jaw;
+      expect_physical_at_every_event(s.table, r, s.settings.parameters);
+    }
+    EXPECT_GT(cushion_hits, 100) << to_string(model);
+  }
+}
+
 // The same invariants on the other tables and racks: snooker and 8-ball
 // breaks, and random three-ball shots (any aim, raised cue) on pool and carom.
 TEST(Simulator, OtherTablesAndRacksStayPhysicalAtEveryEvent) {

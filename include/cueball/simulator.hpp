@@ -5,7 +5,7 @@
 // (events.hpp) and resolved by the physics kernels:
 //   motion transitions     cloth_motion.hpp (sliding -> rolling -> spinning -> rest, spin stop)
 //   ball - ball            ball_collision.hpp (impulse with restitution and ball-ball friction)
-//   ball - cushion, jaw    cushion_impact.hpp (Mathavan 2010, exact solver), in the frame of
+//   ball - cushion, jaw    cushion_model.hpp (by name; Mathavan 2010 solved exactly by default), in the frame of
 //                          the cushion's nose line or of the jaw's normal at the contact
 //   ball - pocket          capture by the pocket's circle (table.hpp)
 // The simulation advances from event to event, never by time steps; the
@@ -35,6 +35,7 @@
 #include <vector>
 
 #include "cueball/ball_collision.hpp"
+#include "cueball/cushion_model.hpp"
 #include "cueball/cloth_motion.hpp"
 #include "cueball/cushion_impact.hpp"
 #include "cueball/parameters.hpp"
@@ -53,11 +54,11 @@ struct SimulationSettings {
   /// Ball and cloth: the pool preset by default, as the default table, rack
   /// and scenario, the CLI and the Python module (README "Units and defaults").
   Parameters parameters = pool_parameters();
-  /// e_e and mu_w of the Mathavan model: the authors' fit (0.98, 0.14). The
-  /// exact solver agrees with the Euler scheme they fitted with to 1e-3 m/s,
-  /// so their constants hold for it too (test_cushion_impact).
-  double cushion_restitution = 0.98;
-  double cushion_friction = 0.14;
+  /// The cushion model and its constants (cushion_model.hpp): by default
+  /// Mathavan 2010 solved exactly, with the authors' fit e_e = 0.98, mu_w =
+  /// 0.14. The exact solver agrees with the Euler scheme they fitted with to
+  /// 1e-3 m/s, so their constants hold for it too (test_cushion_impact).
+  CushionSettings cushion;
   BallCollisionParameters ball_collision = ball_collision_alciatore();
   int max_events = 100000;                  ///< SimulationError beyond this
 };

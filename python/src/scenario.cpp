@@ -118,7 +118,13 @@ std::string scenario_json(const py::object& table, const py::iterable& balls, co
     d["parameters"] = py::dict("mass"_a = p.ball.mass, "radius"_a = p.ball.radius, "mu_s"_a = p.cloth.sliding_friction,
                                "mu_r"_a = p.cloth.rolling_resistance, "mu_sp"_a = p.cloth.spin_friction,
                                "g"_a = p.cloth.gravity);
-    d["cushion"] = py::dict("restitution"_a = settings->cushion_restitution, "friction"_a = settings->cushion_friction);
+    const cueball::CushionSettings& k = settings->cushion;
+    d["cushion"] = py::dict("model"_a = cueball::to_string(k.model), "restitution"_a = k.restitution,
+                            "friction"_a = k.friction);
+    if (k.model == cueball::CushionModel::mathavan_2010) {
+      d["cushion"]["solver"] = cueball::to_string(k.solver);
+      d["cushion"]["paper_steps"] = k.paper_steps;
+    }
     const cueball::BallCollisionParameters& c = settings->ball_collision;
     d["ball_collision"] = py::dict("restitution"_a = c.restitution, "friction"_a = c.friction,
                                    "friction_excess"_a = c.friction_excess, "friction_decay"_a = c.friction_decay);
@@ -142,6 +148,22 @@ std::string scenario_json(const py::object& table, const py::iterable& balls, co
   if (!noise.is_none()) d["noise"] = noise;
   const std::string rest = json_text(d, "scenario");  // "{...}", never empty: "balls" is there
   return "{\"table\": " + table_text + ", " + rest.substr(1);
+}
+
+cueball::CushionModel cushion_model_named(const std::string& name, const char* field) {
+  const std::optional<cueball::CushionModel> model = cueball::cushion_model_from_string(name);
+  if (!model)
+    throw cueball::InvalidArgument(field, std::string(field) + " = " + cueball::quote_input(name) +
+                                              " is not known; allowed: " + cueball::cushion_model_names("'"));
+  return *model;
+}
+
+cueball::CushionSolver cushion_solver_named(const std::string& name, const char* field) {
+  const std::optional<cueball::CushionSolver> solver = cueball::cushion_solver_from_string(name);
+  if (!solver)
+    throw cueball::InvalidArgument(field, std::string(field) + " = " + cueball::quote_input(name) +
+                                              " is not known; allowed: 'exact', 'paper'");
+  return *solver;
 }
 
 }  // namespace
@@ -169,29 +191,73 @@ void bind_scenario(py::module_& m) {
   const SimulationSettings defaults;
   py::class_<SimulationSettings> settings_cls(
       m, "SimulationSettings",
-      "The physics of a shot: parameters (ball and cloth), the cushion's e_e and mu_w (Mathavan 2010),\n"
-      "the ball-ball contact, and max_events (SimulationError beyond it, [1, 1e6]).");
+      "The physics of a shot: parameters (ball and cloth); the cushion model by name (cushion_model:\n"
+      "'mathavan_2010', the default, or 'han_2005') with its restitution and friction (each model's own\n"
+      "defaults when not given) and, for mathavan_2010, cushion_solver 'exact' or 'paper' (the Euler\n"
+      "scheme, cushion_paper_steps steps); the ball-ball contact; and max_events (SimulationError\n"
+      "beyond it, [1, 1e6]).");
   settings_cls
-      .def(py::init([](const cueball::Parameters& p, double e, double mu, const cueball::BallCollisionParameters& c,
-                       int max_events) { return SimulationSettings{p, e, mu, c, max_events}; }),
+      .def(py::init([](const cueball::Parameters& p, const py::object& e, const py::object& mu,
+                       const cueball::BallCollisionParameters& c, int max_events, const std::string& model,
+                       const std::string& solver, int paper_steps) {
+             SimulationSettings s;
+             s.parameters = p;
+             s.cushion = cueball::default_cushion_settings(cushion_model_named(model, "cushion_model"));
+             if (!e.is_none()) s.cushion.restitution = e.cast<double>();
+             if (!mu.is_none()) s.cushion.friction = mu.cast<double>();
+             s.cushion.solver = cushion_solver_named(solver, "cushion_solver");
+             s.cushion.paper_steps = paper_steps;
+             s.ball_collision = c;
+             s.max_events = max_events;
+             return s;
+           }),
            py::arg_v("parameters", defaults.parameters, "pool_parameters()"),
-           "cushion_restitution"_a = defaults.cushion_restitution, "cushion_friction"_a = defaults.cushion_friction,
+           py::arg_v("cushion_restitution", py::none(), "the model's own (0.98 for mathavan_2010)"),
+           py::arg_v("cushion_friction", py::none(), "the model's own (0.14 for mathavan_2010)"),
            py::arg_v("ball_collision", defaults.ball_collision, "ball_collision_alciatore()"),
-           "max_events"_a = defaults.max_events)
+           "max_events"_a = defaults.max_events, "cushion_model"_a = cueball::to_string(defaults.cushion.model),
+           "cushion_solver"_a = cueball::to_string(defaults.cushion.solver),
+           "cushion_paper_steps"_a = defaults.cushion.paper_steps)
       .def_readwrite("parameters", &SimulationSettings::parameters)
-      .def_readwrite("cushion_restitution", &SimulationSettings::cushion_restitution, "e_e, (0, 1]")
-      .def_readwrite("cushion_friction", &SimulationSettings::cushion_friction, "mu_w, >= 0")
+      .def_property(
+          "cushion_model", [](const SimulationSettings& s) { return std::string(cueball::to_string(s.cushion.model)); },
+          [](SimulationSettings& s, const std::string& name) { s.cushion.model = cushion_model_named(name, "cushion_model"); },
+          "the cushion model by name (its constants stay as they are: set them too)")
+      .def_property(
+          "cushion_restitution", [](const SimulationSettings& s) { return s.cushion.restitution; },
+          [](SimulationSettings& s, double v) { s.cushion.restitution = v; }, "e_e (mathavan_2010, (0, 1]) or e (han_2005, [0, 1])")
+      .def_property(
+          "cushion_friction", [](const SimulationSettings& s) { return s.cushion.friction; },
+          [](SimulationSettings& s, double v) { s.cushion.friction = v; }, "mu_w (mathavan_2010) or mu (han_2005), >= 0")
+      .def_property(
+          "cushion_solver", [](const SimulationSettings& s) { return std::string(cueball::to_string(s.cushion.solver)); },
+          [](SimulationSettings& s, const std::string& name) { s.cushion.solver = cushion_solver_named(name, "cushion_solver"); },
+          "mathavan_2010's solver: 'exact' or 'paper'")
+      .def_property(
+          "cushion_paper_steps", [](const SimulationSettings& s) { return s.cushion.paper_steps; },
+          [](SimulationSettings& s, int n) { s.cushion.paper_steps = n; }, "the paper solver's Euler steps, [1, 1e6]")
       .def_readwrite("ball_collision", &SimulationSettings::ball_collision)
       .def_readwrite("max_events", &SimulationSettings::max_events);
   add_value_semantics(
       settings_cls, "SimulationSettings",
-      {"parameters", "cushion_restitution", "cushion_friction", "ball_collision", "max_events"},
+      {"parameters", "cushion_model", "cushion_restitution", "cushion_friction", "cushion_solver", "cushion_paper_steps",
+       "ball_collision", "max_events"},
       [](const SimulationSettings& s) {
-        return py::make_tuple(s.parameters, s.cushion_restitution, s.cushion_friction, s.ball_collision, s.max_events);
+        return py::make_tuple(s.parameters, std::string(cueball::to_string(s.cushion.model)), s.cushion.restitution,
+                              s.cushion.friction, std::string(cueball::to_string(s.cushion.solver)), s.cushion.paper_steps,
+                              s.ball_collision, s.max_events);
       },
       [](const py::tuple& t) {
-        return SimulationSettings{t[0].cast<cueball::Parameters>(), t[1].cast<double>(), t[2].cast<double>(),
-                                  t[3].cast<cueball::BallCollisionParameters>(), t[4].cast<int>()};
+        SimulationSettings s;
+        s.parameters = t[0].cast<cueball::Parameters>();
+        s.cushion.model = cushion_model_named(t[1].cast<std::string>(), "cushion_model");
+        s.cushion.restitution = t[2].cast<double>();
+        s.cushion.friction = t[3].cast<double>();
+        s.cushion.solver = cushion_solver_named(t[4].cast<std::string>(), "cushion_solver");
+        s.cushion.paper_steps = t[5].cast<int>();
+        s.ball_collision = t[6].cast<cueball::BallCollisionParameters>();
+        s.max_events = t[7].cast<int>();
+        return s;
       });
 
   py::class_<ShotStrike> shot(

@@ -1,0 +1,82 @@
+// The ball-cushion models by name: one is chosen once, at the API boundary
+// (SimulationSettings::cushion, a scenario's "cushion": {"model": ...}), its
+// constants are validated and built once per contact height
+// (cushion_contact()), and the simulator's hot path dispatches on the name
+// with a switch (cushion_rebound()): plain structs and functions, no class
+// hierarchy.
+//
+//   mathavan_2010      cushion_impact.hpp (src/cushion/mathavan_2010*.cpp): the
+//                      impact integrated over the normal impulse with friction
+//                      at the cushion and at the bed; solver "exact" (the
+//                      default) or the paper's Euler scheme ("paper").
+//   han_2005           cushion/han_2005.hpp: one impulse at the cushion, closed
+//                      form, the bed not involved.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <string_view>
+
+#include "cueball/cushion/han_2005.hpp"
+#include "cueball/cushion/rebound.hpp"
+#include "cueball/cushion_impact.hpp"
+#include "cueball/parameters.hpp"
+
+namespace cueball {
+
+enum class CushionModel { mathavan_2010, han_2005 };
+
+/// "mathavan_2010", "han_2005".
+const char* to_string(CushionModel model);
+
+/// The model of that name, if there is one (the caller names its field in the error).
+std::optional<CushionModel> cushion_model_from_string(std::string_view name);
+
+/// The names, comma-separated, each between `quote`s: for messages and help texts.
+std::string cushion_model_names(std::string_view quote = "\"");
+
+/// "exact" or "paper" (the Euler scheme of Mathavan 2010).
+const char* to_string(CushionSolver solver);
+std::optional<CushionSolver> cushion_solver_from_string(std::string_view name);
+
+/// The cushion of a simulation: the model and its constants. The contact
+/// height comes from each cushion and jaw of the table.
+struct CushionSettings {
+  CushionModel model = CushionModel::mathavan_2010;
+  /// mathavan_2010: e_e, the energetic coefficient (16b), (0, 1];
+  /// han_2005: Newton's coefficient e along the common normal, [0, 1].
+  double restitution = 0.98;
+  /// mathavan_2010: mu_w, [0, tan(theta)]; han_2005: mu, [0, 1].
+  double friction = 0.14;
+  /// mathavan_2010 only: the exact solver (default) or the paper's Euler scheme.
+  CushionSolver solver = CushionSolver::exact;
+  /// mathavan_2010 with solver paper: N, the Euler steps per impact, [1, 10^6].
+  int paper_steps = 5000;
+};
+
+/// Each model's own constants, as its source gives them: mathavan_2010 the
+/// authors' fit (e_e = 0.98, mu_w = 0.14, section 3.5, fitted with their
+/// Euler scheme and equally close with the exact solver); han_2005 e = 0.85,
+/// mu = 0.2 (cushion/han_2005.hpp).
+CushionSettings default_cushion_settings(CushionModel model);
+
+/// The chosen model's constants for one contact height, validated: what the
+/// simulator keeps per cushion and jaw.
+struct CushionContact {
+  CushionModel model = CushionModel::mathavan_2010;
+  CushionImpactModel mathavan;
+  CushionImpactOptions mathavan_options;
+  Han2005Cushion han;
+};
+
+/// Validates `settings` (InvalidArgument names "cushion_restitution",
+/// "cushion_friction", "cushion_paper_steps" or the model's constant) and
+/// builds the contact at height h.
+CushionContact cushion_contact(const Parameters& table, const CushionSettings& settings, double contact_height);
+
+/// The ball just after the impact, by the contact's model. `ball` moves into
+/// the cushion (yG' > 0, zG' = 0). Throws InfeasibleShot where mathavan_2010
+/// has no rebound (the ball wedges between cushion and bed).
+CushionRebound cushion_rebound(const IncomingBall& ball, const CushionContact& contact);
+
+}  // namespace cueball

@@ -1,0 +1,92 @@
+// The cushion models by name (include/cueball/cushion_model.hpp).
+
+#include "cueball/cushion_model.hpp"
+
+#include <array>
+#include <cmath>
+
+#include "cueball/errors.hpp"
+
+namespace cueball {
+
+namespace {
+
+constexpr std::array kCushionModels{CushionModel::mathavan_2010, CushionModel::han_2005};
+
+}  // namespace
+
+const char* to_string(CushionModel model) {
+  switch (model) {
+    case CushionModel::mathavan_2010: return "mathavan_2010";
+    case CushionModel::han_2005: return "han_2005";
+  }
+  return "?";
+}
+
+std::optional<CushionModel> cushion_model_from_string(std::string_view name) {
+  for (CushionModel m : kCushionModels)
+    if (name == to_string(m)) return m;
+  return std::nullopt;
+}
+
+std::string cushion_model_names(std::string_view quote) {
+  std::string names;
+  for (CushionModel m : kCushionModels)
+    names += (names.empty() ? "" : ", ") + std::string(quote) + to_string(m) + std::string(quote);
+  return names;
+}
+
+const char* to_string(CushionSolver solver) { return solver == CushionSolver::paper ? "paper" : "exact"; }
+
+std::optional<CushionSolver> cushion_solver_from_string(std::string_view name) {
+  if (name == "exact") return CushionSolver::exact;
+  if (name == "paper") return CushionSolver::paper;
+  return std::nullopt;
+}
+
+CushionSettings default_cushion_settings(CushionModel model) {
+  CushionSettings s;
+  s.model = model;
+  if (model == CushionModel::han_2005) {
+    s.restitution = kHan2005Restitution;
+    s.friction = kHan2005Friction;
+  }
+  return s;
+}
+
+CushionContact cushion_contact(const Parameters& table, const CushionSettings& settings, double contact_height) {
+  CushionContact c;
+  c.model = settings.model;
+  switch (settings.model) {
+    case CushionModel::mathavan_2010:
+      require_in_range("cushion_restitution", settings.restitution, 1e-9, 1.0, "Mathavan e_e");
+      require_in_range("cushion_friction", settings.friction, 0.0, 1.0, "Mathavan mu_w");
+      if (settings.paper_steps < 1 || settings.paper_steps > 1000000)
+        throw InvalidArgument("cushion_paper_steps", settings.paper_steps, "[1, 1000000]", "Euler steps per impact");
+      c.mathavan = cushion_impact_model(table, {settings.restitution, settings.friction, contact_height});
+      c.mathavan_options.solver = settings.solver;
+      c.mathavan_options.paper_steps = settings.paper_steps;
+      break;
+    case CushionModel::han_2005:
+      validate(table);
+      require_in_range("cushion_restitution", settings.restitution, 0.0, 1.0, "Han 2005 e");
+      require_in_range("cushion_friction", settings.friction, 0.0, 1.0, "Han 2005 mu");
+      c.han = han_2005_cushion(table.ball, settings.restitution, settings.friction, contact_height);
+      validate(c.han);  // the contact height: sin_theta
+      break;
+  }
+  return c;
+}
+
+CushionRebound cushion_rebound(const IncomingBall& ball, const CushionContact& contact) {
+  switch (contact.model) {
+    case CushionModel::mathavan_2010: {
+      const CushionImpactResult r = solve_cushion_impact_unchecked(ball, contact.mathavan, contact.mathavan_options);
+      return {r.velocity, r.angular_velocity};
+    }
+    case CushionModel::han_2005: return han_2005_rebound(ball, contact.han);
+  }
+  return {ball.velocity, ball.angular_velocity};
+}
+
+}  // namespace cueball

@@ -1,0 +1,157 @@
+// Tests of the cushion models by name (src/cushion_model.cpp): names, each
+// model's own constants, validation under the simulation's field names, the
+// dispatch against each model's kernel, a scenario's "cushion" object, and
+// the simulator's rebound under each model.
+#include "cueball/cushion_model.hpp"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+#include "cueball/errors.hpp"
+#include "cueball/scenario.hpp"
+#include "cueball/simulator.hpp"
+#include "cueball/table.hpp"
+
+namespace cueball {
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+std::string field_of(const auto& call) {
+  try {
+    call();
+  } catch (const InvalidArgument& e) {
+    return e.field() + ": " + e.what();
+  }
+  return "no error";
+}
+
+TEST(CushionModel, NamesRoundTrip) {
+  for (const CushionModel m : {CushionModel::mathavan_2010, CushionModel::han_2005})
+    EXPECT_EQ(cushion_model_from_string(to_string(m)), m);
+  EXPECT_FALSE(cushion_model_from_string("mathavan").has_value());
+  EXPECT_EQ(cushion_model_names(), "\"mathavan_2010\", \"han_2005\"");
+  EXPECT_EQ(cushion_solver_from_string("paper"), CushionSolver::paper);
+  EXPECT_FALSE(cushion_solver_from_string("euler").has_value());
+}
+
+TEST(CushionModel, EachModelHasItsOwnConstants) {
+  const CushionSettings m = default_cushion_settings(CushionModel::mathavan_2010);
+  EXPECT_EQ(m.restitution, 0.98);
+  EXPECT_EQ(m.friction, 0.14);
+  EXPECT_EQ(m.solver, CushionSolver::exact);
+  const CushionSettings h = default_cushion_settings(CushionModel::han_2005);
+  EXPECT_EQ(h.model, CushionModel::han_2005);
+  EXPECT_EQ(h.restitution, 0.85);
+  EXPECT_EQ(h.friction, 0.2);
+  // The simulator's default is Mathavan 2010's.
+  EXPECT_EQ(SimulationSettings{}.cushion.model, CushionModel::mathavan_2010);
+}
+
+TEST(CushionModel, ValidationNamesTheSimulationField) {
+  const Parameters p = pool_parameters();
+  const double h = 1.4 * p.ball.radius;
+  CushionSettings s = default_cushion_settings(CushionModel::han_2005);
+  s.friction = 1.5;
+  EXPECT_EQ(field_of([&] { (void)cushion_contact(p, s, h); }).rfind("cushion_friction: ", 0), 0u);
+  s = default_cushion_settings(CushionModel::han_2005);
+  s.restitution = -0.1;
+  EXPECT_EQ(field_of([&] { (void)cushion_contact(p, s, h); }).rfind("cushion_restitution: ", 0), 0u);
+  s = default_cushion_settings(CushionModel::mathavan_2010);
+  s.solver = CushionSolver::paper;
+  s.paper_steps = 0;
+  EXPECT_EQ(field_of([&] { (void)cushion_contact(p, s, h); }).rfind("cushion_paper_steps: ", 0), 0u);
+  s = default_cushion_settings(CushionModel::mathavan_2010);
+  s.friction = 0.9;  // above tan(theta)
+  EXPECT_EQ(field_of([&] { (void)cushion_contact(p, s, h); }).rfind("mu_w: ", 0), 0u);
+}
+
+TEST(CushionModel, DispatchGivesEachModelsOwnKernel) {
+  const Parameters p = pool_parameters();
+  const double h = 1.4 * p.ball.radius;
+  const IncomingBall in = incoming_ball({1.2, 40.0 * kPi / 180.0, 0.8 * 1.2 / p.ball.radius, -0.6 * 1.2 / p.ball.radius});
+
+  CushionSettings s = default_cushion_settings(CushionModel::mathavan_2010);
+  const CushionRebound exact = cushion_rebound(in, cushion_contact(p, s, h));
+  const CushionImpactResult direct = cushion_impact(in, p, {0.98, 0.14, h});
+  EXPECT_EQ(exact.velocity.x, direct.velocity.x);
+  EXPECT_EQ(exact.angular_velocity.z, direct.angular_velocity.z);
+
+  s.solver = CushionSolver::paper;
+  s.paper_steps = 400;
+  const CushionRebound paper = cushion_rebound(in, cushion_contact(p, s, h));
+  CushionImpactOptions o;
+  o.solver = CushionSolver::paper;
+  o.paper_steps = 400;
+  EXPECT_EQ(paper.velocity.y, cushion_impact(in, p, {0.98, 0.14, h}, o).velocity.y);
+  EXPECT_NE(paper.velocity.y, exact.velocity.y);  // N = 400 is visibly coarse
+
+  s = default_cushion_settings(CushionModel::han_2005);
+  const CushionRebound han = cushion_rebound(in, cushion_contact(p, s, h));
+  const CushionRebound han_direct = han_2005_rebound(in, han_2005_cushion(p.ball, 0.85, 0.2, h));
+  EXPECT_EQ(han.velocity.x, han_direct.velocity.x);
+  EXPECT_EQ(han.velocity.y, han_direct.velocity.y);
+  EXPECT_GT(std::abs(han.velocity.y - exact.velocity.y), 0.05);  // two different models
+}
+
+TEST(CushionModel, ScenarioChoosesTheModelByName) {
+  const Scenario s = scenario_from_json(R"({"cushion": {"model": "han_2005"}, "balls": [{"id": 0, "position": [1, 0.6]}]})");
+  EXPECT_EQ(s.settings.cushion.model, CushionModel::han_2005);
+  EXPECT_EQ(s.settings.cushion.restitution, 0.85);  // the model's own constants
+  const Scenario t = scenario_from_json(
+      R"({"cushion": {"model": "mathavan_2010", "solver": "paper", "paper_steps": 800, "friction": 0.2},
+          "balls": [{"id": 0, "position": [1, 0.6]}]})");
+  EXPECT_EQ(t.settings.cushion.solver, CushionSolver::paper);
+  EXPECT_EQ(t.settings.cushion.paper_steps, 800);
+  EXPECT_EQ(t.settings.cushion.friction, 0.2);
+  EXPECT_EQ(t.settings.cushion.restitution, 0.98);
+  // It writes back what it read.
+  const Scenario back = scenario_from_json(scenario_to_json(t));
+  EXPECT_EQ(back.settings.cushion.solver, CushionSolver::paper);
+  EXPECT_EQ(back.settings.cushion.paper_steps, 800);
+  EXPECT_EQ(scenario_from_json(scenario_to_json(s)).settings.cushion.model, CushionModel::han_2005);
+
+  const auto error = [](const char* json) {
+    return field_of([&] { (void)scenario_from_json(json); });
+  };
+  const std::string unknown = error(R"({"cushion": {"model": "stronge"}, "balls": [{"id": 0, "position": [1, 0.6]}]})");
+  EXPECT_EQ(unknown.rfind("scenario.cushion.model: ", 0), 0u) << unknown;
+  EXPECT_NE(unknown.find("mathavan_2010, han_2005"), std::string::npos) << unknown;
+  const std::string solver = error(R"({"cushion": {"model": "han_2005", "solver": "paper"}, "balls": [{"id": 0, "position": [1, 0.6]}]})");
+  EXPECT_EQ(solver.rfind("scenario.cushion.solver: ", 0), 0u) << solver;
+  const std::string mu = error(R"({"cushion": {"model": "han_2005", "friction": 2}, "balls": [{"id": 0, "position": [1, 0.6]}]})");
+  EXPECT_EQ(mu.rfind("scenario.cushion.friction: ", 0), 0u) << mu;
+}
+
+TEST(CushionModel, SimulatorReboundsByTheChosenModel) {
+  // A ball rolling straight into the right cushion of the 9-ft table: its
+  // state just after the cushion event is the model's rebound of its state
+  // just before (the cushion frame: X = -y, Y = +x, Z up).
+  const Table table = pool_table_9ft();
+  const Parameters p = pool_parameters();
+  const double R = p.ball.radius, v = 1.5;
+  const std::vector<SimulationBall> balls{{0, "0", {{table.length - 0.3, table.width / 2}, {v, 0.0}, {0.0, v / R, 0.0}}}};
+  for (const CushionModel model : {CushionModel::mathavan_2010, CushionModel::han_2005}) {
+    SimulationSettings s;
+    s.cushion = default_cushion_settings(model);
+    const SimulationResult r = simulate(table, balls, s);
+    const auto hit = std::find_if(r.events.begin(), r.events.end(), [](const Event& e) { return e.type == EventType::ball_cushion; });
+    ASSERT_NE(hit, r.events.end());
+    const BallState before = r.state_at(0, hit->time - 1e-12, p);
+    const BallState after = r.state_at(0, hit->time, p);
+    const IncomingBall in{{-before.velocity.y, before.velocity.x, 0.0},
+                          {-before.angular_velocity.y, before.angular_velocity.x, before.angular_velocity.z}};
+    const CushionRebound expected = cushion_rebound(in, cushion_contact(p, s.cushion, table.cushions[static_cast<std::size_t>(hit->other)].contact_height));
+    SCOPED_TRACE(to_string(model));
+    EXPECT_NEAR(after.velocity.x, expected.velocity.y, 1e-9);
+    EXPECT_NEAR(after.velocity.y, -expected.velocity.x, 1e-9);
+    EXPECT_NEAR(after.angular_velocity.x, expected.angular_velocity.y, 1e-6);
+    EXPECT_LT(after.velocity.x, 0.0);
+  }
+}
+
+}  // namespace
+}  // namespace cueball

@@ -1,4 +1,4 @@
-// Tests of the ball-cushion impact (src/cushion_impact.cpp): the model of
+// Tests of the ball-cushion impact (src/cushion/mathavan_2010*.cpp): the model of
 // Mathavan, Jackson & Parkin (2010) with the paper's Euler scheme and the
 // exact (event-driven) solver. Covered: the claims of the paper's section 4
 // (spec 2.3) for both solvers; limits and laws of the model (frictionless

@@ -1,281 +1,40 @@
-// Ball-cushion impact of Mathavan, Jackson & Parkin (2010): the `paper`
-// (explicit Euler, section 3.4) and `exact` (event-driven) solvers.
+// Mathavan, Jackson & Parkin (2010), the ball-cushion impact: the `exact`
+// solver, the same model as the paper's Euler scheme without its
+// discretisation error (the N -> infinity limit of `paper`). Event-driven: a
+// slip reaching zero and a stick breaking end a smooth segment, the ends of
+// compression (16c) and restitution (16b) are located on the way. Each
+// contact slips or sticks (Stronge ch. 5; select_modes), the state is
+// integrated in slip form (four slip velocities and the work W), near zero
+// slip a slip's direction follows its slow manifold or an approach to zero
+// is finished in logarithmic slip time, and smooth segments are integrated
+// by the Dormand-Prince 5(4) pair with dense output (dopri5_step, and
+// FreeSlipStep, the same step written for SIMD while both contacts slip).
+// Everything a Runge-Kutta step calls is in this file, so that it inlines.
+// The equations, the scaled units and the state are in
+// mathavan_2010_equations.hpp.
 //
 // Sources: S. Mathavan, M. R. Jackson, R. M. Parkin, Proc. IMechE Part C 224
-// (2010), equations (1)-(17) as numbered there (Russian translation by
-// S. Tikhonov, 2013, with the translator's afterword; digest in
-// shared/spec/physics.md section 2). Slip, stick and slip reversal at a
-// frictional contact, with the normal impulse as independent variable: W. J.
-// Stronge, "Impact Mechanics" (CUP, 2000), chapters 4-5. Dormand-Prince 5(4)
-// pair and its dense output: E. Hairer, S. P. Norsett, G. Wanner, "Solving
-// Ordinary Differential Equations I" (2nd ed., Springer 1993), II.5 (DOPRI5).
-//
-// Everything inside is written in scaled units: velocities (and R times the
-// angular velocities, u = R w) in units of the incoming normal speed
-// V = yG'(0), impulses in units of M V, work in units of M V^2. The equations
-// then lose M and R (with I = 2/5 M R^2 the factor 5/(2MR) of (14d-f) becomes
-// 5/2), and the solution scales exactly with V (rate independence).
-//
-// With f = (a, b) the friction impulse rate at I along (X, Y') and
-// g = (g_x, g_y) the one at C along (X, Y), all per unit P_I, eqs (3), (4)
-// and (3d) give (14) in the form used here:
-//   d xG'/dP = a + g_x                       (3a)
-//   d yG'/dP = -cos(theta) - b sin(theta) + g_y   (3b)
-//   d u_x /dP = 5/2 (b + g_y)                (4a)
-//   d u_y /dP = 5/2 (a sin(theta) - g_x)     (4b)
-//   d u_z /dP = -5/2 a cos(theta)            (4c)
-//   n_C = dP_C/dP = sin(theta) - b cos(theta) (3d)
-// and, while a contact slips, Coulomb's law (7a, 7b), (10a, 10b):
-//   (a, b) = -mu_w (cos Phi, sin Phi),  g = -mu_s n_C (cos Phi', sin Phi').
-// Slip velocities (12), (13) (zG' = 0 by (14c)):
-//   s_I = (xG' + u_y sin(theta) - u_z cos(theta), -yG' sin(theta) + u_x)
-//   s_C = (xG' - u_y, yG' + u_x)
-// so that their rates are linear in the friction rates:
-//   d s_I/dP = (0, sc) + diag(7/2, s^2 + 5/2) f + diag(1 - 5s/2, 5/2 - s) g
-//   d s_C/dP = (0, -c) + diag(1 - 5s/2, 5/2 - s) f + diag(7/2, 7/2) g
-// (s = sin(theta), c = cos(theta)). The friction rates depend only on the
-// slip directions (and on which contacts stick), never on slip magnitudes.
-#include "cueball/cushion_impact.hpp"
-
+// (2010), equations (1)-(17) as numbered there (the translator's afterword
+// on RKF45 near zero slip). Slip, stick and slip reversal at a frictional
+// contact, with the normal impulse as independent variable: W. J. Stronge,
+// "Impact Mechanics" (CUP, 2000), chapters 4-5. Dormand-Prince 5(4) pair and
+// its dense output: E. Hairer, S. P. Norsett, G. Wanner, "Solving Ordinary
+// Differential Equations I" (2nd ed., Springer 1993), II.5 (DOPRI5).
+// Predictive step-size control: K. Gustafsson, ACM TOMS 20 (1994) 496-517.
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <limits>
-#include <stdexcept>
-#include <string>
-#include <utility>
+#include <cstddef>
+#include <tuple>
+#include <vector>
 
-#include "cueball/errors.hpp"
+#include "mathavan_2010_equations.hpp"
 
-namespace cueball {
+namespace cueball::mathavan_2010 {
 
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
-
-// ------------------------------------------------------------------ constants
-
-// The model's constants in the scaled equations.
-struct Coefficients {
-  double mu_w;  // cushion friction at I
-  double mu_s;  // cloth friction at C
-  double e;     // restitution e_e
-  double s;     // sin(theta)
-  double c;     // cos(theta)
-  double k1;    // 1 - 5s/2: x-coupling between the contacts
-  double k2;    // 5/2 - s:  y-coupling between the contacts
-  double kyy;   // s^2 + 5/2: effective inverse mass of I along Y'
-  double inv_1ps;  // 1 / (1 + s)
-};
-
-Coefficients coefficients(const CushionImpactModel& m) {
-  const double s = m.sin_theta;
-  const double c = std::sqrt((1.0 - s) * (1.0 + s));
-  return {m.cushion_friction, m.cloth_friction, m.restitution, s, c, 1.0 - 2.5 * s, 2.5 - s, s * s + 2.5,
-          1.0 / (1.0 + s)};
-}
-
-// |v| (std::hypot is slow, and these speeds are far from overflow).
-inline double length(Vec2 v) { return std::sqrt(v.x * v.x + v.y * v.y); }
-
-// Scaled state: xG', yG', u_x, u_y, u_z (u = R w) and the work W (16a).
-using State = std::array<double, 6>;
-enum : std::size_t { kVx = 0, kVy = 1, kUx = 2, kUy = 3, kUz = 4, kWork = 5 };
-
-// Slip velocity at I in the X-Y' plane, (12a), (12b) with zG' = 0.
-constexpr Vec2 cushion_slip(const Coefficients& k, const State& y) {
-  return {y[kVx] + y[kUy] * k.s - y[kUz] * k.c, -y[kVy] * k.s + y[kUx]};
-}
-// Slip velocity at C in the X-Y plane, (13a), (13b).
-constexpr Vec2 bed_slip(const State& y) { return {y[kVx] - y[kUy], y[kVy] + y[kUx]}; }
-
-// Friction impulse rates per unit P_I: at I along (X, Y'), at C along (X, Y).
-struct Friction {
-  Vec2 cushion;
-  Vec2 bed;
-};
-
-// Normal impulse rate at C, dP_C/dP_I = sin(theta) - (dP^I_y'/dP_I) cos(theta) (3d), (8).
-constexpr double bed_normal_rate(const Coefficients& k, const Friction& f) { return k.s - f.cushion.y * k.c; }
-
-// d State / dP for given friction rates: (14a)-(14f) through (3a), (3b), (4a)-(4c);
-// dW/dP = z_I' = -yG' cos(theta) (16a, 16c).
-inline State rates(const Coefficients& k, const State& y, const Friction& f) {
-  const double a = f.cushion.x;
-  const double b = f.cushion.y;
-  return {a + f.bed.x,                           // (14a)
-          -k.c - b * k.s + f.bed.y,              // (14b)
-          2.5 * (b + f.bed.y),                   // (14d)
-          2.5 * (a * k.s - f.bed.x),             // (14e)
-          -2.5 * a * k.c,                        // (14f) (printed as a second "14e")
-          -y[kVy] * k.c};                        // (16a)
-}
-
-// Rates of the slip velocities, linear in the friction rates (see the header comment).
-constexpr Vec2 cushion_slip_rate(const Coefficients& k, const Friction& f) {
-  return {3.5 * f.cushion.x + k.k1 * f.bed.x, k.s * k.c + k.kyy * f.cushion.y + k.k2 * f.bed.y};
-}
-constexpr Vec2 bed_slip_rate(const Coefficients& k, const Friction& f) {
-  return {k.k1 * f.cushion.x + 3.5 * f.bed.x, -k.c + k.k2 * f.cushion.y + 3.5 * f.bed.y};
-}
-
-// ------------------------------------------------------------------ validation
-
-[[noreturn]] void reject(const char* field, double value, const std::string& allowed, const char* meaning) {
-  throw InvalidArgument(field, value, allowed, meaning);
-}
-
-std::string number(double v) {
-  std::string text = std::to_string(v);
-  while (text.size() > 1 && text.back() == '0') text.pop_back();
-  if (!text.empty() && text.back() == '.') text.pop_back();
-  return text;
-}
-
-void validate_ball(const IncomingBall& ball) {
-  if (is_finite(ball.velocity) && is_finite(ball.angular_velocity) && ball.velocity.y > 0.0 && ball.velocity.z == 0.0) {
-    return;  // the common case, without the calls that name the fields
-  }
-  require_finite("velocity.x", ball.velocity.x);
-  require_finite("velocity.y", ball.velocity.y);
-  require_finite("velocity.z", ball.velocity.z);
-  require_finite("angular_velocity.x", ball.angular_velocity.x);
-  require_finite("angular_velocity.y", ball.angular_velocity.y);
-  require_finite("angular_velocity.z", ball.angular_velocity.z);
-  if (!(ball.velocity.y > 0.0)) {
-    reject("velocity.y", ball.velocity.y, "(0, inf)", "normal speed yG' into the cushion, m/s");
-  }
-  if (ball.velocity.z != 0.0) {
-    reject("velocity.z", ball.velocity.z, "0", "vertical speed zG' of a ball on the bed (14c), m/s");
-  }
-}
-
-void validate_options(const CushionImpactOptions& options) {
-  if (options.solver != CushionSolver::exact && options.solver != CushionSolver::paper) {
-    throw InvalidArgument("solver", "solver is not a CushionSolver value");
-  }
-  if (options.paper_steps < 1 || options.paper_steps > 1'000'000'000) {
-    reject("paper_steps", options.paper_steps, "[1, 1e9]", "N, Euler steps per (1 + e_e) M yG'(0) (section 3.4)");
-  }
-}
-
-// ------------------------------------------------------------------ common
-
-// Scaled initial state.
-State scaled_state(const IncomingBall& ball, double radius, double speed_unit) {
-  return {ball.velocity.x / speed_unit,
-          ball.velocity.y / speed_unit,
-          radius * ball.angular_velocity.x / speed_unit,
-          radius * ball.angular_velocity.y / speed_unit,
-          radius * ball.angular_velocity.z / speed_unit,
-          0.0};
-}
-
-// Converts scaled quantities back to SI.
-struct Units {
-  double speed;    // V, m/s
-  double radius;   // R, m
-  double impulse;  // M V, N s
-  double work;     // M V^2, J
-};
-
-CushionImpactSample sample(const Coefficients& k, const Units& units, double p, const State& y) {
-  const Vec2 si = cushion_slip(k, y);
-  const Vec2 sc = bed_slip(y);
-  CushionImpactSample out;
-  out.normal_impulse = p * units.impulse;
-  out.cushion_slip_speed = length(si) * units.speed;
-  out.cushion_slip_angle = std::atan2(si.y, si.x);  // Phi (5a, 5b)
-  out.bed_slip_speed = length(sc) * units.speed;
-  out.bed_slip_angle = std::atan2(sc.y, sc.x);      // Phi' (9a, 9b)
-  out.velocity = {y[kVx] * units.speed, y[kVy] * units.speed, 0.0};
-  const double spin = units.speed / units.radius;
-  out.angular_velocity = {y[kUx] * spin, y[kUy] * spin, y[kUz] * spin};
-  out.work = y[kWork] * units.work;
-  return out;
-}
-
-// Largest |component| of the velocities in the state: the scale for "zero".
-double velocity_scale(const State& y) {
-  double m = 0.0;
-  for (std::size_t i = kVx; i <= kUz; ++i) m = std::max(m, std::abs(y[i]));
-  return m;
-}
-
-[[noreturn]] void wedged() {
-  throw InfeasibleShot("P_I^f < infinity",
-                       "the normal velocity at the cushion never reverses (the ball wedges between cushion and "
-                       "bed); the rigid-body model has no rebound for these constants");
-}
-
-// Bound on the normal impulse, in units of M yG'(0): a frictionless rebound
-// needs 1 + e_e <= 2; the model's friction changes that by a modest factor.
-constexpr double kMaxScaledImpulse = 200.0;
-
-// ------------------------------------------------------------------ paper
-
-// Friction of the paper's scheme: Coulomb at each slipping contact (7), (10);
-// zero where a slip speed is zero (15a), (15b).
-Friction paper_friction(const Coefficients& k, const State& y, double zero_slip) {
-  Friction f{};
-  const Vec2 si = cushion_slip(k, y);
-  const double s = length(si);
-  if (s > zero_slip) f.cushion = -k.mu_w / s * si;  // (7a), (7b): cos Phi = s_x/s, sin Phi = s_y'/s
-  const Vec2 sc = bed_slip(y);
-  const double sp = length(sc);
-  if (sp > zero_slip) f.bed = -k.mu_s * bed_normal_rate(k, f) / sp * sc;  // (10a), (10b) with (8)
-  return f;
-}
-
-struct Outcome {
-  State final_state{};
-  double compression_impulse = 0.0;
-  double total_impulse = 0.0;
-  double compression_work = 0.0;
-  int steps = 0;
-  int events = 0;
-};
-
-Outcome solve_paper(const Coefficients& k, State y, int n_steps, const Units& units,
-                    std::vector<CushionImpactSample>* history) {
-  const double dp = (1.0 + k.e) / n_steps;  // dP_I = (1 + e_e) M V0 sin(alpha) / N (section 3.4)
-  const double zero_slip = 1e-14 * velocity_scale(y);
-  const long long max_steps = static_cast<long long>(kMaxScaledImpulse / dp) + 1;
-  if (history) {
-    history->reserve(static_cast<std::size_t>(1.15 * n_steps) + 2);
-    history->push_back(sample(k, units, 0.0, y));
-  }
-  Outcome out;
-  bool compressing = true;
-  double work_target = 0.0;
-  for (long long n = 1;; ++n) {
-    if (n > max_steps) wedged();
-    const Friction f = paper_friction(k, y, zero_slip);
-    const State d = rates(k, y, f);
-    const double z_before = -y[kVy] * k.c;  // z_I' = -yG' cos(theta) (16c note)
-    for (std::size_t i = kVx; i <= kUz; ++i) y[i] += d[i] * dp;  // (17a) and the five like it
-    const double z_after = -y[kVy] * k.c;
-    y[kWork] += dp * 0.5 * (z_before + z_after);  // trapezoid rule (16a)
-    const double p = static_cast<double>(n) * dp;
-    if (history) history->push_back(sample(k, units, p, y));
-    if (compressing) {
-      if (y[kVy] <= 0.0) {  // z_I' = 0 reached: end of compression (16c)
-        compressing = false;
-        out.compression_impulse = p;
-        out.compression_work = y[kWork];
-        work_target = (1.0 - k.e * k.e) * y[kWork];  // W(P_I^f) = (1 - e_e^2) W(P_I^c) (16b)
-      }
-    } else if (y[kWork] >= work_target) {  // first step past (16b)
-      out.total_impulse = p;
-      out.steps = static_cast<int>(std::min<long long>(n, std::numeric_limits<int>::max()));
-      out.events = 2;
-      out.final_state = y;
-      return out;
-    }
-  }
-}
-
-// ------------------------------------------------------------------ exact: contact modes
+// ------------------------------------------------------------------ contact modes
 
 enum class ContactMode : unsigned char { slipping, sticking };
 constexpr ContactMode kSlip = ContactMode::slipping;
@@ -294,7 +53,7 @@ struct Modes {
 // Friction rates for given modes and unit slip directions (a sticking
 // contact's direction is ignored). A sticking contact carries the friction
 // that keeps its slip rate zero (Stronge ch. 5), from the linear slip-rate
-// equations in the header comment.
+// equations in mathavan_2010_equations.hpp.
 Friction friction_for(const Coefficients& k, ContactMode cushion, Vec2 cushion_dir, ContactMode bed, Vec2 bed_dir) {
   Friction f{};
   if (cushion == kSlip) {
@@ -463,11 +222,11 @@ Modes select_modes(const Coefficients& k, Vec2 cushion_slip_now, Vec2 bed_slip_n
   return m;
 }
 
-// ------------------------------------------------------------------ exact: the state in slip form
+// ------------------------------------------------------------------ the state in slip form
 
 // The exact solver integrates the slip velocities themselves: the friction
 // rates depend on the slip directions only, so (s_I, s_C) obey a closed
-// system of four equations (the slip rates in the header comment). The
+// system of four equations (mathavan_2010_equations.hpp). The
 // velocities follow from the slips and one invariant: both contact forces
 // act on the line through C and I, so the angular momentum about that line is
 // conserved, J = cos(theta) xG' + 2/5 (cos(theta) u_y + (1 + sin(theta)) u_z)
@@ -513,8 +272,8 @@ State velocity_state(const Coefficients& k, const SlipState& z, double j) {
   return {z[kScx] + uy, vy, z[kScy] - vy, uy, uz, z[kW]};
 }
 
-// d SlipState / dP for given friction rates: the slip rates (header
-// comment) and (16a).
+// d SlipState / dP for given friction rates: the slip rates
+// (mathavan_2010_equations.hpp) and (16a).
 inline SlipState slip_rates(const Coefficients& k, const SlipState& z, const Friction& f) {
   const Vec2 a = f.cushion;
   const Vec2 g = f.bed;
@@ -541,7 +300,7 @@ void snap_bed_slip(const Coefficients& k, SlipState& z) {
   z[kScy] = 0.0;
 }
 
-// ------------------------------------------------------------------ exact: slip near zero
+// ------------------------------------------------------------------ slip near zero
 
 // Near zero slip the direction of a slipping contact is fast: in polar form
 // the slip s = r (cos phi, sin phi) obeys dr/dP = D(phi) = dot(u, ds/dP) and
@@ -753,7 +512,7 @@ bool finish_approach(const Coefficients& k, bool at_cushion, Vec2 s0, ContactMod
   return true;
 }
 
-// ------------------------------------------------------------------ exact: integration
+// ------------------------------------------------------------------ integration
 
 // How close (rad) a small slip's direction must be to its slow manifold to be slaved to it.
 constexpr double kManifoldAngle = 1e-4;
@@ -1116,7 +875,7 @@ class FreeSlipStep {
     const Pair pwc = pair(wc);
     const Pair pwiwc = pair(wiwc);
     const Pair phk = pair(hk);
-    // The slip rates (header comment) are a f + b g + const per component:
+    // The slip rates (mathavan_2010_equations.hpp) are a f + b g + const per component:
     // x: (7/2, k1) f_x + (k1, 7/2) g_x;  y: (sc, -c) + (kyy, k2) f_y + (k2, 7/2) g_y,
     // with f = wi s_I and g = q s_C = (wc s - wi wc c s_I,y') s_C.
     const Pair six = pair(z.x[0]);
@@ -1270,6 +1029,8 @@ struct ExactLimits {
   static constexpr int max_attempts = 20000;    // Runge-Kutta steps, accepted or not
   static constexpr int max_events = 64;
 };
+
+}  // namespace
 
 Outcome solve_exact(const Coefficients& k, const State& y0, const Units& units,
                     std::vector<CushionImpactSample>* history) {
@@ -1605,118 +1366,4 @@ Outcome solve_exact(const Coefficients& k, const State& y0, const Units& units,
   }
 }
 
-}  // namespace
-
-// ------------------------------------------------------------------ public
-
-CushionParameters cushion_mathavan2010_paper_fit(const BallParameters& ball) {
-  return {0.98, 0.14, default_cushion_height(ball)};  // section 3.5
-}
-
-CushionParameters cushion_translator_exact_fit(const BallParameters& ball) {
-  return {0.986, 0.2093, default_cushion_height(ball)};  // translator's afterword
-}
-
-void validate(const CushionImpactModel& m) {
-  if (!(std::isfinite(m.mass) && m.mass > 0.0)) reject("mass", m.mass, "(0, inf)", "ball mass M, kg");
-  if (!(std::isfinite(m.radius) && m.radius > 0.0)) reject("radius", m.radius, "(0, inf)", "ball radius R, m");
-  require_in_range("mu_s", m.cloth_friction, 0.0, 1.0, "ball-bed friction at C");
-  if (!(std::isfinite(m.restitution) && m.restitution > 0.0 && m.restitution <= 1.0)) {
-    reject("e_e", m.restitution, "(0, 1]", "ball-cushion coefficient of restitution (16b)");
-  }
-  if (!(std::isfinite(m.sin_theta) && m.sin_theta > 0.0 && m.sin_theta < 1.0)) {
-    reject("sin_theta", m.sin_theta, "(0, 1)", "sin(theta) = (h - R)/R of the contact normal at I");
-  }
-  const double s = m.sin_theta;
-  const double c = std::sqrt((1.0 - s) * (1.0 + s));
-  const double tan_theta = s / c;
-  if (!(std::isfinite(m.cushion_friction) && m.cushion_friction >= 0.0 && m.cushion_friction <= tan_theta)) {
-    reject("mu_w", m.cushion_friction, "[0, tan(theta)] = [0, " + number(tan_theta) + "]",
-           "ball-cushion friction; above tan(theta) it could lift the ball off the bed, against (3d)");
-  }
-  const double wedge = c / (1.0 + s);
-  if (m.cushion_friction >= wedge && m.cloth_friction >= wedge) {
-    reject("mu_w", m.cushion_friction, "< cos(theta)/(1 + sin(theta)) = " + number(wedge) + " when mu_s is as large",
-           "both contacts could stick and wedge the ball");
-  }
-}
-
-CushionImpactModel cushion_impact_model(const Parameters& table, const CushionParameters& cushion) {
-  validate(table);
-  const double r = table.ball.radius;
-  if (!(std::isfinite(cushion.restitution) && cushion.restitution > 0.0 && cushion.restitution <= 1.0)) {
-    reject("e_e", cushion.restitution, "(0, 1]", "ball-cushion coefficient of restitution (16b)");
-  }
-  if (!(std::isfinite(cushion.friction) && cushion.friction >= 0.0)) {
-    reject("mu_w", cushion.friction, "[0, inf)", "ball-cushion sliding friction (7a, 7b)");
-  }
-  if (!(std::isfinite(cushion.contact_height) && cushion.contact_height > r && cushion.contact_height < 2.0 * r)) {
-    reject("h", cushion.contact_height, "(R, 2R) = (" + number(r) + ", " + number(2.0 * r) + ")",
-           "height of the cushion contact I above the bed, m");
-  }
-  CushionImpactModel m;
-  m.mass = table.ball.mass;
-  m.radius = r;
-  m.cloth_friction = table.cloth.sliding_friction;
-  m.cushion_friction = cushion.friction;
-  m.restitution = cushion.restitution;
-  m.sin_theta = cushion_sin_theta(cushion, table.ball);
-  validate(m);
-  return m;
-}
-
-IncomingBall incoming_ball(const PaperIncidence& in) {
-  if (!(std::isfinite(in.speed) && in.speed > 0.0)) reject("V0", in.speed, "(0, inf)", "incoming speed, m/s");
-  if (!(std::isfinite(in.angle) && in.angle > 0.0 && in.angle <= 0.5 * kPi)) {
-    reject("alpha", in.angle, "(0, pi/2] rad", "angle between the velocity and the cushion; pi/2 is head-on");
-  }
-  require_finite("w_T", in.topspin);
-  require_finite("w_S", in.sidespin);
-  const double ca = std::cos(in.angle);
-  const double sa = std::sin(in.angle);
-  IncomingBall b;
-  b.velocity = {in.speed * ca, in.speed * sa, 0.0};                         // section 3.1
-  b.angular_velocity = {-in.topspin * sa, in.topspin * ca, in.sidespin};  // section 3.1
-  return b;
-}
-
-CushionImpactResult solve_cushion_impact(const IncomingBall& ball, const CushionImpactModel& model,
-                                         const CushionImpactOptions& options) {
-  validate(model);
-  validate_ball(ball);
-  validate_options(options);
-  return solve_cushion_impact_unchecked(ball, model, options);
-}
-
-CushionImpactResult solve_cushion_impact_unchecked(const IncomingBall& ball, const CushionImpactModel& model,
-                                                   const CushionImpactOptions& options) {
-  const Coefficients k = coefficients(model);
-  const double v_normal = ball.velocity.y;
-  const Units units{v_normal, model.radius, model.mass * v_normal, model.mass * v_normal * v_normal};
-  const State y0 = scaled_state(ball, model.radius, v_normal);
-
-  CushionImpactResult r;
-  std::vector<CushionImpactSample>* history = options.record_history ? &r.history : nullptr;
-  const Outcome o = options.solver == CushionSolver::paper ? solve_paper(k, y0, options.paper_steps, units, history)
-                                                           : solve_exact(k, y0, units, history);
-  const State& y = o.final_state;
-  const double spin = units.speed / units.radius;
-  r.velocity = {y[kVx] * units.speed, y[kVy] * units.speed, 0.0};
-  r.angular_velocity = {y[kUx] * spin, y[kUy] * spin, y[kUz] * spin};
-  r.rebound_speed = norm(r.velocity);
-  r.rebound_angle = std::atan2(-r.velocity.y, r.velocity.x);
-  r.compression_impulse = o.compression_impulse * units.impulse;
-  r.total_impulse = o.total_impulse * units.impulse;
-  r.compression_work = o.compression_work * units.work;
-  r.beyond_rigid_cushion_limit = v_normal > kRigidCushionSpeedLimit;
-  r.solver_steps = o.steps;
-  r.solver_events = o.events;
-  return r;
-}
-
-CushionImpactResult cushion_impact(const IncomingBall& ball, const Parameters& table, const CushionParameters& cushion,
-                                   const CushionImpactOptions& options) {
-  return solve_cushion_impact(ball, cushion_impact_model(table, cushion), options);
-}
-
-}  // namespace cueball
+}  // namespace cueball::mathavan_2010

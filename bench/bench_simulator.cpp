@@ -1,11 +1,12 @@
 // Benchmarks of whole shots (src/simulator.cpp): the built-in 9-ball break,
-// a one-ball shot with several cushion hits, and batch throughput on one and
+// a one-ball shot with five cushion hits under each cushion model, and batch throughput on one and
 // two threads (their ratio is the parallel speed-up), and simulate_many of
 // the same noisy breaks against simulate_batch (their throughput ratio, the
 // two run alternately in one process). Counters report events and
 // microseconds per shot.
 #include <benchmark/benchmark.h>
 
+#include <algorithm>
 #include <chrono>
 #include <numbers>
 #include <vector>
@@ -44,14 +45,31 @@ void BM_NineBallBreakUnchecked(benchmark::State& st) {
 }
 BENCHMARK(BM_NineBallBreakUnchecked)->Unit(benchmark::kMicrosecond);
 
-// One ball around the table: struck hard with running side, several rails.
-void BM_OneBallCushions(benchmark::State& st) {
-  static const Scenario s = scenario_from_json(R"({"table": "pool_9ft",
-      "balls": [{"id": 0, "position": [0.6, 0.4]}],
-      "cue": {"ball": 0, "aim_deg": 27, "speed": 6.0, "side": 0.3, "height": 0.2}})");
+// One ball around the (pocketless) carom table with running side: five
+// rails under each cushion model (cushion_model.hpp), 13 events. The shot's
+// time is mostly its cushion impacts: the ratios between the models are
+// what a model costs a planner's inner loop.
+void BM_OneBallCushions(benchmark::State& st, CushionSettings cushion) {
+  Scenario s = scenario_from_json(R"({"table": "carom_10ft",
+      "balls": [{"id": 0, "position": [0.7, 0.4]}],
+      "cue": {"ball": 0, "aim_deg": 27, "speed": 3.0, "side": 0.3, "height": 0.2}})");
+  s.settings.cushion = cushion;
+  const SimulationResult r = run_scenario(s);
+  st.counters["cushion_hits"] = static_cast<double>(
+      std::count_if(r.events.begin(), r.events.end(), [](const Event& e) { return e.type == EventType::ball_cushion; }));
   run_shot(st, s);
 }
-BENCHMARK(BM_OneBallCushions)->Unit(benchmark::kMicrosecond);
+CushionSettings mathavan_paper(int steps) {
+  CushionSettings c;
+  c.solver = CushionSolver::paper;
+  c.paper_steps = steps;
+  return c;
+}
+BENCHMARK_CAPTURE(BM_OneBallCushions, mathavan_2010, default_cushion_settings(CushionModel::mathavan_2010))
+    ->Unit(benchmark::kMicrosecond);
+BENCHMARK_CAPTURE(BM_OneBallCushions, mathavan_2010_paper_N1000, mathavan_paper(1000))->Unit(benchmark::kMicrosecond);
+BENCHMARK_CAPTURE(BM_OneBallCushions, han_2005, default_cushion_settings(CushionModel::han_2005))
+    ->Unit(benchmark::kMicrosecond);
 
 void BM_BatchBreaks(benchmark::State& st) {
   static const Scenario s = default_scenario();

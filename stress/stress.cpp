@@ -159,8 +159,13 @@ const Table& preset(int kind) {  // 0 pool, 1 snooker, 2 carom
   return kind == 0 ? pool : kind == 1 ? snooker : carom;
 }
 
+// The models every generated shot uses (--cushion-model; each model's own
+// constants). Set once by parse(), before any worker starts.
+CushionSettings g_cushion;
+
 Shot new_shot(int table_kind) {
   Shot s;
+  s.settings.cushion = g_cushion;
   s.table = preset(table_kind);
   // As the scenario reader does: the cloth preset that goes with the table, the table's ball.
   s.settings.parameters = table_kind == 1 ? snooker_parameters() : pool_parameters();
@@ -1210,6 +1215,7 @@ std::string class_list() {
 void usage() {
   std::printf(
       "usage: cueball-stress [--class NAME] [--shots N] [--seed S] [--threads T] [--report-worst K] [--dump-worst DIR]\n"
+      "                      [--cushion-model NAME]\n"
       "       cueball-stress --scenario FILE [--scenario FILE ...]\n"
       "Random seeded shots of each class, simulated and checked for overlaps, cushion and jaw\n"
       "penetration, balls off the table, NaN, energy gain, runaway event counts, errors, crashes\n"
@@ -1220,9 +1226,11 @@ void usage() {
       "  --threads T         worker threads, [1, 256] (default 1); results do not depend on it\n"
       "  --report-worst K    the K worst shots of each violation kind, [1, 100] (default 1)\n"
       "  --dump-worst DIR    write each class's worst shot of each kind as DIR/CLASS-KIND.json (cueball simulate FILE)\n"
+      "  --cushion-model M   the cushion model of every generated shot, with its own constants: %s\n"
+      "                      (default mathavan_2010)\n"
       "  --scenario FILE     check one scenario file (cueball's scenario JSON) instead; its event limit is raised to %d\n"
       "Exit status: 0 no violation, 1 violations, 2 bad flags.\n",
-      class_list().c_str(), kMaxEvents);
+      class_list().c_str(), cushion_model_names("").c_str(), kMaxEvents);
 }
 
 Options parse(int argc, char** argv) {
@@ -1233,9 +1241,11 @@ Options parse(int argc, char** argv) {
       usage();
       std::exit(0);
     }
-    static const char* const known[] = {"--class", "--shots", "--seed", "--threads", "--report-worst", "--dump-worst", "--scenario"};
+    static const char* const known[] = {"--class",      "--shots",      "--seed",          "--threads",
+                                        "--report-worst", "--dump-worst", "--cushion-model", "--scenario"};
     if (std::find_if(std::begin(known), std::end(known), [&](const char* k) { return flag == k; }) == std::end(known))
-      bad_flag("flag", flag, "--class, --shots, --seed, --threads, --report-worst, --dump-worst, --scenario, --help");
+      bad_flag("flag", flag,
+               "--class, --shots, --seed, --threads, --report-worst, --dump-worst, --cushion-model, --scenario, --help");
     if (i + 1 >= argc) bad_flag(flag, "", "a value after the flag");
     const std::string value = argv[++i];
     if (flag == "--class") {
@@ -1263,6 +1273,10 @@ Options parse(int argc, char** argv) {
     } else if (flag == "--dump-worst") {
       if (value.empty()) bad_flag(flag, value, "a directory (created when missing)");
       o.dump_dir = value;
+    } else if (flag == "--cushion-model") {
+      const std::optional<CushionModel> model = cushion_model_from_string(value);
+      if (!model) bad_flag(flag, value, cushion_model_names(""));
+      g_cushion = default_cushion_settings(*model);
     } else {
       o.scenarios.push_back(value);
     }

@@ -22,6 +22,7 @@
 #include "common.hpp"
 #include "cueball/cushion_fit.hpp"
 #include "cueball/cushion_impact.hpp"
+#include "cueball/cushion_model.hpp"
 #include "cueball/errors.hpp"
 
 namespace cueball::cli {
@@ -93,6 +94,7 @@ CushionImpactOptions options_of(const CushionFlags& f, bool history) {
 // ------------------------------------------------------------------ cushion
 
 struct ImpactFlags {
+  std::string model = "mathavan_2010";
   double v0 = 0.0;
   double alpha = 0.0;
   std::optional<double> topspin, topspin_k, sidespin, sidespin_k;
@@ -135,19 +137,72 @@ void print_history_csv(std::ostream& out, const std::vector<CushionImpactSample>
   }
 }
 
+void add_incoming(Report& report, const ImpactFlags& f, const PaperIncidence& in) {
+  report.begin_section("incoming", "incoming:");
+  report.add("v0", f.v0, "m/s");
+  report.add("alpha", f.alpha, "deg");
+  report.add("topspin", in.topspin, "rad/s", "w_T (V0/R: rolling)");
+  report.add("sidespin", in.sidespin, "rad/s", "w_S (> 0: right spin, Fig 2)");
+  report.end_section();
+}
+
+// cueball cushion --model M for a model other than mathavan_2010: the
+// rebound by the registry (cushion_model.hpp), with the model's own constants
+// unless --e / --mu-w are given. Mathavan's solver flags do not apply.
+void run_other_model(CushionModel model, const ImpactFlags& f, const PaperIncidence& in, const Parameters& p,
+                     std::ostream& out, std::ostream& err) {
+  const CushionFlags& c = f.cushion;
+  if (f.history) throw UsageError("--history applies to --model mathavan_2010 only (its impulse-resolved solution)");
+  if (c.solver != "exact" || c.steps != 5000 || c.constants != "paper-fit")
+    throw UsageError("--solver, --steps and --constants apply to --model mathavan_2010 only");
+  CushionSettings settings = default_cushion_settings(model);
+  if (c.restitution) {
+    check_flag("--e", *c.restitution, 0.0, 1.0, "the model's coefficient of restitution, [0, 1]");
+    settings.restitution = *c.restitution;
+  }
+  if (c.friction) {
+    check_flag("--mu-w", *c.friction, 0.0, 1.0, "the model's ball-cushion friction, [0, 1]");
+    settings.friction = *c.friction;
+  }
+  const double height = c.height.value_or(default_cushion_height(p.ball));
+  if (c.height)
+    check_flag("--height", height, p.ball.radius * (1 + 1e-9), 2 * p.ball.radius * (1 - 1e-9),
+               "cushion contact height h, m, between R and 2R");
+  const CushionRebound r = cushion_rebound(incoming_ball(in), cushion_contact(p, settings, height));
+  const double speed = std::hypot(r.velocity.x, r.velocity.y);
+  Report report(std::string("cushion impact, ") + to_string(model) + " (" + f.parameters.preset + " ball, SI units)");
+  report.add("speed", speed, "m/s", "rebound speed");
+  report.add("angle", std::atan2(-r.velocity.y, r.velocity.x) / kDegree, "deg",
+             "rebound angle beta from the cushion (> 90: back on its own side)");
+  report.add("v", {r.velocity.x, r.velocity.y}, "m/s", "outgoing velocity (X along the cushion, Y into it)");
+  report.add("w", {r.angular_velocity.x, r.angular_velocity.y, r.angular_velocity.z}, "rad/s", "outgoing spin");
+  add_incoming(report, f, in);
+  report.begin_section("cushion", "cushion:");
+  report.add_text("model", to_string(model));
+  report.add("e", settings.restitution, "", "restitution");
+  report.add("mu_w", settings.friction, "", "ball-cushion friction");
+  report.add("height", height, "m", "contact height h");
+  report.end_section();
+  if (!(r.velocity.y < 0.0)) report.warn("the model leaves the ball pressing on the cushion (no rebound)");
+  emit(report, f.parameters.json, out, err);
+}
+
 void run_cushion(const ImpactFlags& f, std::ostream& out, std::ostream& err) {
+  const std::optional<CushionModel> model = cushion_model_from_string(f.model);
+  if (!model) throw UsageError("--model = " + quote_input(f.model) + " is not known; allowed: " + cushion_model_names(""));
   check_flag("--v0", f.v0, 1e-6, kMaxSpeed, "incoming speed V0, m/s");
   check_flag("--alpha", f.alpha, 1e-9, 90.0, "angle between the velocity and the cushion, degrees, (0, 90]");
   const Parameters p = resolve_parameters(f.parameters);
-  const CushionParameters cushion = cushion_of(f.cushion, p);
   PaperIncidence in;
   in.speed = f.v0;
   in.angle = f.alpha * kDegree;
   in.topspin = spin_from(f.topspin, f.topspin_k, 1.0, f.v0, p.ball.radius, "--topspin", "--topspin-k");
   in.sidespin = spin_from(f.sidespin, f.sidespin_k, 0.0, f.v0, p.ball.radius, "--sidespin", "--sidespin-k");
+  if (*model != CushionModel::mathavan_2010) return run_other_model(*model, f, in, p, out, err);
+  const CushionParameters cushion = cushion_of(f.cushion, p);
   const CushionImpactResult r = cushion_impact(incoming_ball(in), p, cushion, options_of(f.cushion, f.history));
 
-  Report report("cushion impact, " + f.cushion.solver + " solver (" + f.parameters.preset + " ball, SI units)");
+  Report report("cushion impact, mathavan_2010, " + f.cushion.solver + " solver (" + f.parameters.preset + " ball, SI units)");
   report.add("speed", r.rebound_speed, "m/s", "rebound speed");
   report.add("angle", r.rebound_angle / kDegree, "deg", "rebound angle beta from the cushion (> 90: back on its own side)");
   report.add("v", {r.velocity.x, r.velocity.y}, "m/s", "outgoing velocity (X along the cushion, Y into it)");
@@ -155,13 +210,9 @@ void run_cushion(const ImpactFlags& f, std::ostream& out, std::ostream& err) {
   report.add("impulse_compression", r.compression_impulse, "N s", "P_I at the end of compression");
   report.add("impulse_total", r.total_impulse, "N s", "P_I at the end of restitution");
   report.add("work_compression", r.compression_work, "J", "W_c, work of the normal force in compression");
-  report.begin_section("incoming", "incoming:");
-  report.add("v0", f.v0, "m/s");
-  report.add("alpha", f.alpha, "deg");
-  report.add("topspin", in.topspin, "rad/s", "w_T (V0/R: rolling)");
-  report.add("sidespin", in.sidespin, "rad/s", "w_S (> 0: right spin, Fig 2)");
-  report.end_section();
+  add_incoming(report, f, in);
   report.begin_section("cushion", "cushion:");
+  report.add_text("model", to_string(*model));
   report.add_text("solver", f.cushion.solver);
   report.add_text("constants", f.cushion.restitution || f.cushion.friction ? "custom" : f.cushion.constants);
   report.add("e", cushion.restitution, "", "restitution e_e");
@@ -440,7 +491,46 @@ void run_figures(const FigureFlags& f, std::ostream& out, std::ostream& err) {
        << "unset multiplot\n";
     written.push_back(image);
   }
-  for (const char* name : {"fig8", "fig9", "fig10", "fig12"}) {
+  // The cushion models side by side (cushion_model.hpp), each with its own
+  // constants: Fig 9's rolling ball and Fig 10's with running side K = 1.
+  {
+    std::ofstream data = open_in_out_dir(dir / "models.dat", f.out);
+    std::string titles;
+    int curves = 0;
+    for (CushionModel model : kCushionModels) {
+      const CushionContact contact = cushion_contact(p, default_cushion_settings(model), default_cushion_height(p.ball));
+      for (double side : {0.0, 1.0}) {
+        const std::string title = std::string(to_string(model)) + (side == 0.0 ? "" : "/side=1");
+        titles += (titles.empty() ? "" : " ") + title;
+        data << "# " << title << "\nalpha_deg speed angle_deg\n";
+        for (int a = 1; a <= 90; ++a) {
+          const PaperIncidence in{1.0, a * kDegree, 1.0 / p.ball.radius, side / p.ball.radius};
+          const CushionRebound r = cushion_rebound(incoming_ball(in), contact);
+          data << a << ' ' << std::hypot(r.velocity.x, r.velocity.y) << ' '
+               << std::atan2(-r.velocity.y, r.velocity.x) / kDegree << '\n';
+        }
+        data << "\n\n";
+        ++curves;
+      }
+    }
+    if (!data.flush()) throw UsageError("--out = " + quote_input(f.out, kMaxEchoedPathChars) + ": cannot write models.dat");
+    std::ofstream gp = open_in_out_dir(dir / "models.gp", f.out);
+    gp << terminal_for(f.format) << "\n"
+       << "set output 'models." << f.format << "'\n"
+       << "titles = '" << titles << "'\n"
+       << "set multiplot layout 1,2 title \"The cushion models, rolling at V0 = 1 m/s (solid) and with running side "
+       << "w_S = V0/R (dashed)\\n{/*0.8 each model with its own constants}\" enhanced\n"
+       << "set grid\nset key left bottom font ',9' noenhanced\nset xlabel 'angle of incidence alpha (deg)'\n"
+       << "set xrange [0:90]\nset ylabel 'rebound speed (m/s)'\n"
+       << "plot for [i=0:" << curves - 1 << "] 'models.dat' index i using 1:2 with lines lw 2 lc (i/2+1) dt i%2+1 "
+       << "title word(titles, i+1)\n"
+       << "set ylabel 'rebound angle beta (deg)'\nset key left top\n"
+       << "plot for [i=0:" << curves - 1 << "] 'models.dat' index i using 1:3 with lines lw 2 lc (i/2+1) dt i%2+1 "
+       << "title word(titles, i+1)\n"
+       << "unset multiplot\n";
+    written.push_back(dir / ("models." + f.format));
+  }
+  for (const char* name : {"fig8", "fig9", "fig10", "fig12", "models"}) {
     const int status = run_gnuplot(dir, std::string(name) + ".gp", std::string(name) + ".log");
     if (status == 127) throw std::runtime_error("gnuplot is not installed (apt-get install gnuplot-nox)");
     if (status != 0)
@@ -605,11 +695,17 @@ Command add_cushion_command(CLI::App& app) {
   auto flags = std::make_shared<ImpactFlags>();
   CLI::App* sub = app.add_subcommand(
       "cushion",
-      "One ball-cushion impact (Mathavan, Jackson & Parkin 2010). Cushion frame: X along the cushion,\n"
+      "One ball-cushion impact, by default Mathavan, Jackson & Parkin (2010); --model chooses another.\n"
+      "Cushion frame: X along the cushion,\n"
       "Y into it, Z up. --alpha is the angle between the velocity and the cushion in degrees (90: head-on).\n"
       "Topspin w_T > 0 turns the ball the way it rolls (V0/R: natural roll, the default); sidespin w_S > 0\n"
       "is the 'right' spin of the paper's Fig 2, about +Z. The --*-k forms give spin as K V0 / R. Output\n"
       "angle beta is measured from the cushion line; above 90 the ball comes back on its own side. SI units.");
+  sub->add_option("--model", flags->model,
+                  "The cushion model: " + cushion_model_names("") +
+                      "; a model other than\nmathavan_2010 takes its own constants unless --e and --mu-w "
+                      "are given, and no solver flags")
+      ->capture_default_str();
   sub->add_option("--v0", flags->v0, "Incoming speed V0, m/s")->required();
   sub->add_option("--alpha", flags->alpha, "Angle of incidence from the cushion, degrees, (0, 90]")->required();
   sub->add_option("--topspin", flags->topspin, "Topspin w_T, rad/s");

@@ -2,18 +2,11 @@
 
 #include "cueball/cushion_model.hpp"
 
-#include <array>
 #include <cmath>
 
 #include "cueball/errors.hpp"
 
 namespace cueball {
-
-namespace {
-
-constexpr std::array kCushionModels{CushionModel::mathavan_2010, CushionModel::han_2005};
-
-}  // namespace
 
 const char* to_string(CushionModel model) {
   switch (model) {

@@ -159,12 +159,12 @@ TEST(CliCushion, Fig12SweepIsTheImpactHistory) {
   EXPECT_GT(rows.size(), 1000u) << "one row per Euler step";
 }
 
-TEST(CliCushion, FiguresWritesTheFourPlots) {
+TEST(CliCushion, FiguresWritesThePapersPlotsAndTheModels) {
   const std::filesystem::path dir = std::filesystem::temp_directory_path() / "cueball_test_figures";
   std::filesystem::remove_all(dir);
   const CliRun r = run_cli({"figures", "--out", dir.string(), "--format", "svg", "--steps", "500"});
   ASSERT_EQ(r.status, 0) << r.err;
-  for (const char* name : {"fig8", "fig9", "fig10", "fig12"}) {
+  for (const char* name : {"fig8", "fig9", "fig10", "fig12", "models"}) {
     const std::filesystem::path svg = dir / (std::string(name) + ".svg");
     ASSERT_TRUE(std::filesystem::exists(svg)) << svg;
     std::ifstream in(svg);
@@ -173,7 +173,39 @@ TEST(CliCushion, FiguresWritesTheFourPlots) {
     EXPECT_NE(text.find("<path"), std::string::npos) << name << " has no curves";
     EXPECT_NE(r.out.find(svg.string()), std::string::npos);
   }
+  // The models' figure has a curve of each model with and without side spin.
+  std::ifstream data(dir / "models.dat");
+  const std::string text((std::istreambuf_iterator<char>(data)), std::istreambuf_iterator<char>());
+  for (const char* title : {"# mathavan_2010\n", "# mathavan_2010/side=1\n", "# han_2005\n", "# han_2005/side=1\n"})
+    EXPECT_NE(text.find(title), std::string::npos) << title;
   std::filesystem::remove_all(dir);
+}
+
+TEST(CliCushion, ModelFlagChoosesTheCushionModel) {
+  const CliRun han = run_cli({"cushion", "--model", "han_2005", "--v0", "1", "--alpha", "90", "--json"});
+  ASSERT_EQ(han.status, 0) << han.err;
+  const nlohmann::json j = nlohmann::json::parse(han.out);
+  // Rolling head-on with e = 0.85, mu = 0.2: 0.689644 m/s back (test_cushion_han_2005).
+  EXPECT_NEAR(j.at("speed").get<double>(), 0.689644, 1e-6);
+  EXPECT_NEAR(j.at("angle").get<double>(), 90.0, 1e-9);
+  EXPECT_EQ(j.at("cushion").at("model"), "han_2005");
+  EXPECT_EQ(j.at("cushion").at("e").get<double>(), 0.85);
+  const CliRun custom = run_cli({"cushion", "--model", "han_2005", "--v0", "1", "--alpha", "90", "--e", "0.5", "--mu-w", "0", "--json"});
+  ASSERT_EQ(custom.status, 0) << custom.err;
+  EXPECT_NEAR(nlohmann::json::parse(custom.out).at("speed").get<double>(), 1.5 * 0.84 - 1.0, 1e-12);
+  const CliRun mathavan = run_cli({"cushion", "--v0", "1", "--alpha", "90", "--json"});
+  EXPECT_EQ(nlohmann::json::parse(mathavan.out).at("cushion").at("model"), "mathavan_2010");
+
+  const CliRun unknown = run_cli({"cushion", "--model", "stronge", "--v0", "1", "--alpha", "45"});
+  EXPECT_EQ(unknown.status, 2);
+  EXPECT_NE(unknown.err.find("--model = \"stronge\" is not known; allowed: mathavan_2010, han_2005"), std::string::npos)
+      << unknown.err;
+  const CliRun solver = run_cli({"cushion", "--model", "han_2005", "--v0", "1", "--alpha", "45", "--solver", "paper"});
+  EXPECT_EQ(solver.status, 2);
+  EXPECT_NE(solver.err.find("apply to --model mathavan_2010 only"), std::string::npos) << solver.err;
+  const CliRun mu = run_cli({"cushion", "--model", "han_2005", "--v0", "1", "--alpha", "45", "--mu-w", "3"});
+  EXPECT_EQ(mu.status, 2);
+  EXPECT_NE(mu.err.find("--mu-w"), std::string::npos) << mu.err;
 }
 
 }  // namespace

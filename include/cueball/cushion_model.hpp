@@ -13,6 +13,7 @@
 //                      form, the bed not involved.
 #pragma once
 
+#include <array>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -25,6 +26,9 @@
 namespace cueball {
 
 enum class CushionModel { mathavan_2010, han_2005 };
+
+/// Every model, in the order of the names.
+inline constexpr std::array kCushionModels{CushionModel::mathavan_2010, CushionModel::han_2005};
 
 /// "mathavan_2010", "han_2005".
 const char* to_string(CushionModel model);

@@ -78,12 +78,14 @@ struct Model {
   double slip_z(const State& y) const { return sz0 - 5.0 * y[kPz] + 2.5 * y[kFn]; }
   double approach(const State& y) const { return 1.0 - 2.0 * y[kP] + pressed * y[kFn]; }
 
-  // dy/dL (M10).
+  // dy/dtau (M10): the rates in L times dL/dtau = mu_b / (|s| + mu_b).
   State rates(const State& y) const {
     const double st = slip_t(y);
     const double sz = slip_z(y);
-    const double dp = std::sqrt(st * st + sz * sz) * inv_mu;
-    State d{dp, st, sz, 0.0, 0.0, approach(y) * dp};
+    const double slip = std::sqrt(st * st + sz * sz);
+    const double to_tau = 1.0 / (slip * inv_mu + 1.0);
+    const double dp = slip * inv_mu;
+    State d{dp * to_tau, st * to_tau, sz * to_tau, 0.0, 0.0, approach(y) * dp * to_tau};
     if (pressed != 0.0) {
       double sn = sn0 - pressed * y[kP] - 2.5 * y[kPz] + 3.5 * y[kFn];
       double stt = stt0 - pressed * y[kPt] + 3.5 * y[kFt];
@@ -94,11 +96,19 @@ struct Model {
         stt = -pressed * st;
         m = std::sqrt(sn * sn + stt * stt);
       }
-      const double k = m > 0.0 ? -mu_s * std::abs(sz) / m : 0.0;
+      const double k = m > 0.0 ? -mu_s * std::abs(sz) * to_tau / m : 0.0;
       d[kFn] = k * sn;
       d[kFt] = k * stt;
     }
     return d;
+  }
+  // The largest step in tau that DOPRI5 keeps stable at this state: the slip
+  // decays at most like e^{-7 mu_b tau / (|s| + mu_b)}, and |s| may halve
+  // within the step; 7 x 0.4 = 2.8 < 3.3, the stability limit on the real axis.
+  double max_step(const State& y) const {
+    const double st = slip_t(y);
+    const double sz = slip_z(y);
+    return 0.4 * (0.5 * std::sqrt(st * st + sz * sz) * inv_mu + 1.0);
   }
 };
 
@@ -118,6 +128,7 @@ constexpr double e1 = 71.0 / 57600.0, e3 = -71.0 / 16695.0, e4 = 71.0 / 1920.0, 
 struct Step {
   State y;
   State error;
+  State rate;  // dy/dtau at y (first stage of the next step)
 };
 
 // One step of length h from y, whose rate is k1.
@@ -140,52 +151,71 @@ Step dopri_step(const Model& m, const State& y, const State& k1, double h) {
   for (std::size_t i = 0; i < n; ++i) {
     out.y[i] = y[i] + h * (b1 * k1[i] + b3 * k3[i] + b4 * k4[i] + b5 * k5[i] + b6 * k6[i]);
   }
-  const State k7 = m.rates(out.y);
+  out.rate = m.rates(out.y);
+  const State& k7 = out.rate;
   for (std::size_t i = 0; i < n; ++i) {
     out.error[i] = h * (e1 * k1[i] + e3 * k3[i] + e4 * k4[i] + e5 * k5[i] + e6 * k6[i] + e7 * k7[i]);
   }
   return out;
 }
 
-constexpr double kTolerance = 1e-11;  // per step, relative to the velocity scale
+constexpr double kTolerance = 1e-10;  // per step, relative to the velocity scale (global errors come out ~1e-12)
 constexpr int kMaxSteps = 4000;       // never reached in practice; the closed form finishes
-constexpr double kMaxStep = 0.4;      // in L: 7 x 0.4 = 2.8 < 3.3, DOPRI5's stability limit on the real axis
 
-// Finds h* in (0, h] where g(step(y, h*)) = 0, given g(y) > 0 >= g(step(y, h))
-// (Illinois method); returns the state at the end of the bracket where |g| is
-// smaller.
-template <class Event>
-State locate(const Model& m, const State& y, const State& k1, double h, double g_end, Event g) {
+// Finds h* in (0, h] where g(step(y, h*)) = 0, given g(y) > 0 >= g(step(y, h)).
+// The start is the root of the cubic Hermite interpolant of g over the step
+// (from g and its slopes at both ends); then Newton's method on the step
+// length with real steps, dg/dh = grad g . dy/dtau at the step's end,
+// safeguarded by the bracket. Returns the step to there.
+template <class Event, class Slope>
+Step locate(const Model& m, const State& y, const State& k1, double h, const Step& end, Event g, Slope slope) {
+  const double g0 = g(y);
+  const double g1 = g(end.y);
+  const double d0 = h * slope(k1);
+  const double d1 = h * slope(end.rate);
+  // Hermite cubic on theta in [0, 1]; Newton from the secant root, kept in the bracket.
+  auto cubic = [&](double u) {
+    const double v = 1.0 - u;
+    return g0 * v * v * (1.0 + 2.0 * u) + g1 * u * u * (3.0 - 2.0 * u) + d0 * u * v * v - d1 * u * u * v;
+  };
+  auto cubic_slope = [&](double u) {
+    return 6.0 * u * (1.0 - u) * (g1 - g0) + d0 * (1.0 - u) * (1.0 - 3.0 * u) + d1 * u * (3.0 * u - 2.0);
+  };
+  double u = g0 / (g0 - g1);
+  for (int it = 0; it < 8; ++it) {
+    const double c = cubic_slope(u);
+    if (c == 0.0) break;
+    const double next = u - cubic(u) / c;
+    if (!(next > 0.0 && next <= 1.0)) break;
+    const bool done = std::abs(next - u) <= 1e-15;
+    u = next;
+    if (done) break;
+  }
   double lo = 0.0;
   double hi = h;
-  double g_lo = g(y);  // the values the secant uses (Illinois halves the stale one)
-  double g_hi = g_end;
-  double true_lo = g_lo;
-  double true_hi = g_hi;
-  State at_lo = y;
-  State at_hi = dopri_step(m, y, k1, h).y;
-  int side = 0;
-  for (int it = 0; it < 60; ++it) {
-    const double mid = (lo * g_hi - hi * g_lo) / (g_hi - g_lo);
-    if (!(mid > lo && mid < hi)) break;
-    const State at_mid = dopri_step(m, y, k1, mid).y;
-    const double g_mid = g(at_mid);
-    if (g_mid > 0.0) {
-      lo = mid;
-      g_lo = true_lo = g_mid;
-      at_lo = at_mid;
-      if (side == -1) g_hi *= 0.5;
-      side = -1;
-    } else {
-      hi = mid;
-      g_hi = true_hi = g_mid;
-      at_hi = at_mid;
-      if (side == 1) g_lo *= 0.5;
-      side = 1;
+  Step best = end;
+  double best_g = std::abs(g1);
+  double x = u * h;
+  for (int it = 0; it < 30; ++it) {
+    if (!(x > lo && x <= hi)) x = 0.5 * (lo + hi);
+    const Step at = dopri_step(m, y, k1, x);
+    const double gx = g(at.y);
+    if (std::abs(gx) < best_g) {
+      best = at;
+      best_g = std::abs(gx);
     }
-    if (std::abs(g_mid) <= 1e-15 || hi - lo <= 1e-15 * hi) break;
+    if (best_g <= 1e-14) break;
+    if (gx > 0.0) {
+      lo = x;
+    } else {
+      hi = x;
+    }
+    const double d = slope(at.rate);
+    const double next = d != 0.0 ? x - gx / d : 0.5 * (lo + hi);
+    if (std::abs(next - x) <= 1e-15 * h || hi - lo <= 1e-15 * h) break;
+    x = next;
   }
-  return std::abs(true_lo) < std::abs(true_hi) ? at_lo : at_hi;
+  return best;
 }
 
 struct Outcome {
@@ -216,8 +246,12 @@ Outcome solve(const Model& m, double restitution, double slip_speed, double velo
   bool compressing = true;
   double work_target = 0.0;
   const double grip_slip = 1e-9 * slip_speed;
-  double h = std::min(kMaxStep, 0.25 / (m.inv_mu * slip_speed));
   State k1 = m.rates(y);
+  double h = std::min(m.max_step(y), 0.2);
+  const auto approach = [&](const State& z) { return m.approach(z); };
+  const auto approach_slope = [&](const State& d) { return -2.0 * d[kP] + m.pressed * d[kFn]; };
+  const auto work_left = [&](const State& z) { return z[kWork] - work_target; };
+  const auto work_slope = [](const State& d) { return d[kWork]; };
   for (int step = 0; step < kMaxSteps; ++step) {
     const Step s = dopri_step(m, y, k1, h);
     double err = 0.0;
@@ -230,30 +264,31 @@ Outcome solve(const Model& m, double restitution, double slip_speed, double velo
       continue;
     }
     if (compressing && m.approach(s.y) <= 0.0) {
-      y = locate(m, y, k1, h, m.approach(s.y), [&](const State& z) { return m.approach(z); });
+      const Step at = locate(m, y, k1, h, s, approach, approach_slope);
+      y = at.y;
+      k1 = at.rate;
       compressing = false;
       work_target = (1.0 - restitution * restitution) * y[kWork];
       if (restitution == 0.0) {
         out.y = y;
         return out;
       }
-      k1 = m.rates(y);
+      h = std::min(h, m.max_step(y));
       continue;
     }
     if (!compressing && s.y[kWork] <= work_target) {
-      const auto g = [&](const State& z) { return z[kWork] - work_target; };
-      out.y = locate(m, y, k1, h, g(s.y), g);
+      out.y = locate(m, y, k1, h, s, work_left, work_slope).y;
       return out;
     }
     y = s.y;
-    k1 = m.rates(y);
+    k1 = s.rate;
     const double st = m.slip_t(y);
     const double sz = m.slip_z(y);
     const double slip2 = st * st + sz * sz;
     if (slip2 <= grip_slip * grip_slip) {
-      // The grip (L -> inf). The last sliver of slip decays at the rate
-      // k = -d ln|s| / dL (between about 3.6 and 7) and takes the normal
-      // impulse |s| / (mu_b k); its cloth friction, O(mu_s |s|), is dropped.
+      // The grip (tau -> inf). The last sliver of slip decays at the rate
+      // k = -d ln|s| / dtau and takes the normal impulse (dp/dtau) / k; its
+      // cloth friction, O(mu_s |s|), is dropped.
       const double decay = -(st * k1[kPt] + sz * k1[kPz]) / slip2;
       const double rest = k1[kP] / decay;
       y[kWork] += m.approach(y) * rest;
@@ -263,10 +298,10 @@ Outcome solve(const Model& m, double restitution, double slip_speed, double velo
       out.gripped = true;
       break;
     }
-    // Growth capped so that h |dk/dy| stays inside DOPRI5's stability region
-    // (the slip decays like e^{-7L} at most): a vanishing slip must not be
-    // integrated with steps that amplify it.
-    h = std::min(h * std::clamp(err > 0.0 ? 0.9 * std::pow(err, -0.2) : 5.0, 0.2, 5.0), kMaxStep);
+    // The growth is capped so that a vanishing slip is never integrated with
+    // steps that amplify it (max_step).
+    const double grow = err > 0.0 ? 0.9 * std::pow(err, -0.2) : 5.0;
+    h = std::min(h * std::clamp(grow, 0.2, 5.0), m.max_step(y));
   }
   finish_frictionless(restitution, m, compressing, work_target, y);
   out.y = y;

@@ -26,26 +26,35 @@
 // M8: at s_z = 0 the friction has no vertical part, no cloth load and
 // ds_z = 0: s_z keeps its sign, and the pressed ball is fixed by s_z(0).
 //
-// M7 (cloth slip at zero): its rate is h + 7/2 dF_X/dp with
-// |h| >= 1 - 5/2 mu_b |s_z^| along n and |7/2 dF_X/dp| <= 7/2 mu_s mu_b; the
-// ranges of validate() keep 7/2 mu_s mu_b < 1 <= |h| - ..., so it cannot stick
-// and starts to slip along h (isotropic contact).
+// M7 (cloth slip at zero): its rate is h + 7/2 dF_X/dp, where h (M5 without
+// the cloth) has the component along n of -(1 + 5/2 dP_z/dp) for a
+// (pressed: dP_z > 0) and 1 - 5/2 dP_z/dp for b (pressed: dP_z < 0), so
+// |h| >= 1, while |7/2 dF_X/dp| <= 7/2 mu_s mu_b <= 0.875 in the ranges of
+// validate(): the contact cannot stick, and it starts to slip along h (the
+// cloth contact is isotropic).
 //
 // Restitution (M9): W(p) = Int_0^p u_n dp; W_c = W(p_c) at u_n(p_c) = 0; the
 // end p_f has W(p_f) = (1 - e^2) W_c (Stronge's energetic coefficient).
 //
 // Slip age (M10). Near a grip the slip s goes to zero after a finite normal
 // impulse like a non-integer power (the anisotropy 7 vs 5 turns s^ towards
-// z), where no polynomial integrator keeps its order. In L with
-// mu_b dp = |s| dL every rate is a smooth, bounded function times |s|:
+// z), where no polynomial integrator keeps its order. In the slip age L,
+// mu_b dp = |s| dL, every rate is a smooth, bounded function times |s|:
 //   dp/dL = |s|/mu_b,  dP_t/dL = s_t,  dP_z/dL = s_z,
 //   dF_X/dL = -mu_s |s_z| sigma_X^ (pressed ball only),  dW/dL = u_n |s|/mu_b,
 // with u_n, s, sigma linear in (p, P_t, P_z, F) (M5); the grip is L -> inf.
 // Without cloth friction this is s_t0 e^{-7L}, s_z0 e^{-5L} of
-// ball_collision.cpp (B7). The state is integrated by the Dormand-Prince 5(4)
-// pair (Hairer, Norsett & Wanner, "Solving ODEs I", II.5); the end of
-// compression (u_n = 0) and the end of the impact (M9) are found by the
-// Illinois method on the length of the step that crosses them.
+// ball_collision.cpp (B7). But while |s| >> mu_b the impact is over in a
+// tiny range of L in which p and W change fast; so the integration variable
+// is tau with dL/dtau = mu_b / (|s| + mu_b) (in units of u_n(0)): the rates
+// in tau are those in L times that factor, p ~ tau for a large slip and
+// tau ~ L near a grip. The slip's relative rate of decay in tau is at most
+// 7 mu_b / (|s| + mu_b) (bounded by 7), which also bounds the step for
+// stability. The state is integrated by the Dormand-Prince 5(4) pair
+// (Hairer, Norsett & Wanner, "Solving ODEs I", II.5; first stage of a step =
+// last of the one before); the end of compression (u_n = 0) and the end of
+// the impact (M9) are found on the step that crosses them: root of the cubic
+// Hermite interpolant, then Newton's method on the step length.
 //
 // Everything is scaled: velocities (and R w) in units of u_n(0), impulses per
 // unit mass in the same units. The solution scales exactly with u_n(0).
@@ -61,8 +70,8 @@ namespace cueball {
 
 namespace {
 
-// State in the slip age L: p, P_t, P_z, the pressed ball's cloth friction
-// impulse F in (n, t) components, and the normal work W.
+// State, a function of tau (M10): p, P_t, P_z, the pressed ball's cloth
+// friction impulse F in (n, t) components, and the normal work W.
 constexpr std::size_t kStateSize = 6;
 using State = std::array<double, kStateSize>;
 enum : std::size_t { kP = 0, kPt = 1, kPz = 2, kFn = 3, kFt = 4, kWork = 5 };

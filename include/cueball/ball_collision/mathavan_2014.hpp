@@ -52,11 +52,15 @@
 //      work W_c = Int u_n dp; the impact ends when Int u_n dp = (1 - e^2) W_c.
 //      Without cloth friction u_n = u_n0 - 2p and this is Newton's
 //      p_n = (1 + e) u_n0 / 2 of ball_collision.hpp (B5).
-//   M10 solved in the slip age L, mu_b dp = |s| dL, in which every rate is
-//      smooth up to the grip (L -> infinity): Dormand-Prince 5(4) steps with
-//      error control (1e-11 relative), the ends of compression and of the
-//      impact located by root finding on the step. Closed forms when there
-//      is no ball-ball friction or slip, and for the normal impulse after a grip.
+//   M10 solved in a blended slip age tau, dp/dtau = |s| / (|s| + mu_b): tau ~ p
+//      while the slip is large, and tau ~ L (mu_b dp = |s| dL) near a grip,
+//      where the slip dies out exponentially in tau instead of like a
+//      non-integer power of the normal impulse left. Every rate is then
+//      smooth: Dormand-Prince 5(4) steps with error control (1e-10 of the
+//      velocity scale per step; the results agree with the closed forms to
+//      ~1e-12), the ends of compression and of the impact located on the step
+//      (Hermite start, Newton). Closed forms when there is no ball-ball
+//      friction or slip, and for the normal impulse after a grip.
 //   M11 with cloth_friction = 0 this is exactly resolve_ball_collision() of
 //      ball_collision.hpp with a constant friction (friction_excess = 0).
 // Not modelled: the hop of the ball pushed up, vertical velocities, gravity's

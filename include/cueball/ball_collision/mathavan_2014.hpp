@@ -61,8 +61,9 @@
 //      ~1e-12), the ends of compression and of the impact located on the step
 //      (Hermite start, Newton). Closed forms when there is no ball-ball
 //      friction or slip, and for the normal impulse after a grip.
-//   M11 with cloth_friction = 0 this is exactly resolve_ball_collision() of
-//      ball_collision.hpp with a constant friction (friction_excess = 0).
+//   M11 with cloth_friction = 0 this is the model of resolve_ball_collision()
+//      in ball_collision.hpp with a constant friction (friction_excess = 0);
+//      the two agree to ~1e-12 of the velocities.
 // Not modelled: the hop of the ball pushed up, vertical velocities, gravity's
 // impulse during the impact, ball deformation, speed-dependent friction.
 //

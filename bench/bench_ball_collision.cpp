@@ -11,6 +11,14 @@
 //   BM_CollideBalls/stun          the same pairs without spins about horizontal
 //                                 axes: horizontal slip only, closed form
 //   BM_CollideBalls/frictionless  normal impulse only
+//   BM_CollideBalls/constant      e = 0.89, constant mu = 0.05: the ball-ball part
+//                                 of Mathavan et al. (2014), for the two below
+//   BM_Mathavan2014/paper         src/ball_collision/mathavan_2014.cpp with the
+//                                 paper's constants (e_b = 0.89, mu_b = 0.05,
+//                                 mu_s = 0.21): the cloth's friction during the
+//                                 impact, integrated by DOPRI5 in the slip age
+//   BM_Mathavan2014/no_cloth      the same with mu_s = 0 (the physics of
+//                                 BM_CollideBalls/constant, by the integrator)
 // Counter gripped: the fraction of the batch whose slip stopped during the impact.
 #include <benchmark/benchmark.h>
 
@@ -19,6 +27,7 @@
 #include <vector>
 
 #include "cueball/ball_collision.hpp"
+#include "cueball/ball_collision/mathavan_2014.hpp"
 #include "cueball/parameters.hpp"
 
 namespace {
@@ -64,19 +73,25 @@ const std::vector<Pair>& batch(bool horizontal_spins) {
   return horizontal_spins ? spinning : stun;
 }
 
-void run(benchmark::State& state, bool horizontal_spins, const BallCollisionParameters& contact) {
+// Times collide(a, b, ball, contact) over the batch.
+template <class Contact, class Collide>
+void run_kernel(benchmark::State& state, bool horizontal_spins, const Contact& contact, Collide collide) {
   const BallParameters ball = pool_parameters().ball;
   const std::vector<Pair>& pairs = batch(horizontal_spins);
   std::size_t i = 0;
   for (auto _ : state) {
-    const BallCollisionResult r = resolve_ball_collision(pairs[i].a, pairs[i].b, ball, contact);
+    const BallCollisionResult r = collide(pairs[i].a, pairs[i].b, ball, contact);
     benchmark::DoNotOptimize(r);
     i = (i + 1) & (kBatch - 1);
   }
   double gripped = 0.0;
-  for (const Pair& p : pairs) gripped += resolve_ball_collision(p.a, p.b, ball, contact).gripped ? 1.0 : 0.0;
+  for (const Pair& p : pairs) gripped += collide(p.a, p.b, ball, contact).gripped ? 1.0 : 0.0;
   state.counters["gripped"] = gripped / static_cast<double>(kBatch);
   state.SetItemsProcessed(static_cast<int64_t>(state.iterations()));
+}
+
+void run(benchmark::State& state, bool horizontal_spins, const BallCollisionParameters& contact) {
+  run_kernel(state, horizontal_spins, contact, resolve_ball_collision);
 }
 
 void BM_CollideBalls_Alciatore(benchmark::State& state) { run(state, true, ball_collision_alciatore()); }
@@ -87,5 +102,22 @@ BENCHMARK(BM_CollideBalls_Stun)->Name("BM_CollideBalls/stun");
 
 void BM_CollideBalls_Frictionless(benchmark::State& state) { run(state, true, ball_collision_frictionless(0.95)); }
 BENCHMARK(BM_CollideBalls_Frictionless)->Name("BM_CollideBalls/frictionless");
+
+void BM_CollideBalls_Constant(benchmark::State& state) {
+  run(state, true, BallCollisionParameters{0.89, 0.05, 0.0, 0.0});
+}
+BENCHMARK(BM_CollideBalls_Constant)->Name("BM_CollideBalls/constant");
+
+void BM_Mathavan2014_Paper(benchmark::State& state) {
+  run_kernel(state, true, mathavan_2014_contact(), mathavan_2014_collision);
+}
+BENCHMARK(BM_Mathavan2014_Paper)->Name("BM_Mathavan2014/paper");
+
+void BM_Mathavan2014_NoCloth(benchmark::State& state) {
+  Mathavan2014Contact contact = mathavan_2014_contact();
+  contact.cloth_friction = 0.0;
+  run_kernel(state, true, contact, mathavan_2014_collision);
+}
+BENCHMARK(BM_Mathavan2014_NoCloth)->Name("BM_Mathavan2014/no_cloth");
 
 }  // namespace

@@ -56,12 +56,15 @@
 // amplitude a = sqrt(u_s^2 + (v_s / Omega)^2), so the break can only come
 // where L < a: before phi = asin(a / (mu eta^2)) or after pi minus that. In
 // those windows g = |u| - L is followed by steps that cannot pass its first
-// zero: from g < 0, g(t + h) <= g + (|du/dt| - dL/dt) h + C h^2 / 2 with
-// C = Omega^2 a + mu eta^2 max(1, 1/e)^2 bounding |g''|, so g < 0 up to the
-// positive root of that quadratic (near a zero the steps converge on it
-// quadratically, like Newton's method from one side). A sampled scan would
-// miss the short excursions of g above zero that stiff springs make (and
-// the exit slip would jump). At t_f, L = 0, so a stick
+// zero: from a point with g < 0 each step is the largest h for which an
+// upper bound of g on [t, t + h] is still negative (Stick::safe_step: a
+// quadratic with |g''| <= Omega^2 a + mu eta^2 (dphi/dt)^2, which converges
+// on a zero quadratically, like Newton's method from one side; lines from
+// the concavity of |u| between its zeros and of L; and a quadratic with
+// the exact slope and the curvature bounded over the step, for sticks that
+// barely hold or barely break). A sampled scan would miss the short
+// excursions of g above zero that stiff springs make (and the exit slip
+// would jump). At t_f, L = 0, so a stick
 // that lasts to the end leaves u = 0, as does a slip: the tangential spring
 // returns all its energy and the ball's tangential energy beta^-1 v^2 / 2
 // can only fall (friction at the particle does negative work), |v_f| <= v0.
@@ -195,6 +198,7 @@ class Stick {
     double slope;  // |du/dt| - dL/dt >= dg/dt
     double u;
     double v;
+    double dl;     // dL/dt
   };
 
   Value at(double t) const {
@@ -206,7 +210,7 @@ class Stick {
     const double phi = phase(k_, t);
     const double l = k_.limit * std::sin(phi);
     const double dl = k_.limit * std::cos(phi) / kappa_at(k_, t);
-    return {std::abs(u) - l, std::abs(v) - dl, u, v};
+    return {std::abs(u) - l, std::abs(v) - dl, u, v, dl};
   }
 
   // The first step from the start of the stick, where g = 0. After a slip
@@ -225,12 +229,66 @@ class Stick {
     return 0.5 * std::min(-3.0 * g2 / g3, std::abs(start.u) / (k_.omega * amp_));
   }
 
-  // The first break in [lo, hi]. From a point with g < 0,
-  // g(t + h) <= g + slope h + curvature h^2 / 2 (|u''| <= Omega^2 amp,
-  // |L''| <= mu eta^2 rate^2), so g stays negative up to the positive root of
-  // that quadratic: stepping by it never passes a break and converges on one
-  // quadratically (a sampled scan misses the short excursions of g above zero
-  // that stiff springs make). A break is declared where g >= -tolerance.
+  // How far g surely stays negative from a point where g < 0, within the
+  // current normal phase (dphi/dt = rate, 1 or 1/e): the larger of two
+  // bounds, then grown by a third. (1) g(t + h) <= g + slope h +
+  // C h^2 / 2 with C = Omega^2 amp + mu eta^2 rate^2 >= |g''|: converges on a
+  // break quadratically. (2) |u| is concave between its zeros and |du/dt| <=
+  // Omega amp, so |u(t + h)| <= max(|u| + h d|u|/dt, Omega amp h - |u|);
+  // L is concave on [0, t_f] with L(t_f) = 0, so L(t + h) >= L (1 - h /
+  // (t_f - t)): lines, which take long steps where (1) is slow (u and L both
+  // small, |u| falling).
+  double safe_step(double t, const Value& v) const {
+    const bool compressing = t < kHalfPi;
+    const double rate = compressing ? 1.0 : 1.0 / k_.e;
+    const double curvature = k_.omega * k_.omega * amp_ + k_.limit * rate * rate;
+    const double quadratic = (-v.slope + std::sqrt(v.slope * v.slope - 2.0 * curvature * v.g)) / curvature;
+    const double au = std::abs(v.u);
+    const double l = au - v.g;
+    const double chord = l / (k_.t_f - t);                     // -(chord slope of L to t_f)
+    const double rise = u_rate(v);                               // d|u|/dt
+    const double first = rise + chord > 0.0 ? -v.g / (rise + chord) : kPi;  // |u| + h d|u|/dt reaches L
+    const double second = (au + l) / (k_.omega * amp_ + chord);  // Omega amp h - |u| reaches L
+    double h = std::max(quadratic, std::min(first, second));
+    // (3) While u keeps its sign, g'' = -Omega^2 |u| + dphi/dt^2 L exactly,
+    // and over [t, t + h] it is at most C(h) = -Omega^2 max(0, |u| - Omega amp h)
+    // + rate^2 min(mu eta^2, L + max(0, dL/dt) h); with the true slope g' that
+    // certifies g + g' s + C(h) s^2 / 2 < 0 on [0, h]. Where the curvature
+    // bound of (1) is far above the real g'' (a stick that barely holds or
+    // barely breaks) this takes steps many times longer; try doubling h.
+    const double g1 = rise - v.dl;
+    const double no_zero = au / (k_.omega * amp_);  // u keeps its sign this long
+    for (int i = 0; i < 8; ++i) {
+      const double next = 2.0 * h;
+      if (!(next <= no_zero) || !below_zero(v.g, g1, local_curvature(au, l, v.dl, rate, next), next)) break;
+      h = next;
+    }
+    return compressing ? std::min(h, kHalfPi - t) : h;
+  }
+
+  double local_curvature(double au, double l, double dl, double rate, double h) const {
+    const double u_low = std::max(0.0, au - k_.omega * amp_ * h);
+    const double l_high = std::min(k_.limit, l + std::max(0.0, dl) * h);
+    return -k_.omega * k_.omega * u_low + rate * rate * l_high;
+  }
+
+  // g + g1 s + c s^2 / 2 < 0 for all s in [0, h], given g < 0.
+  static bool below_zero(double g, double g1, double c, double h) {
+    auto q = [&](double s) { return g + g1 * s + 0.5 * c * s * s; };
+    if (q(h) >= 0.0) return false;
+    if (c < 0.0) {
+      const double top = -g1 / c;  // the maximum of a concave q
+      if (top > 0.0 && top < h && q(top) >= 0.0) return false;
+    }
+    return true;
+  }
+
+  // d|u|/dt = -sign(u) v (|u| grows at |v| from u = 0).
+  static double u_rate(const Value& v) { return v.u > 0.0 ? -v.v : v.u < 0.0 ? v.v : std::abs(v.v); }
+
+  // The first break in [lo, hi]: stepping by safe_step() never passes one (a
+  // sampled scan would miss the short excursions of g above zero that stiff
+  // springs make). A break is declared where g >= -tolerance.
   bool search(double lo, double hi, double& t_break) const {
     if (!(hi > lo)) return false;
     double t = lo;
@@ -238,11 +296,12 @@ class Stick {
     for (int i = 0; i < kMaxSteps; ++i) {
       double h = 0.0;
       if (v.g < -tolerance_) {
-        h = (-v.slope + std::sqrt(v.slope * v.slope - 2.0 * curvature_ * v.g)) / curvature_;
+        h = safe_step(t, v);
       } else if (i == 0 && lo == t_s_) {
         h = first_step(v);
       }
-      if (!(h > 0.0)) break;  // g has reached zero: the stick breaks at t
+      // g has reached zero (or the step is below the resolution of t): the stick breaks at t
+      if (!(h > 0.0) || !(t + h > t)) break;
       if (t + h >= hi) return false;
       t += h;
       v = at(t);
@@ -251,7 +310,7 @@ class Stick {
     return true;
   }
 
-  static constexpr int kMaxSteps = 100000;
+  static constexpr int kMaxSteps = 10000;
 
   const Scalar& k_;
   double t_s_;

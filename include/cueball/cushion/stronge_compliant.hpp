@@ -92,10 +92,13 @@
 // The kernel allocates nothing, does not throw and is deterministic: validate
 // the constants once (validate(), or build them with
 // stronge_compliant_cushion()), then call stronge_compliant_rebound() in the
-// simulation loop. Cost with the defaults (Release, one core of a shared
-// machine): about 0.2 us per call when slip lasts throughout (large spins),
-// about 0.9 us for rolling balls with moderate side spin (a stick phase,
-// some 12 evaluations of two sine-cosine pairs to find where it ends).
+// simulation loop. Cost with the defaults (Release, a shared 2-core
+// machine, best of repeated runs): 0.09-0.14 us per call for large random
+// spins (mostly slip throughout), 0.16-0.25 us for rolling balls with side
+// spin up to V/R (a stick phase; its end takes some 5 evaluations of two
+// sine-cosine pairs on average, at most about 50 over a wide random scan of
+// the elastic range Omega = 1.5-1.9). Omega close to 1 or in the hundreds
+// needs more (up to a few thousand evaluations in rare cases).
 #pragma once
 
 #include "cueball/cushion/rebound.hpp"

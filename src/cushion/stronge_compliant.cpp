@@ -215,18 +215,21 @@ class Stick {
 
   // The first step from the start of the stick, where g = 0. After a slip
   // (|u| = L, dg/dt = 0), g'' = (dphi/dt^2 - Omega^2) L < 0 and the bound
-  // Omega^3 amp + mu eta^2 rate^3 on the third derivative keep g below zero
-  // up to -3 g'' / that bound (half of it is taken; u keeps its sign there).
-  // At t = 0 (u = L = 0) the general step applies, with a probe for the
+  // Omega^3 amp + mu eta^2 (dphi/dt)^3 on the third derivative keep g below
+  // zero up to -3 g'' / that bound (half of it is taken; u keeps its sign
+  // there, and the step stays in the normal phase, where L is smooth). At
+  // t = 0 (u = L = 0) the general step applies, with a probe for the
   // borderline v0 = mu eta^2.
   double first_step(const Value& start) const {
     const double probe = kPi / 16.0 / std::max(k_.omega, rate_);
     if (start.u == 0.0) return start.slope < 0.0 ? -2.0 * start.slope / curvature_ : probe;
-    const double kappa = kappa_at(k_, t_s_);
-    const double g2 = (1.0 / (kappa * kappa) - k_.omega * k_.omega) * std::abs(start.u);
+    const bool compressing = t_s_ < kHalfPi;
+    const double rate = compressing ? 1.0 : 1.0 / k_.e;
+    const double g2 = (rate * rate - k_.omega * k_.omega) * std::abs(start.u);
     if (!(g2 < 0.0)) return 0.0;
-    const double g3 = k_.omega * k_.omega * k_.omega * amp_ + k_.limit * rate_ * rate_ * rate_;
-    return 0.5 * std::min(-3.0 * g2 / g3, std::abs(start.u) / (k_.omega * amp_));
+    const double g3 = k_.omega * k_.omega * k_.omega * amp_ + k_.limit * rate * rate * rate;
+    const double h = 0.5 * std::min(-3.0 * g2 / g3, std::abs(start.u) / (k_.omega * amp_));
+    return compressing ? std::min(h, kHalfPi - t_s_) : h;
   }
 
   // How far g surely stays negative from a point where g < 0, within the
@@ -255,10 +258,11 @@ class Stick {
     // + rate^2 min(mu eta^2, L + max(0, dL/dt) h); with the true slope g' that
     // certifies g + g' s + C(h) s^2 / 2 < 0 on [0, h]. Where the curvature
     // bound of (1) is far above the real g'' (a stick that barely holds or
-    // barely breaks) this takes steps many times longer; try doubling h.
+    // barely breaks) this takes steps many times longer: h is doubled while
+    // that holds.
     const double g1 = rise - v.dl;
     const double no_zero = au / (k_.omega * amp_);  // u keeps its sign this long
-    for (int i = 0; i < 8; ++i) {
+    for (int i = 0; i < 40; ++i) {
       const double next = 2.0 * h;
       if (!(next <= no_zero) || !below_zero(v.g, g1, local_curvature(au, l, v.dl, rate, next), next)) break;
       h = next;

@@ -96,9 +96,10 @@
 // machine, best of repeated runs): 0.09-0.14 us per call for large random
 // spins (mostly slip throughout), 0.16-0.25 us for rolling balls with side
 // spin up to V/R (a stick phase; its end takes some 5 evaluations of two
-// sine-cosine pairs on average, at most about 50 over a wide random scan of
-// the elastic range Omega = 1.5-1.9). Omega close to 1 or in the hundreds
-// needs more (up to a few thousand evaluations in rare cases).
+// sine-cosine pairs on average, at most about 70 over a wide random scan of
+// Omega in (1, 5]). Stiffer springs make more stick-slip cycles, some
+// 0.7 Omega phases: about 500 evaluations on average for Omega in the
+// hundreds.
 #pragma once
 
 #include "cueball/cushion/rebound.hpp"

@@ -14,11 +14,8 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
-#include <atomic>
 #include <cmath>
-#include <cstdlib>
 #include <limits>
-#include <new>
 #include <string>
 #include <tuple>
 #include <utility>
@@ -26,20 +23,8 @@
 
 #include "cueball/errors.hpp"
 #include "cueball/parameters.hpp"
-
-// Counts heap allocations, to check that the default path allocates nothing.
-namespace {
-std::atomic<long> g_allocations{0};
-}  // namespace
-
-// (Not inlined, so that GCC does not see malloc and free paired across `new`.)
-[[gnu::noinline]] void* operator new(std::size_t size) {
-  ++g_allocations;
-  if (void* p = std::malloc(size == 0 ? 1 : size)) return p;
-  throw std::bad_alloc();
-}
-[[gnu::noinline]] void operator delete(void* p) noexcept { std::free(p); }
-[[gnu::noinline]] void operator delete(void* p, std::size_t) noexcept { std::free(p); }
+#include "count_allocations.hpp"
+#include "expect_invalid.hpp"
 
 namespace cueball {
 namespace {
@@ -96,15 +81,8 @@ double gap(const CushionImpactResult& a, const CushionImpactResult& b) {
                    r * std::abs(a.angular_velocity.z - b.angular_velocity.z)});
 }
 
-template <class F>
-void expect_invalid(const std::string& field, F&& f) {
-  try {
-    f();
-    ADD_FAILURE() << "no InvalidArgument for " << field;
-  } catch (const InvalidArgument& e) {
-    EXPECT_EQ(e.field(), field) << e.what();
-  }
-}
+using test::expect_invalid;
+using test::g_allocations;
 
 // ------------------------------------------------------------------ constants and inputs
 

@@ -95,6 +95,7 @@ CushionImpactOptions options_of(const CushionFlags& f, bool history) {
 
 struct ImpactFlags {
   std::string model = "mathavan_2010";
+  std::optional<double> frequency_ratio;
   double v0 = 0.0;
   double alpha = 0.0;
   std::optional<double> topspin, topspin_k, sidespin, sidespin_k;
@@ -164,6 +165,12 @@ void run_other_model(CushionModel model, const ImpactFlags& f, const PaperIncide
     check_flag("--mu-w", *c.friction, 0.0, 1.0, "the model's ball-cushion friction, [0, 1]");
     settings.friction = *c.friction;
   }
+  if (f.frequency_ratio) {
+    if (model != CushionModel::stronge_compliant) throw UsageError("--frequency-ratio applies to --model stronge_compliant only");
+    check_flag("--frequency-ratio", *f.frequency_ratio, 1.0 + 1e-9, 1000.0,
+               "Omega, tangential over normal natural frequency, (1, 1000]");
+    settings.frequency_ratio = *f.frequency_ratio;
+  }
   const double height = c.height.value_or(default_cushion_height(p.ball));
   if (c.height)
     check_flag("--height", height, p.ball.radius * (1 + 1e-9), 2 * p.ball.radius * (1 - 1e-9),
@@ -181,7 +188,11 @@ void run_other_model(CushionModel model, const ImpactFlags& f, const PaperIncide
   report.add_text("model", to_string(model));
   report.add("e", settings.restitution, "", "restitution");
   report.add("mu_w", settings.friction, "", "ball-cushion friction");
-  report.add("height", height, "m", "contact height h");
+  if (model == CushionModel::stronge_compliant) {
+    report.add("omega", settings.frequency_ratio, "", "tangential over normal natural frequency");
+  } else {
+    report.add("height", height, "m", "contact height h");
+  }
   report.end_section();
   if (!(r.velocity.y < 0.0)) report.warn("the model leaves the ball pressing on the cushion (no rebound)");
   emit(report, f.parameters.json, out, err);
@@ -706,6 +717,8 @@ Command add_cushion_command(CLI::App& app) {
                       "; a model other than\nmathavan_2010 takes its own constants unless --e and --mu-w "
                       "are given, and no solver flags")
       ->capture_default_str();
+  sub->add_option("--frequency-ratio", flags->frequency_ratio,
+                  "stronge_compliant: Omega, tangential over normal natural frequency, (1, 1000]; default 1.8");
   sub->add_option("--v0", flags->v0, "Incoming speed V0, m/s")->required();
   sub->add_option("--alpha", flags->alpha, "Angle of incidence from the cushion, degrees, (0, 90]")->required();
   sub->add_option("--topspin", flags->topspin, "Topspin w_T, rad/s");

@@ -12,6 +12,7 @@ const char* to_string(CushionModel model) {
   switch (model) {
     case CushionModel::mathavan_2010: return "mathavan_2010";
     case CushionModel::han_2005: return "han_2005";
+    case CushionModel::stronge_compliant: return "stronge_compliant";
   }
   return "?";
 }
@@ -43,6 +44,11 @@ CushionSettings default_cushion_settings(CushionModel model) {
   if (model == CushionModel::han_2005) {
     s.restitution = kHan2005Restitution;
     s.friction = kHan2005Friction;
+  } else if (model == CushionModel::stronge_compliant) {
+    const StrongeCompliantConstants k;
+    s.restitution = k.restitution;
+    s.friction = k.friction;
+    s.frequency_ratio = k.frequency_ratio;
   }
   return s;
 }
@@ -67,6 +73,20 @@ CushionContact cushion_contact(const Parameters& table, const CushionSettings& s
       c.han = han_2005_cushion(table.ball, settings.restitution, settings.friction, contact_height);
       validate(c.han);  // the contact height: sin_theta
       break;
+    case CushionModel::stronge_compliant: {
+      validate(table);
+      require_in_range("cushion_restitution", settings.restitution, 1e-9, 1.0, "Stronge's energetic e");
+      require_in_range("cushion_friction", settings.friction, 0.0, 1.0, "mu");
+      if (!(settings.frequency_ratio > 1.0 && settings.frequency_ratio <= 1000.0))
+        throw InvalidArgument("cushion_frequency_ratio", settings.frequency_ratio, "(1, 1000]",
+                              "Omega, tangential over normal natural frequency");
+      StrongeCompliantConstants k;
+      k.restitution = settings.restitution;
+      k.friction = settings.friction;
+      k.frequency_ratio = settings.frequency_ratio;
+      c.stronge = stronge_compliant_cushion(table.ball, k);
+      break;
+    }
   }
   return c;
 }
@@ -78,6 +98,7 @@ CushionRebound cushion_rebound(const IncomingBall& ball, const CushionContact& c
       return {r.velocity, r.angular_velocity};
     }
     case CushionModel::han_2005: return han_2005_rebound(ball, contact.han);
+    case CushionModel::stronge_compliant: return stronge_compliant_rebound(ball, contact.stronge);
   }
   return {ball.velocity, ball.angular_velocity};
 }

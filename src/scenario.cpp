@@ -132,7 +132,7 @@ Parameters read_parameters(const Reader& r, const Table& table) {
 // "cushion": the model by name, then its constants (each model's own
 // defaults, cushion_model.hpp).
 CushionSettings read_cushion(const Reader& r) {
-  r.allow_only({"model", "restitution", "friction", "solver", "paper_steps"});
+  r.allow_only({"model", "restitution", "friction", "solver", "paper_steps", "frequency_ratio"});
   const std::string name = r.text("model", to_string(CushionModel::mathavan_2010));
   const std::optional<CushionModel> model = cushion_model_from_string(name);
   if (!model)
@@ -149,15 +149,24 @@ CushionSettings read_cushion(const Reader& r) {
                                                    " is not known; allowed: exact, paper");
     c.solver = *chosen;
     c.paper_steps = r.integer("paper_steps", c.paper_steps, 1, 1000000, "Euler steps per impact");
-    return c;
   }
-  for (const char* key : {"solver", "paper_steps"}) {
-    if (r.has(key))
-      throw InvalidArgument(r.field(key), r.field(key) + " applies to the model \"mathavan_2010\" only, not to " +
-                                              quote_input(name));
+  const auto only_for = [&](const char* key, CushionModel owner) {
+    if (*model != owner && r.has(key))
+      throw InvalidArgument(r.field(key), r.field(key) + " applies to the model \"" + to_string(owner) +
+                                              "\" only, not to " + quote_input(name));
+  };
+  only_for("solver", CushionModel::mathavan_2010);
+  only_for("paper_steps", CushionModel::mathavan_2010);
+  only_for("frequency_ratio", CushionModel::stronge_compliant);
+  if (*model == CushionModel::han_2005) {
+    c.restitution = r.number("restitution", c.restitution, 0.0, 1.0, "Han 2005 e");
+    c.friction = r.number("friction", c.friction, 0.0, 1.0, "Han 2005 mu");
+  } else if (*model == CushionModel::stronge_compliant) {
+    c.restitution = r.number("restitution", c.restitution, 1e-9, 1.0, "Stronge's energetic e");
+    c.friction = r.number("friction", c.friction, 0.0, 1.0, "mu");
+    c.frequency_ratio = r.number("frequency_ratio", c.frequency_ratio, 1.0 + 1e-9, 1000.0,
+                                 "Omega, tangential over normal natural frequency");
   }
-  c.restitution = r.number("restitution", c.restitution, 0.0, 1.0, "Han 2005 e");
-  c.friction = r.number("friction", c.friction, 0.0, 1.0, "Han 2005 mu");
   return c;
 }
 
@@ -278,6 +287,7 @@ InvalidArgument relabelled(const InvalidArgument& e, const Json& j, const std::v
   }
   if (f == "cushion_restitution" || f == "e_e") return at("scenario.cushion.restitution");
   if (f == "cushion_paper_steps") return at("scenario.cushion.paper_steps");
+  if (f == "cushion_frequency_ratio") return at("scenario.cushion.frequency_ratio");
   if (f == "cushion_friction" || f == "mu_w") {
     // mu_w's bounds depend on the contact angle (radius, cushion height) and on mu_s.
     if (given("cushion", "friction")) return at("scenario.cushion.friction");
@@ -376,6 +386,7 @@ Json scenario_json(const Scenario& s) {
     j["cushion"]["solver"] = to_string(cushion.solver);
     if (cushion.solver == CushionSolver::paper) j["cushion"]["paper_steps"] = cushion.paper_steps;
   }
+  if (cushion.model == CushionModel::stronge_compliant) j["cushion"]["frequency_ratio"] = cushion.frequency_ratio;
   const BallCollisionParameters& b = s.settings.ball_collision;
   j["ball_collision"] = {{"restitution", b.restitution},
                          {"friction", b.friction},

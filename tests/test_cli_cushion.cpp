@@ -176,7 +176,7 @@ TEST(CliCushion, FiguresWritesThePapersPlotsAndTheModels) {
   // The models' figure has a curve of each model with and without side spin.
   std::ifstream data(dir / "models.dat");
   const std::string text((std::istreambuf_iterator<char>(data)), std::istreambuf_iterator<char>());
-  for (const char* title : {"# mathavan_2010\n", "# mathavan_2010/side=1\n", "# han_2005\n", "# han_2005/side=1\n"})
+  for (const char* title : {"# mathavan_2010\n", "# mathavan_2010/side=1\n", "# han_2005\n", "# han_2005/side=1\n", "# stronge_compliant\n"})
     EXPECT_NE(text.find(title), std::string::npos) << title;
   std::filesystem::remove_all(dir);
 }
@@ -196,9 +196,16 @@ TEST(CliCushion, ModelFlagChoosesTheCushionModel) {
   const CliRun mathavan = run_cli({"cushion", "--v0", "1", "--alpha", "90", "--json"});
   EXPECT_EQ(nlohmann::json::parse(mathavan.out).at("cushion").at("model"), "mathavan_2010");
 
+  const CliRun stronge = run_cli({"cushion", "--model", "stronge_compliant", "--frequency-ratio", "2", "--v0", "1",
+                                  "--alpha", "90", "--topspin-k", "0", "--json"});
+  ASSERT_EQ(stronge.status, 0) << stronge.err;
+  // Head-on without spin at the equator: no slip, so the ball leaves at e V0.
+  EXPECT_NEAR(nlohmann::json::parse(stronge.out).at("speed").get<double>(), 0.85, 1e-12);
+  EXPECT_EQ(nlohmann::json::parse(stronge.out).at("cushion").at("omega").get<double>(), 2.0);
+  EXPECT_EQ(run_cli({"cushion", "--frequency-ratio", "2", "--model", "han_2005", "--v0", "1", "--alpha", "45"}).status, 2);
   const CliRun unknown = run_cli({"cushion", "--model", "stronge", "--v0", "1", "--alpha", "45"});
   EXPECT_EQ(unknown.status, 2);
-  EXPECT_NE(unknown.err.find("--model = \"stronge\" is not known; allowed: mathavan_2010, han_2005"), std::string::npos)
+  EXPECT_NE(unknown.err.find("--model = \"stronge\" is not known; allowed: mathavan_2010, han_2005, stronge_compliant"), std::string::npos)
       << unknown.err;
   const CliRun solver = run_cli({"cushion", "--model", "han_2005", "--v0", "1", "--alpha", "45", "--solver", "paper"});
   EXPECT_EQ(solver.status, 2);

@@ -30,10 +30,10 @@ std::string field_of(const auto& call) {
 }
 
 TEST(CushionModel, NamesRoundTrip) {
-  for (const CushionModel m : {CushionModel::mathavan_2010, CushionModel::han_2005})
+  for (const CushionModel m : kCushionModels)
     EXPECT_EQ(cushion_model_from_string(to_string(m)), m);
   EXPECT_FALSE(cushion_model_from_string("mathavan").has_value());
-  EXPECT_EQ(cushion_model_names(), "\"mathavan_2010\", \"han_2005\"");
+  EXPECT_EQ(cushion_model_names(), "\"mathavan_2010\", \"han_2005\", \"stronge_compliant\"");
   EXPECT_EQ(cushion_solver_from_string("paper"), CushionSolver::paper);
   EXPECT_FALSE(cushion_solver_from_string("euler").has_value());
 }
@@ -47,6 +47,9 @@ TEST(CushionModel, EachModelHasItsOwnConstants) {
   EXPECT_EQ(h.model, CushionModel::han_2005);
   EXPECT_EQ(h.restitution, 0.85);
   EXPECT_EQ(h.friction, 0.2);
+  const CushionSettings k = default_cushion_settings(CushionModel::stronge_compliant);
+  EXPECT_EQ(k.restitution, 0.85);
+  EXPECT_EQ(k.frequency_ratio, 1.8);  // pooltool's omega_ratio
   // The simulator's default is Mathavan 2010's.
   EXPECT_EQ(SimulationSettings{}.cushion.model, CushionModel::mathavan_2010);
 }
@@ -67,6 +70,9 @@ TEST(CushionModel, ValidationNamesTheSimulationField) {
   s = default_cushion_settings(CushionModel::mathavan_2010);
   s.friction = 0.9;  // above tan(theta)
   EXPECT_EQ(field_of([&] { (void)cushion_contact(p, s, h); }).rfind("mu_w: ", 0), 0u);
+  s = default_cushion_settings(CushionModel::stronge_compliant);
+  s.frequency_ratio = 1.0;
+  EXPECT_EQ(field_of([&] { (void)cushion_contact(p, s, h); }).rfind("cushion_frequency_ratio: ", 0), 0u);
 }
 
 TEST(CushionModel, DispatchGivesEachModelsOwnKernel) {
@@ -95,6 +101,15 @@ TEST(CushionModel, DispatchGivesEachModelsOwnKernel) {
   EXPECT_EQ(han.velocity.x, han_direct.velocity.x);
   EXPECT_EQ(han.velocity.y, han_direct.velocity.y);
   EXPECT_GT(std::abs(han.velocity.y - exact.velocity.y), 0.05);  // two different models
+
+  s = default_cushion_settings(CushionModel::stronge_compliant);
+  s.frequency_ratio = 2.5;
+  const CushionRebound stronge = cushion_rebound(in, cushion_contact(p, s, h));
+  StrongeCompliantConstants k;
+  k.frequency_ratio = 2.5;
+  const CushionRebound stronge_direct = stronge_compliant_rebound(in, stronge_compliant_cushion(p.ball, k));
+  EXPECT_EQ(stronge.velocity.x, stronge_direct.velocity.x);
+  EXPECT_EQ(stronge.angular_velocity.z, stronge_direct.angular_velocity.z);
 }
 
 TEST(CushionModel, ScenarioChoosesTheModelByName) {
@@ -113,15 +128,21 @@ TEST(CushionModel, ScenarioChoosesTheModelByName) {
   EXPECT_EQ(back.settings.cushion.solver, CushionSolver::paper);
   EXPECT_EQ(back.settings.cushion.paper_steps, 800);
   EXPECT_EQ(scenario_from_json(scenario_to_json(s)).settings.cushion.model, CushionModel::han_2005);
+  const Scenario k = scenario_from_json(
+      R"({"cushion": {"model": "stronge_compliant", "frequency_ratio": 3}, "balls": [{"id": 0, "position": [1, 0.6]}]})");
+  EXPECT_EQ(k.settings.cushion.frequency_ratio, 3.0);
+  EXPECT_EQ(scenario_from_json(scenario_to_json(k)).settings.cushion.frequency_ratio, 3.0);
 
   const auto error = [](const char* json) {
     return field_of([&] { (void)scenario_from_json(json); });
   };
   const std::string unknown = error(R"({"cushion": {"model": "stronge"}, "balls": [{"id": 0, "position": [1, 0.6]}]})");
   EXPECT_EQ(unknown.rfind("scenario.cushion.model: ", 0), 0u) << unknown;
-  EXPECT_NE(unknown.find("mathavan_2010, han_2005"), std::string::npos) << unknown;
+  EXPECT_NE(unknown.find("mathavan_2010, han_2005, stronge_compliant"), std::string::npos) << unknown;
   const std::string solver = error(R"({"cushion": {"model": "han_2005", "solver": "paper"}, "balls": [{"id": 0, "position": [1, 0.6]}]})");
   EXPECT_EQ(solver.rfind("scenario.cushion.solver: ", 0), 0u) << solver;
+  const std::string omega = error(R"({"cushion": {"frequency_ratio": 2}, "balls": [{"id": 0, "position": [1, 0.6]}]})");
+  EXPECT_NE(omega.find("applies to the model \"stronge_compliant\" only"), std::string::npos) << omega;
   const std::string mu = error(R"({"cushion": {"model": "han_2005", "friction": 2}, "balls": [{"id": 0, "position": [1, 0.6]}]})");
   EXPECT_EQ(mu.rfind("scenario.cushion.friction: ", 0), 0u) << mu;
 }
@@ -134,7 +155,7 @@ TEST(CushionModel, SimulatorReboundsByTheChosenModel) {
   const Parameters p = pool_parameters();
   const double R = p.ball.radius, v = 1.5;
   const std::vector<SimulationBall> balls{{0, "0", {{table.length - 0.3, table.width / 2}, {v, 0.0}, {0.0, v / R, 0.0}}}};
-  for (const CushionModel model : {CushionModel::mathavan_2010, CushionModel::han_2005}) {
+  for (const CushionModel model : kCushionModels) {
     SimulationSettings s;
     s.cushion = default_cushion_settings(model);
     const SimulationResult r = simulate(table, balls, s);

@@ -122,7 +122,7 @@ TEST(Simulator, RandomBreaksStayPhysicalAtEveryEvent) {
 // cushions and jaws many times each).
 TEST(Simulator, BreaksStayPhysicalUnderEveryCushionModel) {
   std::vector<CushionSettings> models;
-  for (const CushionModel model : {CushionModel::mathavan_2010, CushionModel::han_2005})
+  for (const CushionModel model : kCushionModels)
     models.push_back(default_cushion_settings(model));
   models.push_back(models.back());
   models.back().restitution = 0.1;  // Han 2005 leaves such balls pressing on the cushion

@@ -11,6 +11,10 @@
 //                      default) or the paper's Euler scheme ("paper").
 //   han_2005           cushion/han_2005.hpp: one impulse at the cushion, closed
 //                      form, the bed not involved.
+//   stronge_compliant  cushion/stronge_compliant.hpp: Stronge's compliant
+//                      contact (normal and tangential springs: slip, stick and
+//                      slip reversal in closed form), applied at the ball's
+//                      equator as pooltool does; the bed not involved.
 #pragma once
 
 #include <array>
@@ -20,17 +24,19 @@
 
 #include "cueball/cushion/han_2005.hpp"
 #include "cueball/cushion/rebound.hpp"
+#include "cueball/cushion/stronge_compliant.hpp"
 #include "cueball/cushion_impact.hpp"
 #include "cueball/parameters.hpp"
 
 namespace cueball {
 
-enum class CushionModel { mathavan_2010, han_2005 };
+enum class CushionModel { mathavan_2010, han_2005, stronge_compliant };
 
 /// Every model, in the order of the names.
-inline constexpr std::array kCushionModels{CushionModel::mathavan_2010, CushionModel::han_2005};
+inline constexpr std::array kCushionModels{CushionModel::mathavan_2010, CushionModel::han_2005,
+                                           CushionModel::stronge_compliant};
 
-/// "mathavan_2010", "han_2005".
+/// "mathavan_2010", "han_2005", "stronge_compliant".
 const char* to_string(CushionModel model);
 
 /// The model of that name, if there is one (the caller names its field in the error).
@@ -48,10 +54,14 @@ std::optional<CushionSolver> cushion_solver_from_string(std::string_view name);
 struct CushionSettings {
   CushionModel model = CushionModel::mathavan_2010;
   /// mathavan_2010: e_e, the energetic coefficient (16b), (0, 1];
-  /// han_2005: Newton's coefficient e along the common normal, [0, 1].
+  /// han_2005: Newton's coefficient e along the common normal, [0, 1];
+  /// stronge_compliant: Stronge's energetic e, (0, 1].
   double restitution = 0.98;
-  /// mathavan_2010: mu_w, [0, tan(theta)]; han_2005: mu, [0, 1].
+  /// mathavan_2010: mu_w, [0, tan(theta)]; han_2005 and stronge_compliant: mu, [0, 1].
   double friction = 0.14;
+  /// stronge_compliant only: Omega, the ratio of the tangential to the normal
+  /// natural frequency of the contact (S3), (1, 1000].
+  double frequency_ratio = 1.8;
   /// mathavan_2010 only: the exact solver (default) or the paper's Euler scheme.
   CushionSolver solver = CushionSolver::exact;
   /// mathavan_2010 with solver paper: N, the Euler steps per impact, [1, 10^6].
@@ -61,7 +71,8 @@ struct CushionSettings {
 /// Each model's own constants, as its source gives them: mathavan_2010 the
 /// authors' fit (e_e = 0.98, mu_w = 0.14, section 3.5, fitted with their
 /// Euler scheme and equally close with the exact solver); han_2005 e = 0.85,
-/// mu = 0.2 (cushion/han_2005.hpp).
+/// mu = 0.2 (cushion/han_2005.hpp); stronge_compliant pooltool's e = 0.85,
+/// mu = 0.2, Omega = 1.8 (cushion/stronge_compliant.hpp).
 CushionSettings default_cushion_settings(CushionModel model);
 
 /// The chosen model's constants for one contact height, validated: what the
@@ -71,11 +82,13 @@ struct CushionContact {
   CushionImpactModel mathavan;
   CushionImpactOptions mathavan_options;
   Han2005Cushion han;
+  StrongeCompliantCushion stronge;
 };
 
 /// Validates `settings` (InvalidArgument names "cushion_restitution",
-/// "cushion_friction", "cushion_paper_steps" or the model's constant) and
-/// builds the contact at height h.
+/// "cushion_friction", "cushion_paper_steps", "cushion_frequency_ratio" or
+/// the model's constant) and builds the contact at height h (which
+/// stronge_compliant, applied at the equator, does not use).
 CushionContact cushion_contact(const Parameters& table, const CushionSettings& settings, double contact_height);
 
 /// The ball just after the impact, by the contact's model. `ball` moves into

@@ -125,6 +125,7 @@ std::string scenario_json(const py::object& table, const py::iterable& balls, co
       d["cushion"]["solver"] = cueball::to_string(k.solver);
       d["cushion"]["paper_steps"] = k.paper_steps;
     }
+    if (k.model == cueball::CushionModel::stronge_compliant) d["cushion"]["frequency_ratio"] = k.frequency_ratio;
     const cueball::BallCollisionParameters& c = settings->ball_collision;
     d["ball_collision"] = py::dict("restitution"_a = c.restitution, "friction"_a = c.friction,
                                    "friction_excess"_a = c.friction_excess, "friction_decay"_a = c.friction_decay);
@@ -192,14 +193,15 @@ void bind_scenario(py::module_& m) {
   py::class_<SimulationSettings> settings_cls(
       m, "SimulationSettings",
       "The physics of a shot: parameters (ball and cloth); the cushion model by name (cushion_model:\n"
-      "'mathavan_2010', the default, or 'han_2005') with its restitution and friction (each model's own\n"
-      "defaults when not given) and, for mathavan_2010, cushion_solver 'exact' or 'paper' (the Euler\n"
-      "scheme, cushion_paper_steps steps); the ball-ball contact; and max_events (SimulationError\n"
-      "beyond it, [1, 1e6]).");
+      "'mathavan_2010', the default, 'han_2005' or 'stronge_compliant') with its restitution and\n"
+      "friction (each model's own defaults when not given); for mathavan_2010, cushion_solver 'exact'\n"
+      "or 'paper' (the Euler scheme, cushion_paper_steps steps); for stronge_compliant,\n"
+      "cushion_frequency_ratio (Omega, (1, 1000]); the ball-ball contact; and max_events\n"
+      "(SimulationError beyond it, [1, 1e6]).");
   settings_cls
       .def(py::init([](const cueball::Parameters& p, const py::object& e, const py::object& mu,
                        const cueball::BallCollisionParameters& c, int max_events, const std::string& model,
-                       const std::string& solver, int paper_steps) {
+                       const std::string& solver, int paper_steps, const py::object& omega) {
              SimulationSettings s;
              s.parameters = p;
              s.cushion = cueball::default_cushion_settings(cushion_model_named(model, "cushion_model"));
@@ -207,6 +209,7 @@ void bind_scenario(py::module_& m) {
              if (!mu.is_none()) s.cushion.friction = mu.cast<double>();
              s.cushion.solver = cushion_solver_named(solver, "cushion_solver");
              s.cushion.paper_steps = paper_steps;
+             if (!omega.is_none()) s.cushion.frequency_ratio = omega.cast<double>();
              s.ball_collision = c;
              s.max_events = max_events;
              return s;
@@ -217,7 +220,8 @@ void bind_scenario(py::module_& m) {
            py::arg_v("ball_collision", defaults.ball_collision, "ball_collision_alciatore()"),
            "max_events"_a = defaults.max_events, "cushion_model"_a = cueball::to_string(defaults.cushion.model),
            "cushion_solver"_a = cueball::to_string(defaults.cushion.solver),
-           "cushion_paper_steps"_a = defaults.cushion.paper_steps)
+           "cushion_paper_steps"_a = defaults.cushion.paper_steps,
+           py::arg_v("cushion_frequency_ratio", py::none(), "the model's own (1.8 for stronge_compliant)"))
       .def_readwrite("parameters", &SimulationSettings::parameters)
       .def_property(
           "cushion_model", [](const SimulationSettings& s) { return std::string(cueball::to_string(s.cushion.model)); },
@@ -236,16 +240,20 @@ void bind_scenario(py::module_& m) {
       .def_property(
           "cushion_paper_steps", [](const SimulationSettings& s) { return s.cushion.paper_steps; },
           [](SimulationSettings& s, int n) { s.cushion.paper_steps = n; }, "the paper solver's Euler steps, [1, 1e6]")
+      .def_property(
+          "cushion_frequency_ratio", [](const SimulationSettings& s) { return s.cushion.frequency_ratio; },
+          [](SimulationSettings& s, double v) { s.cushion.frequency_ratio = v; },
+          "stronge_compliant's Omega, tangential over normal natural frequency, (1, 1000]")
       .def_readwrite("ball_collision", &SimulationSettings::ball_collision)
       .def_readwrite("max_events", &SimulationSettings::max_events);
   add_value_semantics(
       settings_cls, "SimulationSettings",
       {"parameters", "cushion_model", "cushion_restitution", "cushion_friction", "cushion_solver", "cushion_paper_steps",
-       "ball_collision", "max_events"},
+       "cushion_frequency_ratio", "ball_collision", "max_events"},
       [](const SimulationSettings& s) {
         return py::make_tuple(s.parameters, std::string(cueball::to_string(s.cushion.model)), s.cushion.restitution,
                               s.cushion.friction, std::string(cueball::to_string(s.cushion.solver)), s.cushion.paper_steps,
-                              s.ball_collision, s.max_events);
+                              s.cushion.frequency_ratio, s.ball_collision, s.max_events);
       },
       [](const py::tuple& t) {
         SimulationSettings s;
@@ -255,8 +263,9 @@ void bind_scenario(py::module_& m) {
         s.cushion.friction = t[3].cast<double>();
         s.cushion.solver = cushion_solver_named(t[4].cast<std::string>(), "cushion_solver");
         s.cushion.paper_steps = t[5].cast<int>();
-        s.ball_collision = t[6].cast<cueball::BallCollisionParameters>();
-        s.max_events = t[7].cast<int>();
+        s.cushion.frequency_ratio = t[6].cast<double>();
+        s.ball_collision = t[7].cast<cueball::BallCollisionParameters>();
+        s.max_events = t[8].cast<int>();
         return s;
       });
 

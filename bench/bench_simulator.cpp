@@ -1,4 +1,5 @@
-// Benchmarks of whole shots (src/simulator.cpp): the built-in 9-ball break,
+// Benchmarks of whole shots (src/simulator.cpp): the built-in 9-ball break
+// under each ball-ball model,
 // a one-ball shot with five cushion hits under each cushion model, and batch throughput on one and
 // two threads (their ratio is the parallel speed-up), and simulate_many of
 // the same noisy breaks against simulate_batch (their throughput ratio, the
@@ -31,8 +32,16 @@ void run_shot(benchmark::State& st, const Scenario& s) {
                                                   benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
 }
 
-void BM_NineBallBreak(benchmark::State& st) { run_shot(st, default_scenario()); }
-BENCHMARK(BM_NineBallBreak)->Unit(benchmark::kMicrosecond);
+// The built-in break under each ball-ball model (ball_collision_model.hpp),
+// each with its own constants.
+void BM_NineBallBreak(benchmark::State& st, BallCollisionModel model) {
+  Scenario s = default_scenario();
+  s.settings.ball_collision_model = model;
+  s.settings.ball_collision = default_ball_collision(model);
+  run_shot(st, s);
+}
+BENCHMARK_CAPTURE(BM_NineBallBreak, coulomb_impulse, BallCollisionModel::coulomb_impulse)->Unit(benchmark::kMicrosecond);
+BENCHMARK_CAPTURE(BM_NineBallBreak, mathavan_2014, BallCollisionModel::mathavan_2014)->Unit(benchmark::kMicrosecond);
 
 // The same break without re-validating the table and balls: what a batch or
 // a planner pays per shot once its scenario has been validated.

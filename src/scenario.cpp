@@ -388,7 +388,8 @@ Json scenario_json(const Scenario& s) {
   }
   if (cushion.model == CushionModel::stronge_compliant) j["cushion"]["frequency_ratio"] = cushion.frequency_ratio;
   const BallCollisionParameters& b = s.settings.ball_collision;
-  j["ball_collision"] = {{"restitution", b.restitution},
+  j["ball_collision"] = {{"model", to_string(s.settings.ball_collision_model)},
+                         {"restitution", b.restitution},
                          {"friction", b.friction},
                          {"friction_excess", b.friction_excess},
                          {"friction_decay", b.friction_decay}};
@@ -460,7 +461,14 @@ Scenario scenario_from_json(std::string_view json_text) {
   if (r.has("cushion")) s.settings.cushion = read_cushion(Reader(r.at("cushion"), "scenario.cushion"));
   if (r.has("ball_collision")) {
     const Reader c(r.at("ball_collision"), "scenario.ball_collision");
-    c.allow_only({"restitution", "friction", "friction_excess", "friction_decay"});
+    c.allow_only({"model", "restitution", "friction", "friction_excess", "friction_decay"});
+    const std::string name = c.text("model", to_string(BallCollisionModel::coulomb_impulse));
+    const std::optional<BallCollisionModel> model = ball_collision_model_from_string(name);
+    if (!model)
+      throw InvalidArgument(c.field("model"), c.field("model") + " = " + quote_input(name) +
+                                                  " is not known; allowed: " + ball_collision_model_names(""));
+    s.settings.ball_collision_model = *model;
+    s.settings.ball_collision = default_ball_collision(*model);  // the model's own constants unless given
     BallCollisionParameters& b = s.settings.ball_collision;
     b.restitution = c.number("restitution", b.restitution, 0.0, 1.0, "ball-ball restitution");
     b.friction = c.number("friction", b.friction, 0.0, 1.0, "ball-ball friction at high slip speed");
@@ -602,6 +610,7 @@ std::string result_to_json(const Scenario& s, const SimulationResult& r, double 
   out["table"] = Json::parse(table_to_json(s.table));
   out["parameters"] = parameters_json(p);
   out["parameters"]["cushion_model"] = to_string(s.settings.cushion.model);
+  out["parameters"]["ball_collision_model"] = to_string(s.settings.ball_collision_model);
   out["parameters"]["cushion_restitution"] = s.settings.cushion.restitution;
   out["parameters"]["cushion_friction"] = s.settings.cushion.friction;
   if (s.cue) {

@@ -138,7 +138,11 @@ Box box_inside_playing_area(const Table& table) {
 class Simulation {
  public:
   Simulation(const Table& table, const std::vector<SimulationBall>& balls, const SimulationSettings& settings)
-      : table_(table), settings_(settings), p_(settings.parameters), n_(static_cast<int>(balls.size())) {
+      : table_(table),
+        settings_(settings),
+        p_(settings.parameters),
+        n_(static_cast<int>(balls.size())),
+        ball_contact_(ball_collision_contact(p_, settings.ball_collision_model, settings.ball_collision)) {
     for (const CushionSegment& c : table.cushions) {
       cushion_models_.push_back(model_for(c.contact_height));
       cushion_lines_.push_back(contact_line(c.start, c.end, cushion_contact_distance(c.contact_height, p_.ball.radius)));
@@ -450,7 +454,7 @@ class Simulation {
     const double closing = -dot(b.velocity - a.velocity, unit(b.position - a.position));
     record(EventType::ball_ball, i, result_.balls[idx(j)].id);
     if (closing >= kPushSpeed) {
-      std::tie(a, b) = collide_balls(a, b, p_.ball, settings_.ball_collision);
+      std::tie(a, b) = collide(a, b, p_.ball, ball_contact_);
     } else if (!(closing <= kPressSpeed && press_apart(a, b, p_.ball.radius))) {
       push_group(i, j);
       return;
@@ -606,6 +610,7 @@ class Simulation {
   const Parameters& p_;
   int n_;
   double now_ = 0.0;
+  BallCollisionContact ball_contact_;
   std::vector<CushionContact> cushion_models_, jaw_models_;
   std::vector<std::pair<double, CushionContact>> models_by_height_;  // model_for()'s cache
   std::vector<ContactLine> cushion_lines_;
@@ -660,7 +665,7 @@ void validate_simulation_input(const Table& table, const std::vector<SimulationB
                                const SimulationSettings& settings) {
   validate(settings.parameters);
   validate(table);
-  validate(settings.ball_collision);
+  (void)ball_collision_contact(settings.parameters, settings.ball_collision_model, settings.ball_collision);
   if (settings.max_events < 1)
     throw InvalidArgument("max_events", static_cast<double>(settings.max_events), "[1, 2^31)");
   // The impact model of every cushion and jaw (the simulator builds them when it starts).

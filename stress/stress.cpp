@@ -162,10 +162,13 @@ const Table& preset(int kind) {  // 0 pool, 1 snooker, 2 carom
 // The models every generated shot uses (--cushion-model; each model's own
 // constants). Set once by parse(), before any worker starts.
 CushionSettings g_cushion;
+BallCollisionModel g_ball_collision_model = BallCollisionModel::coulomb_impulse;
 
 Shot new_shot(int table_kind) {
   Shot s;
   s.settings.cushion = g_cushion;
+  s.settings.ball_collision_model = g_ball_collision_model;
+  s.settings.ball_collision = default_ball_collision(g_ball_collision_model);
   s.table = preset(table_kind);
   // As the scenario reader does: the cloth preset that goes with the table, the table's ball.
   s.settings.parameters = table_kind == 1 ? snooker_parameters() : pool_parameters();
@@ -1145,7 +1148,8 @@ std::string scenario_json(const Shot& s) {
   out += " \"cushion\": {\"model\": \"" + std::string(to_string(s.settings.cushion.model)) +
          "\", \"restitution\": " + num(s.settings.cushion.restitution) +
          ", \"friction\": " + num(s.settings.cushion.friction) + "},\n";
-  out += " \"ball_collision\": {\"restitution\": " + num(c.restitution) + ", \"friction\": " + num(c.friction) +
+  out += " \"ball_collision\": {\"model\": \"" + std::string(to_string(s.settings.ball_collision_model)) +
+         "\", \"restitution\": " + num(c.restitution) + ", \"friction\": " + num(c.friction) +
          ", \"friction_excess\": " + num(c.friction_excess) + ", \"friction_decay\": " + num(c.friction_decay) + "},\n";
   out += " \"max_events\": " + std::to_string(s.settings.max_events) + ",\n";
   out += " \"balls\": [\n";
@@ -1215,7 +1219,7 @@ std::string class_list() {
 void usage() {
   std::printf(
       "usage: cueball-stress [--class NAME] [--shots N] [--seed S] [--threads T] [--report-worst K] [--dump-worst DIR]\n"
-      "                      [--cushion-model NAME]\n"
+      "                      [--cushion-model NAME] [--ball-collision-model NAME]\n"
       "       cueball-stress --scenario FILE [--scenario FILE ...]\n"
       "Random seeded shots of each class, simulated and checked for overlaps, cushion and jaw\n"
       "penetration, balls off the table, NaN, energy gain, runaway event counts, errors, crashes\n"
@@ -1228,9 +1232,11 @@ void usage() {
       "  --dump-worst DIR    write each class's worst shot of each kind as DIR/CLASS-KIND.json (cueball simulate FILE)\n"
       "  --cushion-model M   the cushion model of every generated shot, with its own constants: %s\n"
       "                      (default mathavan_2010)\n"
+      "  --ball-collision-model M  the ball-ball model of every generated shot, with its own constants: %s\n"
+      "                      (default coulomb_impulse)\n"
       "  --scenario FILE     check one scenario file (cueball's scenario JSON) instead; its event limit is raised to %d\n"
       "Exit status: 0 no violation, 1 violations, 2 bad flags.\n",
-      class_list().c_str(), cushion_model_names("").c_str(), kMaxEvents);
+      class_list().c_str(), cushion_model_names("").c_str(), ball_collision_model_names("").c_str(), kMaxEvents);
 }
 
 Options parse(int argc, char** argv) {
@@ -1242,10 +1248,12 @@ Options parse(int argc, char** argv) {
       std::exit(0);
     }
     static const char* const known[] = {"--class",      "--shots",      "--seed",          "--threads",
-                                        "--report-worst", "--dump-worst", "--cushion-model", "--scenario"};
+                                        "--report-worst", "--dump-worst", "--cushion-model", "--ball-collision-model",
+                                        "--scenario"};
     if (std::find_if(std::begin(known), std::end(known), [&](const char* k) { return flag == k; }) == std::end(known))
       bad_flag("flag", flag,
-               "--class, --shots, --seed, --threads, --report-worst, --dump-worst, --cushion-model, --scenario, --help");
+               "--class, --shots, --seed, --threads, --report-worst, --dump-worst, --cushion-model, "
+               "--ball-collision-model, --scenario, --help");
     if (i + 1 >= argc) bad_flag(flag, "", "a value after the flag");
     const std::string value = argv[++i];
     if (flag == "--class") {
@@ -1277,6 +1285,10 @@ Options parse(int argc, char** argv) {
       const std::optional<CushionModel> model = cushion_model_from_string(value);
       if (!model) bad_flag(flag, value, cushion_model_names(""));
       g_cushion = default_cushion_settings(*model);
+    } else if (flag == "--ball-collision-model") {
+      const std::optional<BallCollisionModel> model = ball_collision_model_from_string(value);
+      if (!model) bad_flag(flag, value, ball_collision_model_names(""));
+      g_ball_collision_model = *model;
     } else {
       o.scenarios.push_back(value);
     }

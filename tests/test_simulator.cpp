@@ -144,6 +144,25 @@ TEST(Simulator, BreaksStayPhysicalUnderEveryCushionModel) {
   }
 }
 
+// And under every ball-ball model.
+TEST(Simulator, BreaksStayPhysicalUnderEveryBallCollisionModel) {
+  for (const BallCollisionModel model : kBallCollisionModels) {
+    std::mt19937_64 rng(12);
+    std::uniform_real_distribution<double> speed(2.0, 11.0), offset(-0.3, 0.3);
+    int collisions = 0;
+    for (int shot = 0; shot < 20; ++shot) {
+      Scenario s = scenario_from_json(break_json(speed(rng), 0.0, offset(rng), offset(rng), shot));
+      s.settings.ball_collision_model = model;
+      s.settings.ball_collision = default_ball_collision(model);
+      SCOPED_TRACE(std::string(to_string(model)) + " shot " + std::to_string(shot));
+      const SimulationResult r = run_scenario(s);
+      for (const Event& e : r.events) collisions += e.type == EventType::ball_ball;
+      expect_physical_at_every_event(s.table, r, s.settings.parameters);
+    }
+    EXPECT_GT(collisions, 200) << to_string(model);
+  }
+}
+
 // The same invariants on the other tables and racks: snooker and 8-ball
 // breaks, and random three-ball shots (any aim, raised cue) on pool and carom.
 TEST(Simulator, OtherTablesAndRacksStayPhysicalAtEveryEvent) {

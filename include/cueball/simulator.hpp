@@ -4,7 +4,7 @@
 // cloth_motion.hpp; events are found by polynomial root finding
 // (events.hpp) and resolved by the physics kernels:
 //   motion transitions     cloth_motion.hpp (sliding -> rolling -> spinning -> rest, spin stop)
-//   ball - ball            ball_collision.hpp (impulse with restitution and ball-ball friction)
+//   ball - ball            ball_collision_model.hpp (by name; an impulse with restitution and ball-ball friction by default)
 //   ball - cushion, jaw    cushion_model.hpp (by name; Mathavan 2010 solved exactly by default), in the frame of
 //                          the cushion's nose line or of the jaw's normal at the contact
 //   ball - pocket          capture by the pocket's circle (table.hpp)
@@ -35,6 +35,7 @@
 #include <vector>
 
 #include "cueball/ball_collision.hpp"
+#include "cueball/ball_collision_model.hpp"
 #include "cueball/cushion_model.hpp"
 #include "cueball/cloth_motion.hpp"
 #include "cueball/cushion_impact.hpp"
@@ -59,6 +60,8 @@ struct SimulationSettings {
   /// 0.14. The exact solver agrees with the Euler scheme they fitted with to
   /// 1e-3 m/s, so their constants hold for it too (test_cushion_impact).
   CushionSettings cushion;
+  /// The ball-ball model (ball_collision_model.hpp) and its constants.
+  BallCollisionModel ball_collision_model = BallCollisionModel::coulomb_impulse;
   BallCollisionParameters ball_collision = ball_collision_alciatore();
   int max_events = 100000;                  ///< SimulationError beyond this
 };

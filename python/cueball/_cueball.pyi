@@ -752,22 +752,36 @@ class SimulationBall:
     ) -> None: ...
 
 class SimulationSettings:
-    """Ball and cloth, the cushion's e_e and mu_w, the ball-ball contact, the event limit."""
+    """Ball and cloth, the cushion model and its constants, the ball-ball model and its constants, the event limit."""
 
     parameters: Parameters
+    cushion_model: str
+    """'mathavan_2010' (default), 'han_2005' or 'stronge_compliant'"""
     cushion_restitution: float
-    """e_e"""
+    """e_e (mathavan_2010) or e"""
     cushion_friction: float
-    """mu_w"""
+    """mu_w (mathavan_2010) or mu"""
+    cushion_solver: str
+    """mathavan_2010's solver: 'exact' or 'paper'"""
+    cushion_paper_steps: int
+    cushion_frequency_ratio: float
+    """stronge_compliant's Omega"""
+    ball_collision_model: str
+    """'coulomb_impulse' (default) or 'mathavan_2014'"""
     ball_collision: BallCollisionParameters
     max_events: int
     def __init__(
         self,
         parameters: Parameters = ...,
-        cushion_restitution: _Float = 0.98,
-        cushion_friction: _Float = 0.14,
-        ball_collision: BallCollisionParameters = ...,
+        cushion_restitution: _Float | None = None,
+        cushion_friction: _Float | None = None,
+        ball_collision: BallCollisionParameters | None = None,
         max_events: _Int = 100000,
+        cushion_model: str = "mathavan_2010",
+        cushion_solver: str = "exact",
+        cushion_paper_steps: _Int = 5000,
+        cushion_frequency_ratio: _Float | None = None,
+        ball_collision_model: str = "coulomb_impulse",
     ) -> None: ...
 
 class ShotStrike:

@@ -127,7 +127,8 @@ std::string scenario_json(const py::object& table, const py::iterable& balls, co
     }
     if (k.model == cueball::CushionModel::stronge_compliant) d["cushion"]["frequency_ratio"] = k.frequency_ratio;
     const cueball::BallCollisionParameters& c = settings->ball_collision;
-    d["ball_collision"] = py::dict("restitution"_a = c.restitution, "friction"_a = c.friction,
+    d["ball_collision"] = py::dict("model"_a = cueball::to_string(settings->ball_collision_model),
+                                   "restitution"_a = c.restitution, "friction"_a = c.friction,
                                    "friction_excess"_a = c.friction_excess, "friction_decay"_a = c.friction_decay);
     d["max_events"] = settings->max_events;
   }
@@ -167,6 +168,14 @@ cueball::CushionSolver cushion_solver_named(const std::string& name, const char*
   return *solver;
 }
 
+cueball::BallCollisionModel ball_collision_model_named(const std::string& name, const char* field) {
+  const std::optional<cueball::BallCollisionModel> model = cueball::ball_collision_model_from_string(name);
+  if (!model)
+    throw cueball::InvalidArgument(field, std::string(field) + " = " + cueball::quote_input(name) +
+                                              " is not known; allowed: " + cueball::ball_collision_model_names("'"));
+  return *model;
+}
+
 }  // namespace
 
 void bind_scenario(py::module_& m) {
@@ -196,12 +205,14 @@ void bind_scenario(py::module_& m) {
       "'mathavan_2010', the default, 'han_2005' or 'stronge_compliant') with its restitution and\n"
       "friction (each model's own defaults when not given); for mathavan_2010, cushion_solver 'exact'\n"
       "or 'paper' (the Euler scheme, cushion_paper_steps steps); for stronge_compliant,\n"
-      "cushion_frequency_ratio (Omega, (1, 1000]); the ball-ball contact; and max_events\n"
-      "(SimulationError beyond it, [1, 1e6]).");
+      "cushion_frequency_ratio (Omega, (1, 1000]); the ball-ball model by name\n"
+      "(ball_collision_model: 'coulomb_impulse', the default, or 'mathavan_2014') with its constants\n"
+      "ball_collision (the model's own when not given); and max_events (SimulationError beyond it,\n"
+      "[1, 1e6]).");
   settings_cls
       .def(py::init([](const cueball::Parameters& p, const py::object& e, const py::object& mu,
-                       const cueball::BallCollisionParameters& c, int max_events, const std::string& model,
-                       const std::string& solver, int paper_steps, const py::object& omega) {
+                       const py::object& c, int max_events, const std::string& model, const std::string& solver,
+                       int paper_steps, const py::object& omega, const std::string& ball_model) {
              SimulationSettings s;
              s.parameters = p;
              s.cushion = cueball::default_cushion_settings(cushion_model_named(model, "cushion_model"));
@@ -210,18 +221,21 @@ void bind_scenario(py::module_& m) {
              s.cushion.solver = cushion_solver_named(solver, "cushion_solver");
              s.cushion.paper_steps = paper_steps;
              if (!omega.is_none()) s.cushion.frequency_ratio = omega.cast<double>();
-             s.ball_collision = c;
+             s.ball_collision_model = ball_collision_model_named(ball_model, "ball_collision_model");
+             s.ball_collision = c.is_none() ? cueball::default_ball_collision(s.ball_collision_model)
+                                            : c.cast<cueball::BallCollisionParameters>();
              s.max_events = max_events;
              return s;
            }),
            py::arg_v("parameters", defaults.parameters, "pool_parameters()"),
            py::arg_v("cushion_restitution", py::none(), "the model's own (0.98 for mathavan_2010)"),
            py::arg_v("cushion_friction", py::none(), "the model's own (0.14 for mathavan_2010)"),
-           py::arg_v("ball_collision", defaults.ball_collision, "ball_collision_alciatore()"),
+           py::arg_v("ball_collision", py::none(), "the model's own (ball_collision_alciatore() for coulomb_impulse)"),
            "max_events"_a = defaults.max_events, "cushion_model"_a = cueball::to_string(defaults.cushion.model),
            "cushion_solver"_a = cueball::to_string(defaults.cushion.solver),
            "cushion_paper_steps"_a = defaults.cushion.paper_steps,
-           py::arg_v("cushion_frequency_ratio", py::none(), "the model's own (1.8 for stronge_compliant)"))
+           py::arg_v("cushion_frequency_ratio", py::none(), "the model's own (1.8 for stronge_compliant)"),
+           "ball_collision_model"_a = cueball::to_string(defaults.ball_collision_model))
       .def_readwrite("parameters", &SimulationSettings::parameters)
       .def_property(
           "cushion_model", [](const SimulationSettings& s) { return std::string(cueball::to_string(s.cushion.model)); },
@@ -244,16 +258,24 @@ void bind_scenario(py::module_& m) {
           "cushion_frequency_ratio", [](const SimulationSettings& s) { return s.cushion.frequency_ratio; },
           [](SimulationSettings& s, double v) { s.cushion.frequency_ratio = v; },
           "stronge_compliant's Omega, tangential over normal natural frequency, (1, 1000]")
+      .def_property(
+          "ball_collision_model",
+          [](const SimulationSettings& s) { return std::string(cueball::to_string(s.ball_collision_model)); },
+          [](SimulationSettings& s, const std::string& name) {
+            s.ball_collision_model = ball_collision_model_named(name, "ball_collision_model");
+          },
+          "the ball-ball model by name (its constants stay as they are: set them too)")
       .def_readwrite("ball_collision", &SimulationSettings::ball_collision)
       .def_readwrite("max_events", &SimulationSettings::max_events);
   add_value_semantics(
       settings_cls, "SimulationSettings",
       {"parameters", "cushion_model", "cushion_restitution", "cushion_friction", "cushion_solver", "cushion_paper_steps",
-       "cushion_frequency_ratio", "ball_collision", "max_events"},
+       "cushion_frequency_ratio", "ball_collision_model", "ball_collision", "max_events"},
       [](const SimulationSettings& s) {
         return py::make_tuple(s.parameters, std::string(cueball::to_string(s.cushion.model)), s.cushion.restitution,
                               s.cushion.friction, std::string(cueball::to_string(s.cushion.solver)), s.cushion.paper_steps,
-                              s.cushion.frequency_ratio, s.ball_collision, s.max_events);
+                              s.cushion.frequency_ratio, std::string(cueball::to_string(s.ball_collision_model)),
+                              s.ball_collision, s.max_events);
       },
       [](const py::tuple& t) {
         SimulationSettings s;
@@ -264,8 +286,9 @@ void bind_scenario(py::module_& m) {
         s.cushion.solver = cushion_solver_named(t[4].cast<std::string>(), "cushion_solver");
         s.cushion.paper_steps = t[5].cast<int>();
         s.cushion.frequency_ratio = t[6].cast<double>();
-        s.ball_collision = t[7].cast<cueball::BallCollisionParameters>();
-        s.max_events = t[8].cast<int>();
+        s.ball_collision_model = ball_collision_model_named(t[7].cast<std::string>(), "ball_collision_model");
+        s.ball_collision = t[8].cast<cueball::BallCollisionParameters>();
+        s.max_events = t[9].cast<int>();
         return s;
       });
 

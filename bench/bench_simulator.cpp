@@ -79,6 +79,8 @@ BENCHMARK_CAPTURE(BM_OneBallCushions, mathavan_2010, default_cushion_settings(Cu
 BENCHMARK_CAPTURE(BM_OneBallCushions, mathavan_2010_paper_N1000, mathavan_paper(1000))->Unit(benchmark::kMicrosecond);
 BENCHMARK_CAPTURE(BM_OneBallCushions, han_2005, default_cushion_settings(CushionModel::han_2005))
     ->Unit(benchmark::kMicrosecond);
+BENCHMARK_CAPTURE(BM_OneBallCushions, stronge_compliant, default_cushion_settings(CushionModel::stronge_compliant))
+    ->Unit(benchmark::kMicrosecond);
 
 void BM_BatchBreaks(benchmark::State& st) {
   static const Scenario s = default_scenario();

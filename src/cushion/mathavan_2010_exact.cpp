@@ -1027,6 +1027,7 @@ struct ExactLimits {
   static constexpr double small_slip = 1e-6;    // a free slip closing in on zero is finished below this
   static constexpr double tiny_slip = 1e-10;    // a slip this small is zero
   static constexpr int max_attempts = 20000;    // Runge-Kutta steps, accepted or not
+  static constexpr int hover_attempts = 200;    // steps in one segment before a hovering slip is set to zero
   static constexpr int max_events = 64;
 };
 
@@ -1083,8 +1084,42 @@ Outcome solve_exact(const Coefficients& k, const State& y0, const Units& units,
   sys.set_references(y);
   SlipState k1 = sys.rhs(y);
   Step st;
+  int segment_attempts = 0;
+  // After an event: modes for the contacts whose slip reached zero, and a new segment.
+  auto start_segment = [&](bool cushion_zero, bool bed_zero) {
+    if (cushion_zero || bed_zero) {
+      // A slip reached zero: the other contact is at zero too if it sticks or its slip is tiny.
+      cushion_zero = cushion_zero || sys.modes.cushion == kStick || length(slip_i(y)) <= tiny_slip;
+      bed_zero = bed_zero || sys.modes.bed == kStick || length(slip_c(y)) <= tiny_slip;
+      choose_modes(cushion_zero, bed_zero);
+    }
+    if (history) record(p);
+    sys.set_references(y);
+    k1 = sys.rhs(y);
+    // A new segment: the step that closed in on the event says nothing about it.
+    h = std::max(h, h_start);
+    err_previous_root = 0.7;
+    h_previous = 0.0;
+    segment_attempts = 0;
+  };
   for (int attempts = 1;; ++attempts) {
     if (attempts > ExactLimits::max_attempts || p > kMaxScaledImpulse) wedged();
+    if (++segment_attempts > ExactLimits::hover_attempts) {
+      // A free slip that could not be finished (a near miss of zero) and
+      // hovers below small_slip, its direction turning back and forth, in
+      // steps that barely advance P_I: it is at zero to within small_slip
+      // (the Euler scheme chatters about zero there). Set it to zero and
+      // choose the modes afresh, as at a slip reaching zero.
+      const bool cushion_hovers = sys.modes.cushion == kSlip && !sys.cushion_regime.slaved &&
+                                  !sys.cushion_regime.approach_armed && length(slip_i(y)) <= 2.0 * sys.small_slip;
+      const bool bed_hovers = sys.modes.bed == kSlip && !sys.bed_regime.slaved && !sys.bed_regime.approach_armed &&
+                              length(slip_c(y)) <= 2.0 * sys.small_slip;
+      if (cushion_hovers || bed_hovers) {
+        if (++out.events > ExactLimits::max_events) wedged();
+        start_segment(cushion_hovers, bed_hovers);
+        continue;
+      }
+    }
     const double err = sys.free_slip ? FreeSlipStep(sys)(y, k1, h, atol, st) : dopri5_step(sys, y, k1, h, atol, st);
     const double root4 = std::sqrt(std::sqrt(std::max(err, 1e-5)));
     if (!(err <= 1.0)) {
@@ -1350,19 +1385,7 @@ Outcome solve_exact(const Coefficients& k, const State& y0, const Units& units,
       }
       case Event::none: break;
     }
-    if (cushion_zero || bed_zero) {
-      // A slip reached zero: the other contact is at zero too if it sticks or its slip is tiny.
-      cushion_zero = cushion_zero || sys.modes.cushion == kStick || length(slip_i(y)) <= tiny_slip;
-      bed_zero = bed_zero || sys.modes.bed == kStick || length(slip_c(y)) <= tiny_slip;
-      choose_modes(cushion_zero, bed_zero);
-    }
-    if (history) record(p);
-    sys.set_references(y);
-    k1 = sys.rhs(y);
-    // A new segment: the step that closed in on the event says nothing about it.
-    h = std::max(h, h_start);
-    err_previous_root = 0.7;
-    h_previous = 0.0;
+    start_segment(cushion_zero, bed_zero);
   }
 }
 

@@ -3,6 +3,7 @@
 #include "cueball/ball_collision_model.hpp"
 
 #include "cueball/errors.hpp"
+#include "enum_names.hpp"
 
 namespace cueball {
 
@@ -15,16 +16,11 @@ const char* to_string(BallCollisionModel model) {
 }
 
 std::optional<BallCollisionModel> ball_collision_model_from_string(std::string_view name) {
-  for (BallCollisionModel m : kBallCollisionModels)
-    if (name == to_string(m)) return m;
-  return std::nullopt;
+  return value_named(kBallCollisionModels, name);
 }
 
 std::string ball_collision_model_names(std::string_view quote) {
-  std::string names;
-  for (BallCollisionModel m : kBallCollisionModels)
-    names += (names.empty() ? "" : ", ") + std::string(quote) + to_string(m) + std::string(quote);
-  return names;
+  return names_of(kBallCollisionModels, quote);
 }
 
 BallCollisionParameters default_ball_collision(BallCollisionModel model) {

@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "cueball/errors.hpp"
+#include "enum_names.hpp"
 
 namespace cueball {
 
@@ -18,16 +19,11 @@ const char* to_string(CushionModel model) {
 }
 
 std::optional<CushionModel> cushion_model_from_string(std::string_view name) {
-  for (CushionModel m : kCushionModels)
-    if (name == to_string(m)) return m;
-  return std::nullopt;
+  return value_named(kCushionModels, name);
 }
 
 std::string cushion_model_names(std::string_view quote) {
-  std::string names;
-  for (CushionModel m : kCushionModels)
-    names += (names.empty() ? "" : ", ") + std::string(quote) + to_string(m) + std::string(quote);
-  return names;
+  return names_of(kCushionModels, quote);
 }
 
 const char* to_string(CushionSolver solver) { return solver == CushionSolver::paper ? "paper" : "exact"; }

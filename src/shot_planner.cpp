@@ -18,6 +18,7 @@
 #include <utility>
 
 #include "cueball/errors.hpp"
+#include "enum_names.hpp"
 
 namespace cueball {
 
@@ -560,16 +561,11 @@ const char* to_string(ShotKind kind) {
 }
 
 std::optional<ShotKind> shot_kind_from_string(std::string_view name) {
-  for (ShotKind kind : kShotKinds)
-    if (name == to_string(kind)) return kind;
-  return std::nullopt;
+  return value_named(kShotKinds, name);
 }
 
 std::string shot_kind_names(std::string_view quote) {
-  std::string names;
-  for (ShotKind kind : kShotKinds)
-    names += (names.empty() ? "" : ", ") + std::string(quote) + to_string(kind) + std::string(quote);
-  return names;
+  return names_of(kShotKinds, quote);
 }
 
 CueStrikeNoise tournament_noise() {

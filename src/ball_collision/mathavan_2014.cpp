@@ -64,6 +64,7 @@
 #include <array>
 #include <cmath>
 
+#include "../dormand_prince.hpp"
 #include "cueball/errors.hpp"
 
 namespace cueball {
@@ -123,16 +124,8 @@ struct Model {
 
 // ------------------------------------------------------------ Dormand-Prince 5(4)
 
-constexpr double a21 = 1.0 / 5.0;
-constexpr double a31 = 3.0 / 40.0, a32 = 9.0 / 40.0;
-constexpr double a41 = 44.0 / 45.0, a42 = -56.0 / 15.0, a43 = 32.0 / 9.0;
-constexpr double a51 = 19372.0 / 6561.0, a52 = -25360.0 / 2187.0, a53 = 64448.0 / 6561.0, a54 = -212.0 / 729.0;
-constexpr double a61 = 9017.0 / 3168.0, a62 = -355.0 / 33.0, a63 = 46732.0 / 5247.0, a64 = 49.0 / 176.0,
-                 a65 = -5103.0 / 18656.0;
-constexpr double b1 = 35.0 / 384.0, b3 = 500.0 / 1113.0, b4 = 125.0 / 192.0, b5 = -2187.0 / 6784.0, b6 = 11.0 / 84.0;
-// Fifth minus fourth order weights.
-constexpr double e1 = 71.0 / 57600.0, e3 = -71.0 / 16695.0, e4 = 71.0 / 1920.0, e5 = -17253.0 / 339200.0,
-                 e6 = 22.0 / 525.0, e7 = -1.0 / 40.0;
+using namespace dormand_prince;
+constexpr double b1 = a71, b3 = a73, b4 = a74, b5 = a75, b6 = a76;
 
 struct Step {
   State y;

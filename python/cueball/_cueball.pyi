@@ -342,6 +342,37 @@ def cushion_impact(
 RIGID_CUSHION_SPEED_LIMIT: float
 """m/s"""
 
+class CushionRebound:
+    """The ball after a cushion impact by any model, in the cushion frame."""
+
+    @property
+    def velocity(self) -> tuple[float, float, float]:
+        """(vX, vY, vZ), m/s"""
+    @property
+    def angular_velocity(self) -> tuple[float, float, float]:
+        """(wX, wY, wZ), rad/s"""
+    @property
+    def rebound_speed(self) -> float:
+        """m/s"""
+    @property
+    def rebound_angle(self) -> float:
+        """rad from the cushion line"""
+
+def cushion_rebound(
+    speed: _Float,
+    angle: _Float,
+    topspin: _Float | None = None,
+    sidespin: _Float = 0.0,
+    *,
+    model: str = "mathavan_2010",
+    params: Parameters = ...,
+    restitution: _Float | None = None,
+    friction: _Float | None = None,
+    contact_height: _Float | None = None,
+    frequency_ratio: _Float | None = None,
+) -> CushionRebound:
+    """The impact by the model named ('mathavan_2010', 'han_2005', 'stronge_compliant'), its own constants unless given."""
+
 # ------------------------------------------------------------------ cushion fit
 
 class PaperIncidence:
@@ -501,6 +532,16 @@ def collide_balls(
     a: BallState, b: BallState, params: Parameters = ..., contact: BallCollisionParameters = ...
 ) -> tuple[BallState, BallState]:
     """resolve_ball_collision's two states only."""
+
+def mathavan_2014_collision(
+    a: BallState,
+    b: BallState,
+    params: Parameters = ...,
+    restitution: _Float = 0.89,
+    ball_friction: _Float = 0.05,
+    cloth_friction: _Float | None = None,
+) -> BallCollisionResult:
+    """Mathavan et al. 2014: cloth friction during the impact (default params' mu_s), solved exactly."""
 
 # ------------------------------------------------------------------ tables
 

@@ -1,10 +1,12 @@
 // include/cueball/ball_collision.hpp: the collision of two balls.
 #include "bindings.hpp"
 
+#include <optional>
 #include <string>
 #include <utility>
 
 #include "cueball/ball_collision.hpp"
+#include "cueball/ball_collision/mathavan_2014.hpp"
 #include "cueball/errors.hpp"
 
 namespace cueball_python {
@@ -102,6 +104,21 @@ void bind_ball_collision(py::module_& m) {
              return py::make_tuple(r.a, r.b, r.normal_impulse, r.tangential_impulse, r.vertical_impulse, r.friction,
                                    r.slip_speed, r.gripped);
            });
+  m.def(
+      "mathavan_2014_collision",
+      [](const BallState& a, const BallState& b, const Parameters& p, double restitution, double ball_friction,
+         std::optional<double> cloth_friction) {
+        check_collision(a, b, p, cueball::ball_collision_frictionless(0.0));
+        const cueball::Mathavan2014Contact c{restitution, ball_friction,
+                                             cloth_friction ? *cloth_friction : p.cloth.sliding_friction};
+        cueball::validate(c);
+        return cueball::mathavan_2014_collision(a, b, p.ball, c);
+      },
+      "a"_a, "b"_a, params_arg(), "restitution"_a = cueball::mathavan_2014_contact().restitution,
+      "ball_friction"_a = cueball::mathavan_2014_contact().ball_friction, "cloth_friction"_a = py::none(),
+      "The collision by Mathavan et al. (2014): the cloth's friction acts at both balls' table contacts\n"
+      "during the impact (cloth_friction, default the params' mu_s), energetic restitution e_b and a\n"
+      "constant ball-ball friction mu_b (the paper's 0.89 and 0.05 by default), solved exactly.");
 
   m.def(
       "resolve_ball_collision",

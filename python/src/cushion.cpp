@@ -6,6 +6,7 @@
 #include <optional>
 #include <string>
 #include "cueball/cushion_impact.hpp"
+#include "cueball/cushion_model.hpp"
 #include "cueball/errors.hpp"
 
 namespace cueball_python {
@@ -110,6 +111,59 @@ void bind_cushion(py::module_& m) {
       "restitution e_e and friction mu_w default to the authors' fit (0.98, 0.14); contact_height\n"
       "h, m, in (R, 2R), default 7R/5. history=True records the impact along P_I.");
   m.attr("RIGID_CUSHION_SPEED_LIMIT") = cueball::kRigidCushionSpeedLimit;
+
+  py::class_<cueball::CushionRebound> rebound(
+      m, "CushionRebound", "The ball after a cushion impact by any model, in the cushion frame: X along it, Y into it, Z up.");
+  rebound
+      .def_property_readonly(
+          "velocity", [](const cueball::CushionRebound& r) { return to_tuple(r.velocity); },
+          "outgoing (vX, vY, vZ), m/s; vY < 0 away from the cushion")
+      .def_property_readonly(
+          "angular_velocity", [](const cueball::CushionRebound& r) { return to_tuple(r.angular_velocity); },
+          "outgoing spin (wX, wY, wZ), rad/s")
+      .def_property_readonly(
+          "rebound_speed", [](const cueball::CushionRebound& r) { return std::hypot(r.velocity.x, r.velocity.y); }, "m/s")
+      .def_property_readonly(
+          "rebound_angle", [](const cueball::CushionRebound& r) { return std::atan2(-r.velocity.y, r.velocity.x); },
+          "beta, rad from the cushion line");
+  add_repr(rebound, "CushionRebound", {"velocity", "angular_velocity"}, [](const cueball::CushionRebound& r) {
+    return py::make_tuple(to_tuple(r.velocity), to_tuple(r.angular_velocity));
+  });
+  m.def(
+      "cushion_rebound",
+      [](double speed, double angle, std::optional<double> topspin, double sidespin, const std::string& model,
+         const Parameters& p, std::optional<double> restitution, std::optional<double> friction,
+         std::optional<double> contact_height, std::optional<double> frequency_ratio) {
+        cueball::validate(p);
+        cueball::require_in_range("V0", speed, 1e-6, cueball::kMaxSpeed, "incoming speed, m/s");
+        if (!(std::isfinite(angle) && angle > 0.0 && angle <= std::numbers::pi / 2))
+          throw cueball::InvalidArgument("alpha", angle, "(0, pi/2] rad", "angle between the velocity and the cushion");
+        if (topspin)
+          cueball::require_in_range("w_T", *topspin, -cueball::kMaxAngularSpeed, cueball::kMaxAngularSpeed,
+                                    "topspin w_T, rad/s");
+        cueball::require_in_range("w_S", sidespin, -cueball::kMaxAngularSpeed, cueball::kMaxAngularSpeed,
+                                  "sidespin w_S, rad/s");
+        const std::optional<cueball::CushionModel> chosen = cueball::cushion_model_from_string(model);
+        if (!chosen)
+          throw cueball::InvalidArgument("model", "model = " + cueball::quote_input(model) +
+                                                      " is not known; allowed: " + cueball::cushion_model_names("'"));
+        cueball::CushionSettings settings = cueball::default_cushion_settings(*chosen);
+        if (restitution) settings.restitution = *restitution;
+        if (friction) settings.friction = *friction;
+        if (frequency_ratio) settings.frequency_ratio = *frequency_ratio;
+        const double h = contact_height ? *contact_height : cueball::default_cushion_height(p.ball);
+        cueball::require_in_range("contact_height", h, p.ball.radius * (1 + 1e-9), 2 * p.ball.radius * (1 - 1e-9),
+                                  "cushion contact height h, m, between R and 2R");
+        const cueball::PaperIncidence incidence{speed, angle, topspin ? *topspin : speed / p.ball.radius, sidespin};
+        return cueball::cushion_rebound(cueball::incoming_ball(incidence), cueball::cushion_contact(p, settings, h));
+      },
+      "speed"_a, "angle"_a, "topspin"_a = py::none(), "sidespin"_a = 0.0, py::kw_only(), "model"_a = "mathavan_2010",
+      params_arg(), "restitution"_a = py::none(), "friction"_a = py::none(), "contact_height"_a = py::none(),
+      "frequency_ratio"_a = py::none(),
+      "A ball hitting a cushion by the model named (main README \"Models\"): 'mathavan_2010' (exact),\n"
+      "'han_2005' or 'stronge_compliant', with the model's own constants unless given (restitution,\n"
+      "friction; frequency_ratio: stronge_compliant's Omega). Arguments as cushion_impact's: speed V0\n"
+      "m/s, angle alpha in RADIANS (pi/2 head-on), topspin w_T (None: rolling), sidespin w_S, rad/s.");
 }
 
 }  // namespace cueball_python

@@ -41,6 +41,32 @@ class ModelsTest(unittest.TestCase):
                     outcomes.add(tuple(round(float(c), 9) for c in r.balls["position"][0]))
         self.assertEqual(len(outcomes), 6)  # every pair of models ends the shot elsewhere
 
+    def test_single_impacts_by_model(self):
+        import math
+        snooker = cueball.snooker_parameters()
+        exact = cueball.cushion_impact(1.0, math.pi / 4, params=snooker)
+        same = cueball.cushion_rebound(1.0, math.pi / 4, params=snooker)
+        self.assertEqual(same.velocity, exact.velocity)
+        # Han 2005, rolling head-on: (1 - 1.85 cos^2) - 0.37 cos sin at h = 7R/5 (test_cushion_han_2005).
+        han = cueball.cushion_rebound(1.0, math.pi / 2, model="han_2005")
+        self.assertAlmostEqual(han.rebound_speed, 0.689644, delta=1e-6)
+        stronge = cueball.cushion_rebound(1.0, math.pi / 2, 0.0, model="stronge_compliant", frequency_ratio=2.0)
+        self.assertAlmostEqual(stronge.rebound_speed, 0.85, delta=1e-12)  # no slip at the equator: e V0
+        with self.assertRaisesRegex(ValueError, "model = \"x\" is not known"):
+            cueball.cushion_rebound(1.0, 0.5, model="x")
+        # Mathavan 2014 against the paper's Table 1 at the 18.05 deg cut (as quoted by pooltool):
+        # with no cloth friction it is resolve_ball_collision with a constant friction.
+        p = cueball.pool_parameters()
+        R = p.ball.radius
+        a = cueball.BallState((0.0, 0.0), (1.0, 0.0), (0.0, 1.0 / R, 0.0))
+        b = cueball.BallState((2 * R * math.cos(0.5), 2 * R * math.sin(0.5)), (0.0, 0.0), (0.0, 0.0, 0.0))
+        bare = cueball.mathavan_2014_collision(a, b, p, cloth_friction=0.0)
+        coulomb = cueball.resolve_ball_collision(a, b, p, cueball.BallCollisionParameters(0.89, 0.05))
+        for x, y in zip(bare.a.velocity + bare.b.velocity, coulomb.a.velocity + coulomb.b.velocity):
+            self.assertAlmostEqual(x, y, delta=1e-9)
+        cloth = cueball.mathavan_2014_collision(a, b, p)
+        self.assertGreater(abs(cloth.a.velocity[1] - bare.a.velocity[1]), 1e-4)
+
     def test_unknown_names_are_value_errors_naming_the_field(self):
         with self.assertRaisesRegex(ValueError, "cushion_model = \"han\" is not known; allowed: 'mathavan_2010'"):
             cueball.SimulationSettings(cushion_model="han")

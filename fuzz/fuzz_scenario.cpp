@@ -69,6 +69,8 @@ void check_result(const cueball::Scenario& s, const cueball::SimulationResult& r
 
 void run_bounded(cueball::Scenario s) {
   s.settings.max_events = std::min(s.settings.max_events, kMaxEvents);
+  // The paper's Euler scheme costs its N per impact: kept short here too.
+  s.settings.cushion.paper_steps = std::min(s.settings.cushion.paper_steps, 200);
   try {
     check_result(s, cueball::run_scenario(s));
   } catch (const cueball::SimulationError& e) {

@@ -56,8 +56,9 @@ CushionContact cushion_contact(const Parameters& table, const CushionSettings& s
     case CushionModel::mathavan_2010:
       require_in_range("cushion_restitution", settings.restitution, 1e-9, 1.0, "Mathavan e_e");
       require_in_range("cushion_friction", settings.friction, 0.0, 1.0, "Mathavan mu_w");
-      if (settings.paper_steps < 1 || settings.paper_steps > 1000000)
-        throw InvalidArgument("cushion_paper_steps", settings.paper_steps, "[1, 1000000]", "Euler steps per impact");
+      if (settings.paper_steps < 1 || settings.paper_steps > kMaxCushionPaperSteps)
+        throw InvalidArgument("cushion_paper_steps", settings.paper_steps, "[1, " + std::to_string(kMaxCushionPaperSteps) + "]",
+                              "Euler steps per impact");
       c.mathavan = cushion_impact_model(table, {settings.restitution, settings.friction, contact_height});
       c.mathavan_options.solver = settings.solver;
       c.mathavan_options.paper_steps = settings.paper_steps;

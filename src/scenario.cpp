@@ -148,7 +148,7 @@ CushionSettings read_cushion(const Reader& r) {
       throw InvalidArgument(r.field("solver"), r.field("solver") + " = " + quote_input(solver) +
                                                    " is not known; allowed: exact, paper");
     c.solver = *chosen;
-    c.paper_steps = r.integer("paper_steps", c.paper_steps, 1, 1000000, "Euler steps per impact");
+    c.paper_steps = r.integer("paper_steps", c.paper_steps, 1, kMaxCushionPaperSteps, "Euler steps per impact");
   }
   const auto only_for = [&](const char* key, CushionModel owner) {
     if (*model != owner && r.has(key))

@@ -143,6 +143,9 @@ TEST(CushionModel, ScenarioChoosesTheModelByName) {
   EXPECT_EQ(solver.rfind("scenario.cushion.solver: ", 0), 0u) << solver;
   const std::string omega = error(R"({"cushion": {"frequency_ratio": 2}, "balls": [{"id": 0, "position": [1, 0.6]}]})");
   EXPECT_NE(omega.find("applies to the model \"stronge_compliant\" only"), std::string::npos) << omega;
+  const std::string steps = error(R"({"cushion": {"solver": "paper", "paper_steps": 100001}, "balls": [{"id": 0, "position": [1, 0.6]}]})");
+  EXPECT_EQ(steps.rfind("scenario.cushion.paper_steps", 0), 0u) << steps;
+  EXPECT_NE(steps.find("100000"), std::string::npos) << steps;
   const std::string mu = error(R"({"cushion": {"model": "han_2005", "friction": 2}, "balls": [{"id": 0, "position": [1, 0.6]}]})");
   EXPECT_EQ(mu.rfind("scenario.cushion.friction: ", 0), 0u) << mu;
 }

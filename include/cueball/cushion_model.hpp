@@ -49,6 +49,10 @@ std::string cushion_model_names(std::string_view quote = "\"");
 const char* to_string(CushionSolver solver);
 std::optional<CushionSolver> cushion_solver_from_string(std::string_view name);
 
+/// Most Euler steps per impact in a simulation (some 4 ms an impact; a
+/// single impact, cushion_impact(), takes more).
+inline constexpr int kMaxCushionPaperSteps = 100000;
+
 /// The cushion of a simulation: the model and its constants. The contact
 /// height comes from each cushion and jaw of the table.
 struct CushionSettings {
@@ -64,7 +68,7 @@ struct CushionSettings {
   double frequency_ratio = 1.8;
   /// mathavan_2010 only: the exact solver (default) or the paper's Euler scheme.
   CushionSolver solver = CushionSolver::exact;
-  /// mathavan_2010 with solver paper: N, the Euler steps per impact, [1, 10^6].
+  /// mathavan_2010 with solver paper: N, the Euler steps per impact, [1, kMaxCushionPaperSteps].
   int paper_steps = 5000;
 };
 

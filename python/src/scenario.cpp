@@ -253,7 +253,7 @@ void bind_scenario(py::module_& m) {
           "mathavan_2010's solver: 'exact' or 'paper'")
       .def_property(
           "cushion_paper_steps", [](const SimulationSettings& s) { return s.cushion.paper_steps; },
-          [](SimulationSettings& s, int n) { s.cushion.paper_steps = n; }, "the paper solver's Euler steps, [1, 1e6]")
+          [](SimulationSettings& s, int n) { s.cushion.paper_steps = n; }, "the paper solver's Euler steps, [1, 1e5]")
       .def_property(
           "cushion_frequency_ratio", [](const SimulationSettings& s) { return s.cushion.frequency_ratio; },
           [](SimulationSettings& s, double v) { s.cushion.frequency_ratio = v; },

@@ -66,6 +66,7 @@
 
 #include "cueball/batch.hpp"
 #include "cueball/errors.hpp"
+#include "cueball/position_play.hpp"
 #include "cueball/rack.hpp"
 #include "cueball/scenario.hpp"
 #include "cueball/shot_planner.hpp"
@@ -267,7 +268,9 @@ struct Choice {
   std::string what;          // kind and pocket, for the per-layout record
 };
 
-Choice planner_choice(const Scenario& s, int target, std::uint64_t seed, int simulations) {
+// position_simulations > 0: plan_shot_for_position (position_play.hpp) with
+// that budget for each next-shot plan, the next target 9-ball's lowest ball.
+Choice planner_choice(const Scenario& s, int target, std::uint64_t seed, int simulations, int position_simulations = 0) {
   Choice c;
   const auto start = std::chrono::steady_clock::now();
   const double cpu_start = thread_cpu_seconds();
@@ -276,7 +279,15 @@ Choice planner_choice(const Scenario& s, int target, std::uint64_t seed, int sim
   q.seed = seed;
   q.simulations = simulations;
   try {
-    const ShotPlanResult r = plan_shot(s, q);
+    ShotPlanResult r;
+    if (position_simulations > 0) {
+      PositionRequest p;
+      p.shot = q;
+      p.next_simulations = position_simulations;
+      r = plan_shot_for_position(s, p).plan;
+    } else {
+      r = plan_shot(s, q);
+    }
     c.found = true;
     c.action = r.shot.strike;
     c.simulations = r.simulations;
@@ -588,7 +599,7 @@ Scenario broken_rack(const Setup& st, std::uint64_t seed, int& on_break) {
   return out;
 }
 
-RackRecord run_rack(const Setup& st, std::uint64_t seed, int planner_simulations) {
+RackRecord run_rack(const Setup& st, std::uint64_t seed, int planner_simulations, int position_simulations) {
   RackRecord rec;
   rec.seed = seed;
   Scenario s = broken_rack(st, seed, rec.on_break);
@@ -598,7 +609,8 @@ RackRecord run_rack(const Setup& st, std::uint64_t seed, int planner_simulations
       if (b.id != 0) target = std::min(target, b.id);
     Choice c;
     try {
-      c = planner_choice(s, target, stream_seed(seed, 100 + static_cast<std::uint64_t>(rec.shots)), planner_simulations);
+      c = planner_choice(s, target, stream_seed(seed, 100 + static_cast<std::uint64_t>(rec.shots)), planner_simulations,
+                         position_simulations);
     } catch (const std::exception& e) {  // the layout the engine left (never seen)
       rec.stop = Stop::rejected;
       rec.detail = e.what();
@@ -715,6 +727,7 @@ struct Options {
   bool single = true, runout = true;
   int threads = 1;
   int planner_simulations = 4000;
+  int position_simulations = 0;  // 0: run-outs without position play
   std::string json;
   std::string suite = "all";
 };
@@ -722,7 +735,8 @@ struct Options {
 void usage() {
   std::printf(
       "usage: cueball-planner-benchmark [--suite single|runout|all] [--layouts N] [--racks N] [--repeats N]\n"
-      "                                 [--seed S] [--planner-simulations N] [--threads T] [--json FILE]\n"
+      "                                 [--seed S] [--planner-simulations N] [--position N] [--threads T]\n"
+      "                                 [--json FILE]\n"
       "The shot planner against a ghost-ball baseline and an exhaustive grid search (docs/planner-benchmark.md).\n"
       "  --suite S                single, runout or all (default all)\n"
       "  --layouts N              single-pot layouts, [1, 1000000] (default 1000); layout k from seed S + k\n"
@@ -730,10 +744,12 @@ void usage() {
       "  --repeats N              noisy repeats measuring each chosen shot, [10, 1000000] (default 2000)\n"
       "  --seed S                 first seed, [0, 1e18] (default 1)\n"
       "  --planner-simulations N  plan_shot's budget, [%d, %d] (default 4000, the planner's default)\n"
+      "  --position N             run-outs played for position (plan_shot_for_position), N engine runs per\n"
+      "                           next-shot plan, [%d, %d] (default: no position play)\n"
       "  --threads T              layouts in parallel, [1, 256] (default 1); results do not depend on it, timings do\n"
       "  --json FILE              also write the results as JSON\n"
       "Exit status: 0 done, 1 an engine error, 2 bad flags.\n",
-      kMinPlanSimulations, kMaxPlanSimulations);
+      kMinPlanSimulations, kMaxPlanSimulations, kMinPlanSimulations, kMaxPlanSimulations);
 }
 
 Options parse(int argc, char** argv) {
@@ -744,9 +760,11 @@ Options parse(int argc, char** argv) {
       usage();
       std::exit(0);
     }
-    static const char* const known[] = {"--suite", "--layouts", "--racks", "--repeats", "--seed", "--planner-simulations", "--threads", "--json"};
+    static const char* const known[] = {"--suite",  "--layouts", "--racks", "--repeats", "--seed", "--planner-simulations",
+                                        "--position", "--threads", "--json"};
     if (std::find_if(std::begin(known), std::end(known), [&](const char* k) { return flag == k; }) == std::end(known))
-      bad_flag("flag", flag, "--suite, --layouts, --racks, --repeats, --seed, --planner-simulations, --threads, --json, --help");
+      bad_flag("flag", flag,
+               "--suite, --layouts, --racks, --repeats, --seed, --planner-simulations, --position, --threads, --json, --help");
     if (i + 1 >= argc) bad_flag(flag, "", "a value after the flag");
     const std::string value = argv[++i];
     if (flag == "--suite") {
@@ -762,6 +780,8 @@ Options parse(int argc, char** argv) {
       o.repeats = static_cast<int>(integer_flag(flag, value, 10, 1000000));
     } else if (flag == "--seed") {
       o.seed = static_cast<std::uint64_t>(integer_flag(flag, value, 0, 1000000000000000000LL));
+    } else if (flag == "--position") {
+      o.position_simulations = static_cast<int>(integer_flag(flag, value, kMinPlanSimulations, kMaxPlanSimulations));
     } else if (flag == "--planner-simulations") {
       o.planner_simulations = static_cast<int>(integer_flag(flag, value, kMinPlanSimulations, kMaxPlanSimulations));
     } else if (flag == "--threads") {
@@ -804,9 +824,9 @@ int run(const Options& o) {
   const Setup st = make_setup();
   std::string json = "{\n \"tool\": \"cueball-planner-benchmark\",\n";
   json += fmt(" \"options\": {\"suite\": \"%s\", \"layouts\": %d, \"racks\": %d, \"repeats\": %d, \"seed\": %llu, "
-              "\"planner_simulations\": %d, \"threads\": %d},\n",
+              "\"planner_simulations\": %d, \"position_simulations\": %d, \"threads\": %d},\n",
               o.suite.c_str(), o.layouts, o.racks, o.repeats, static_cast<unsigned long long>(o.seed), o.planner_simulations,
-              o.threads);
+              o.position_simulations, o.threads);
   const CueStrikeNoise& n = st.base.noise;
   json += fmt(" \"noise\": {\"speed\": %g, \"aim_deg\": %g, \"elevation_deg\": %g, \"side\": %g, \"height\": %g},\n", n.speed,
               n.aim / kDeg, n.elevation / kDeg, n.side_offset / st.radius, n.height_offset / st.radius);
@@ -893,7 +913,8 @@ int run(const Options& o) {
     const auto start = std::chrono::steady_clock::now();
     std::vector<RackRecord> recs(static_cast<std::size_t>(o.racks));
     parallel_for(o.racks, o.threads, [&](int k) {
-      recs[static_cast<std::size_t>(k)] = run_rack(st, o.seed + static_cast<std::uint64_t>(k), o.planner_simulations);
+      recs[static_cast<std::size_t>(k)] =
+          run_rack(st, o.seed + static_cast<std::uint64_t>(k), o.planner_simulations, o.position_simulations);
     });
     const double wall = seconds_since(start);
     int stops[kStops] = {};

@@ -57,6 +57,7 @@
 #include <fstream>
 #include <limits>
 #include <numbers>
+#include <optional>
 #include <random>
 #include <string>
 #include <thread>
@@ -270,7 +271,8 @@ struct Choice {
 
 // position_simulations > 0: plan_shot_for_position (position_play.hpp) with
 // that budget for each next-shot plan, the next target 9-ball's lowest ball.
-Choice planner_choice(const Scenario& s, int target, std::uint64_t seed, int simulations, int position_simulations = 0) {
+Choice planner_choice(const Scenario& s, int target, std::uint64_t seed, int simulations, int position_simulations = 0,
+                      const std::vector<ShotKind>& kinds = PlanRequest{}.kinds) {
   Choice c;
   const auto start = std::chrono::steady_clock::now();
   const double cpu_start = thread_cpu_seconds();
@@ -278,6 +280,7 @@ Choice planner_choice(const Scenario& s, int target, std::uint64_t seed, int sim
   q.target = target;
   q.seed = seed;
   q.simulations = simulations;
+  q.kinds = kinds;
   try {
     ShotPlanResult r;
     if (position_simulations > 0) {
@@ -599,7 +602,8 @@ Scenario broken_rack(const Setup& st, std::uint64_t seed, int& on_break) {
   return out;
 }
 
-RackRecord run_rack(const Setup& st, std::uint64_t seed, int planner_simulations, int position_simulations) {
+RackRecord run_rack(const Setup& st, std::uint64_t seed, int planner_simulations, int position_simulations,
+                    const std::vector<ShotKind>& kinds) {
   RackRecord rec;
   rec.seed = seed;
   Scenario s = broken_rack(st, seed, rec.on_break);
@@ -610,7 +614,7 @@ RackRecord run_rack(const Setup& st, std::uint64_t seed, int planner_simulations
     Choice c;
     try {
       c = planner_choice(s, target, stream_seed(seed, 100 + static_cast<std::uint64_t>(rec.shots)), planner_simulations,
-                         position_simulations);
+                         position_simulations, kinds);
     } catch (const std::exception& e) {  // the layout the engine left (never seen)
       rec.stop = Stop::rejected;
       rec.detail = e.what();
@@ -728,6 +732,7 @@ struct Options {
   int threads = 1;
   int planner_simulations = 4000;
   int position_simulations = 0;  // 0: run-outs without position play
+  std::vector<ShotKind> kinds = PlanRequest{}.kinds;  // the run-outs' shot kinds
   std::string json;
   std::string suite = "all";
 };
@@ -746,6 +751,8 @@ void usage() {
       "  --planner-simulations N  plan_shot's budget, [%d, %d] (default 4000, the planner's default)\n"
       "  --position N             run-outs played for position (plan_shot_for_position), N engine runs per\n"
       "                           next-shot plan, [%d, %d] (default: no position play)\n"
+      "  --kinds LIST             the run-outs' shot kinds, comma-separated: direct, bank, kick, combination\n"
+      "                           (default direct,bank, the planner's default)\n"
       "  --threads T              layouts in parallel, [1, 256] (default 1); results do not depend on it, timings do\n"
       "  --json FILE              also write the results as JSON\n"
       "Exit status: 0 done, 1 an engine error, 2 bad flags.\n",
@@ -761,10 +768,11 @@ Options parse(int argc, char** argv) {
       std::exit(0);
     }
     static const char* const known[] = {"--suite",  "--layouts", "--racks", "--repeats", "--seed", "--planner-simulations",
-                                        "--position", "--threads", "--json"};
+                                        "--position", "--kinds", "--threads", "--json"};
     if (std::find_if(std::begin(known), std::end(known), [&](const char* k) { return flag == k; }) == std::end(known))
       bad_flag("flag", flag,
-               "--suite, --layouts, --racks, --repeats, --seed, --planner-simulations, --position, --threads, --json, --help");
+               "--suite, --layouts, --racks, --repeats, --seed, --planner-simulations, --position, --kinds, --threads, "
+               "--json, --help");
     if (i + 1 >= argc) bad_flag(flag, "", "a value after the flag");
     const std::string value = argv[++i];
     if (flag == "--suite") {
@@ -780,6 +788,16 @@ Options parse(int argc, char** argv) {
       o.repeats = static_cast<int>(integer_flag(flag, value, 10, 1000000));
     } else if (flag == "--seed") {
       o.seed = static_cast<std::uint64_t>(integer_flag(flag, value, 0, 1000000000000000000LL));
+    } else if (flag == "--kinds") {
+      o.kinds.clear();
+      std::size_t from = 0;
+      while (from <= value.size()) {
+        const std::size_t comma = std::min(value.find(',', from), value.size());
+        const std::optional<ShotKind> kind = shot_kind_from_string(value.substr(from, comma - from));
+        if (!kind) bad_flag(flag, value, "a comma-separated list of " + shot_kind_names(""));
+        o.kinds.push_back(*kind);
+        from = comma + 1;
+      }
     } else if (flag == "--position") {
       o.position_simulations = static_cast<int>(integer_flag(flag, value, kMinPlanSimulations, kMaxPlanSimulations));
     } else if (flag == "--planner-simulations") {
@@ -820,13 +838,19 @@ std::string action_json(const ShotAction& a) {
   return fmt("[%.9g, %.9g, %.4g, %.4g, %.4g]", a.speed, a.aim_deg, a.elevation_deg, a.side, a.height);
 }
 
+std::string kinds_text(const std::vector<ShotKind>& kinds) {
+  std::string t;
+  for (const ShotKind k : kinds) t += (t.empty() ? "" : ",") + std::string(to_string(k));
+  return t;
+}
+
 int run(const Options& o) {
   const Setup st = make_setup();
   std::string json = "{\n \"tool\": \"cueball-planner-benchmark\",\n";
   json += fmt(" \"options\": {\"suite\": \"%s\", \"layouts\": %d, \"racks\": %d, \"repeats\": %d, \"seed\": %llu, "
-              "\"planner_simulations\": %d, \"position_simulations\": %d, \"threads\": %d},\n",
+              "\"planner_simulations\": %d, \"position_simulations\": %d, \"kinds\": \"%s\", \"threads\": %d},\n",
               o.suite.c_str(), o.layouts, o.racks, o.repeats, static_cast<unsigned long long>(o.seed), o.planner_simulations,
-              o.position_simulations, o.threads);
+              o.position_simulations, kinds_text(o.kinds).c_str(), o.threads);
   const CueStrikeNoise& n = st.base.noise;
   json += fmt(" \"noise\": {\"speed\": %g, \"aim_deg\": %g, \"elevation_deg\": %g, \"side\": %g, \"height\": %g},\n", n.speed,
               n.aim / kDeg, n.elevation / kDeg, n.side_offset / st.radius, n.height_offset / st.radius);
@@ -914,7 +938,7 @@ int run(const Options& o) {
     std::vector<RackRecord> recs(static_cast<std::size_t>(o.racks));
     parallel_for(o.racks, o.threads, [&](int k) {
       recs[static_cast<std::size_t>(k)] =
-          run_rack(st, o.seed + static_cast<std::uint64_t>(k), o.planner_simulations, o.position_simulations);
+          run_rack(st, o.seed + static_cast<std::uint64_t>(k), o.planner_simulations, o.position_simulations, o.kinds);
     });
     const double wall = seconds_since(start);
     int stops[kStops] = {};

@@ -256,28 +256,55 @@ void run_cushion(const ImpactFlags& f, std::ostream& out, std::ostream& err) {
 // ------------------------------------------------------------------ cushion-sweep
 
 struct SweepFlags {
+  std::string model = "mathavan_2010";
   std::string family = "grid";
   CushionFlags cushion;
   ParameterFlags parameters;
 };
 
-void sweep_row(std::ostream& out, const char* family, const PaperIncidence& in, const CushionImpactResult& r,
-               double radius, const std::string& solver) {
+// One impact of a sweep: its rebound speed and angle, by the chosen model.
+struct SweepImpact {
+  double speed = 0.0, angle = 0.0;
+  bool beyond_rigid_cushion_limit = false;
+};
+
+void sweep_row(std::ostream& out, const char* family, const PaperIncidence& in, const SweepImpact& r, double radius,
+               const std::string& solver) {
   char line[256];
   std::snprintf(line, sizeof line, "%s,%s,%.6g,%.6g,%.6g,%.6g,%.12g,%.12g\n", family, solver.c_str(), in.speed,
-                in.angle / kDegree, in.topspin * radius / in.speed, in.sidespin * radius / in.speed, r.rebound_speed,
-                r.rebound_angle / kDegree);
+                in.angle / kDegree, in.topspin * radius / in.speed, in.sidespin * radius / in.speed, r.speed,
+                r.angle / kDegree);
   out << line;
 }
 
 void run_sweep(const SweepFlags& f, std::ostream& out, std::ostream& err) {
+  const std::optional<CushionModel> model = cushion_model_from_string(f.model);
+  if (!model) throw UsageError("--model = " + quote_input(f.model) + " is not known; allowed: " + cushion_model_names(""));
+  const bool mathavan = *model == CushionModel::mathavan_2010;
+  if (!mathavan && (f.cushion.solver != "exact" || f.cushion.steps != 5000 || f.cushion.constants != "paper-fit" ||
+                    f.cushion.restitution || f.cushion.friction))
+    throw UsageError("--solver, --steps, --constants, --e and --mu-w apply to --model mathavan_2010 only");
+  if (!mathavan && f.family == "fig12")
+    throw UsageError("--family fig12 (the impact over P_I) applies to --model mathavan_2010 only");
   const Parameters p = resolve_parameters(f.parameters);
   const CushionParameters cushion = cushion_of(f.cushion, p);
   const CushionImpactOptions options = options_of(f.cushion, false);
   const double radius = p.ball.radius;
+  // Another model: its own constants at the cushion's contact height.
+  const CushionContact other =
+      mathavan ? CushionContact{} : cushion_contact(p, default_cushion_settings(*model), cushion.contact_height);
+  const std::string label = mathavan ? f.cushion.solver : f.model;
   const auto impact = [&](double v0, double alpha_deg, double top_k, double side_k) {
     PaperIncidence in{v0, alpha_deg * kDegree, top_k * v0 / radius, side_k * v0 / radius};
-    return std::pair{in, cushion_impact(incoming_ball(in), p, cushion, options)};
+    SweepImpact r;
+    if (mathavan) {
+      const CushionImpactResult m = cushion_impact(incoming_ball(in), p, cushion, options);
+      r = {m.rebound_speed, m.rebound_angle, m.beyond_rigid_cushion_limit};
+    } else {
+      const CushionRebound b = cushion_rebound(incoming_ball(in), other);
+      r = {std::hypot(b.velocity.x, b.velocity.y), std::atan2(-b.velocity.y, b.velocity.x), false};
+    }
+    return std::pair{in, r};
   };
   const std::vector<double> topspins{-1.0, -0.5, 0.0, 0.5, 1.0, 1.5, 2.0};
   const std::vector<double> sidespins{-2.0, -1.5, -1.0, -0.5, 0.0, 0.5, 1.0, 1.5, 2.0};
@@ -298,23 +325,23 @@ void run_sweep(const SweepFlags& f, std::ostream& out, std::ostream& err) {
       for (double v0 : {0.5, 1.0, 1.5, 2.0, 2.5, 3.0}) {
         const auto [in, r] = impact(v0, a, 1.0, 0.0);
         beyond_limit = beyond_limit || r.beyond_rigid_cushion_limit;
-        sweep_row(out, family, in, r, radius, f.cushion.solver);
+        sweep_row(out, family, in, r, radius, label);
       }
     } else if (f.family == "fig9") {
       for (double k : topspins) {
         const auto [in, r] = impact(1.0, a, k, 0.0);
-        sweep_row(out, family, in, r, radius, f.cushion.solver);
+        sweep_row(out, family, in, r, radius, label);
       }
     } else if (f.family == "fig10") {
       for (double k : sidespins) {
         const auto [in, r] = impact(1.0, a, 1.0, k);
-        sweep_row(out, family, in, r, radius, f.cushion.solver);
+        sweep_row(out, family, in, r, radius, label);
       }
     } else {
       for (double top : topspins) {
         for (double side : sidespins) {
           const auto [in, r] = impact(1.0, a, top, side);
-          sweep_row(out, family, in, r, radius, f.cushion.solver);
+          sweep_row(out, family, in, r, radius, label);
         }
       }
     }
@@ -740,7 +767,13 @@ Command add_cushion_sweep_command(CLI::App& app) {
       "  fig9   V0 = 1 m/s, topspin K in {-1, -0.5, 0, 0.5, 1, 1.5, 2}, alpha 1-90\n"
       "  fig10  rolling, V0 = 1 m/s, sidespin K in {-2, -1.5, ..., 2}, alpha 1-90\n"
       "  fig12  slip speeds and angles over P_I at V0 = 2, alpha = 45, w_S = 2 V0/R, w_T = 1.5 V0/R\n"
-      "  grid   alpha 1-90 x topspin K (7 values) x sidespin K (9 values) at V0 = 1 m/s");
+      "  grid   alpha 1-90 x topspin K (7 values) x sidespin K (9 values) at V0 = 1 m/s\n"
+      "Columns: family, solver (exact or paper; the model's name with --model), v0, alpha_deg,\n"
+      "topspin_k, sidespin_k, speed, angle_deg.");
+  sub->add_option("--model", flags->model,
+                  "The cushion model: " + cushion_model_names("") +
+                      "; another model than mathavan_2010 with its own\nconstants (fig8, fig9, fig10, grid)")
+      ->capture_default_str();
   sub->add_option("--family", flags->family, "fig8, fig9, fig10, fig12 or grid")
       ->check(CLI::IsMember({"fig8", "fig9", "fig10", "fig12", "grid"}))
       ->capture_default_str();

@@ -203,6 +203,15 @@ TEST(CliCushion, ModelFlagChoosesTheCushionModel) {
   EXPECT_NEAR(nlohmann::json::parse(stronge.out).at("speed").get<double>(), 0.85, 1e-12);
   EXPECT_EQ(nlohmann::json::parse(stronge.out).at("cushion").at("omega").get<double>(), 2.0);
   EXPECT_EQ(run_cli({"cushion", "--frequency-ratio", "2", "--model", "han_2005", "--v0", "1", "--alpha", "45"}).status, 2);
+  // cushion-sweep --model: the same impacts as cushion --model, as CSV rows.
+  const CliRun sweep = run_cli({"cushion-sweep", "--family", "fig8", "--model", "han_2005", "--preset", "pool"});
+  ASSERT_EQ(sweep.status, 0) << sweep.err;
+  const std::string row = "\nfig8,han_2005,1,90,1,0,";  // V0 = 1, head-on, rolling
+  const std::size_t at = sweep.out.find(row);
+  ASSERT_NE(at, std::string::npos) << sweep.out.substr(0, 300);
+  EXPECT_NEAR(std::stod(sweep.out.substr(at + row.size())), 0.689644, 1e-6);
+  EXPECT_EQ(run_cli({"cushion-sweep", "--family", "fig12", "--model", "han_2005"}).status, 2);
+  EXPECT_EQ(run_cli({"cushion-sweep", "--family", "fig9", "--model", "han_2005", "--solver", "paper"}).status, 2);
   const CliRun unknown = run_cli({"cushion", "--model", "stronge", "--v0", "1", "--alpha", "45"});
   EXPECT_EQ(unknown.status, 2);
   EXPECT_NE(unknown.err.find("--model = \"stronge\" is not known; allowed: mathavan_2010, han_2005, stronge_compliant"), std::string::npos)

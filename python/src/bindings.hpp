@@ -89,8 +89,8 @@ py::arg_v params_arg();
 
 // The cushion solver named 'exact' or 'paper' (InvalidArgument 'solver'
 // otherwise), and its name (cushion.cpp).
-cueball::CushionSolver cushion_solver(const std::string& name);
-const char* cushion_solver_name(cueball::CushionSolver solver);
+/// The solver of that name ("exact", "paper"); InvalidArgument naming `field` otherwise.
+cueball::CushionSolver cushion_solver(const std::string& name, const char* field = "solver");
 
 // ------------------------------------------------------------------ scenarios (scenario_input.cpp)
 

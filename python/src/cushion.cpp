@@ -11,15 +11,31 @@
 
 namespace cueball_python {
 
-cueball::CushionSolver cushion_solver(const std::string& name) {
-  if (name == "exact") return cueball::CushionSolver::exact;
-  if (name == "paper") return cueball::CushionSolver::paper;
-  throw cueball::InvalidArgument("solver", "solver = '" + name + "' is not a solver; allowed: 'exact', 'paper'");
+cueball::CushionSolver cushion_solver(const std::string& name, const char* field) {
+  if (const std::optional<cueball::CushionSolver> s = cueball::cushion_solver_from_string(name)) return *s;
+  throw cueball::InvalidArgument(field, std::string(field) + " = '" + name + "' is not a solver; allowed: 'exact', 'paper'");
 }
 
-const char* cushion_solver_name(cueball::CushionSolver solver) {
-  return solver == cueball::CushionSolver::paper ? "paper" : "exact";
+namespace {
+
+// The paper's incidence from cushion_impact()'s and cushion_rebound()'s
+// arguments, checked in the CLI's ranges (cueball cushion); topspin None is
+// a rolling ball.
+cueball::PaperIncidence checked_incidence(double speed, double angle, std::optional<double> topspin, double sidespin,
+                                          const cueball::Parameters& p) {
+  cueball::validate(p);
+  cueball::require_in_range("V0", speed, 1e-6, cueball::kMaxSpeed, "incoming speed, m/s");
+  if (!(std::isfinite(angle) && angle > 0.0 && angle <= std::numbers::pi / 2))
+    throw cueball::InvalidArgument("alpha", angle, "(0, pi/2] rad", "angle between the velocity and the cushion");
+  if (topspin)
+    cueball::require_in_range("w_T", *topspin, -cueball::kMaxAngularSpeed, cueball::kMaxAngularSpeed,
+                              "topspin w_T, rad/s");
+  cueball::require_in_range("w_S", sidespin, -cueball::kMaxAngularSpeed, cueball::kMaxAngularSpeed,
+                            "sidespin w_S, rad/s");
+  return {speed, angle, topspin ? *topspin : speed / p.ball.radius, sidespin};
 }
+
+}  // namespace
 
 void bind_cushion(py::module_& m) {
   using cueball::CushionImpactResult;
@@ -79,16 +95,7 @@ void bind_cushion(py::module_& m) {
       [](double speed, double angle, std::optional<double> topspin, double sidespin, const Parameters& p,
          double restitution, double friction, std::optional<double> contact_height, const std::string& solver,
          int paper_steps, bool history) {
-        cueball::validate(p);
-        // The CLI's ranges (cueball cushion): speed, angle, spins, steps.
-        cueball::require_in_range("V0", speed, 1e-6, cueball::kMaxSpeed, "incoming speed, m/s");
-        if (!(std::isfinite(angle) && angle > 0.0 && angle <= std::numbers::pi / 2))
-          throw cueball::InvalidArgument("alpha", angle, "(0, pi/2] rad", "angle between the velocity and the cushion");
-        if (topspin)
-          cueball::require_in_range("w_T", *topspin, -cueball::kMaxAngularSpeed, cueball::kMaxAngularSpeed,
-                                    "topspin w_T, rad/s");
-        cueball::require_in_range("w_S", sidespin, -cueball::kMaxAngularSpeed, cueball::kMaxAngularSpeed,
-                                  "sidespin w_S, rad/s");
+        const cueball::PaperIncidence incidence = checked_incidence(speed, angle, topspin, sidespin, p);
         if (paper_steps < 1 || paper_steps > 100000000)
           throw cueball::InvalidArgument("paper_steps", paper_steps, "[1, 1e8]", "Euler steps of the paper solver");
         const double h = contact_height ? *contact_height : cueball::default_cushion_height(p.ball);
@@ -97,7 +104,6 @@ void bind_cushion(py::module_& m) {
         options.solver = cushion_solver(solver);
         options.paper_steps = paper_steps;
         options.record_history = history;
-        const cueball::PaperIncidence incidence{speed, angle, topspin ? *topspin : speed / p.ball.radius, sidespin};
         return cueball::cushion_impact(cueball::incoming_ball(incidence), p, cushion, options);
       },
       "speed"_a, "angle"_a, "topspin"_a = py::none(), "sidespin"_a = 0.0, py::kw_only(), params_arg(),
@@ -134,15 +140,7 @@ void bind_cushion(py::module_& m) {
       [](double speed, double angle, std::optional<double> topspin, double sidespin, const std::string& model,
          const Parameters& p, std::optional<double> restitution, std::optional<double> friction,
          std::optional<double> contact_height, std::optional<double> frequency_ratio) {
-        cueball::validate(p);
-        cueball::require_in_range("V0", speed, 1e-6, cueball::kMaxSpeed, "incoming speed, m/s");
-        if (!(std::isfinite(angle) && angle > 0.0 && angle <= std::numbers::pi / 2))
-          throw cueball::InvalidArgument("alpha", angle, "(0, pi/2] rad", "angle between the velocity and the cushion");
-        if (topspin)
-          cueball::require_in_range("w_T", *topspin, -cueball::kMaxAngularSpeed, cueball::kMaxAngularSpeed,
-                                    "topspin w_T, rad/s");
-        cueball::require_in_range("w_S", sidespin, -cueball::kMaxAngularSpeed, cueball::kMaxAngularSpeed,
-                                  "sidespin w_S, rad/s");
+        const cueball::PaperIncidence incidence = checked_incidence(speed, angle, topspin, sidespin, p);
         const std::optional<cueball::CushionModel> chosen = cueball::cushion_model_from_string(model);
         if (!chosen)
           throw cueball::InvalidArgument("model", "model = " + cueball::quote_input(model) +
@@ -154,7 +152,6 @@ void bind_cushion(py::module_& m) {
         const double h = contact_height ? *contact_height : cueball::default_cushion_height(p.ball);
         cueball::require_in_range("contact_height", h, p.ball.radius * (1 + 1e-9), 2 * p.ball.radius * (1 - 1e-9),
                                   "cushion contact height h, m, between R and 2R");
-        const cueball::PaperIncidence incidence{speed, angle, topspin ? *topspin : speed / p.ball.radius, sidespin};
         return cueball::cushion_rebound(cueball::incoming_ball(incidence), cueball::cushion_contact(p, settings, h));
       },
       "speed"_a, "angle"_a, "topspin"_a = py::none(), "sidespin"_a = 0.0, py::kw_only(), "model"_a = "mathavan_2010",

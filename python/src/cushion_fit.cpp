@@ -1,6 +1,8 @@
 // include/cueball/cushion_fit.hpp: fitting e_e and mu_w to measured rebounds.
 #include "bindings.hpp"
 
+#include "cueball/cushion_model.hpp"
+
 #include <string>
 #include <vector>
 #include "cueball/cushion_fit.hpp"
@@ -95,7 +97,7 @@ void bind_cushion_fit(py::module_& m) {
            }),
            "solver"_a = "exact", "paper_steps"_a = 5000, "grid_step"_a = 0.01, "contact_height"_a = 0.0)
       .def_property(
-          "solver", [](const CushionFitOptions& o) { return cushion_solver_name(o.solver); },
+          "solver", [](const CushionFitOptions& o) { return std::string(cueball::to_string(o.solver)); },
           [](CushionFitOptions& o, const std::string& s) { o.solver = cushion_solver(s); }, "'exact' or 'paper'")
       .def_readwrite("paper_steps", &CushionFitOptions::paper_steps, "N, for solver 'paper'")
       .def_readwrite("grid_step", &CushionFitOptions::grid_step, "(0, 0.5]")
@@ -103,7 +105,7 @@ void bind_cushion_fit(py::module_& m) {
   add_value_semantics(
       options, "CushionFitOptions", {"solver", "paper_steps", "grid_step", "contact_height"},
       [](const CushionFitOptions& o) {
-        return py::make_tuple(cushion_solver_name(o.solver), o.paper_steps, o.grid_step, o.contact_height);
+        return py::make_tuple(std::string(cueball::to_string(o.solver)), o.paper_steps, o.grid_step, o.contact_height);
       },
       [](const py::tuple& t) {
         return CushionFitOptions{cushion_solver(t[0].cast<std::string>()), t[1].cast<int>(), t[2].cast<double>(),

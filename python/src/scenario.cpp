@@ -160,14 +160,6 @@ cueball::CushionModel cushion_model_named(const std::string& name, const char* f
   return *model;
 }
 
-cueball::CushionSolver cushion_solver_named(const std::string& name, const char* field) {
-  const std::optional<cueball::CushionSolver> solver = cueball::cushion_solver_from_string(name);
-  if (!solver)
-    throw cueball::InvalidArgument(field, std::string(field) + " = " + cueball::quote_input(name) +
-                                              " is not known; allowed: 'exact', 'paper'");
-  return *solver;
-}
-
 cueball::BallCollisionModel ball_collision_model_named(const std::string& name, const char* field) {
   const std::optional<cueball::BallCollisionModel> model = cueball::ball_collision_model_from_string(name);
   if (!model)
@@ -218,7 +210,7 @@ void bind_scenario(py::module_& m) {
              s.cushion = cueball::default_cushion_settings(cushion_model_named(model, "cushion_model"));
              if (!e.is_none()) s.cushion.restitution = e.cast<double>();
              if (!mu.is_none()) s.cushion.friction = mu.cast<double>();
-             s.cushion.solver = cushion_solver_named(solver, "cushion_solver");
+             s.cushion.solver = cushion_solver(solver, "cushion_solver");
              s.cushion.paper_steps = paper_steps;
              if (!omega.is_none()) s.cushion.frequency_ratio = omega.cast<double>();
              s.ball_collision_model = ball_collision_model_named(ball_model, "ball_collision_model");
@@ -249,7 +241,7 @@ void bind_scenario(py::module_& m) {
           [](SimulationSettings& s, double v) { s.cushion.friction = v; }, "mu_w (mathavan_2010) or mu (han_2005), >= 0")
       .def_property(
           "cushion_solver", [](const SimulationSettings& s) { return std::string(cueball::to_string(s.cushion.solver)); },
-          [](SimulationSettings& s, const std::string& name) { s.cushion.solver = cushion_solver_named(name, "cushion_solver"); },
+          [](SimulationSettings& s, const std::string& name) { s.cushion.solver = cushion_solver(name, "cushion_solver"); },
           "mathavan_2010's solver: 'exact' or 'paper'")
       .def_property(
           "cushion_paper_steps", [](const SimulationSettings& s) { return s.cushion.paper_steps; },
@@ -283,7 +275,7 @@ void bind_scenario(py::module_& m) {
         s.cushion.model = cushion_model_named(t[1].cast<std::string>(), "cushion_model");
         s.cushion.restitution = t[2].cast<double>();
         s.cushion.friction = t[3].cast<double>();
-        s.cushion.solver = cushion_solver_named(t[4].cast<std::string>(), "cushion_solver");
+        s.cushion.solver = cushion_solver(t[4].cast<std::string>(), "cushion_solver");
         s.cushion.paper_steps = t[5].cast<int>();
         s.cushion.frequency_ratio = t[6].cast<double>();
         s.ball_collision_model = ball_collision_model_named(t[7].cast<std::string>(), "ball_collision_model");

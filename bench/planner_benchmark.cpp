@@ -294,8 +294,8 @@ Choice planner_choice(const Scenario& s, int target, std::uint64_t seed, int sim
     c.found = true;
     c.action = r.shot.strike;
     c.simulations = r.simulations;
-    c.what = fmt("%s %s%s%s", to_string(r.shot.kind), r.shot.pocket_name.c_str(), r.shot.cushion.empty() ? "" : " off ",
-                 r.shot.cushion.c_str());
+    c.what = fmt("%s %s%s%s (window %.3f, screen %.3f)", to_string(r.shot.kind), r.shot.pocket_name.c_str(), r.shot.cushion.empty() ? "" : " off ",
+                 r.shot.cushion.c_str(), r.shot.window_probability, r.shot.success_probability);
   } catch (const NoFeasibleShot& e) {
     c.simulations = simulations;  // the API does not report them: its budget is the upper bound
     c.what = std::string(e.what()).substr(0, 2000);  // "no feasible shot pots ball 1 (12 candidates: ...)"
@@ -734,6 +734,7 @@ struct Options {
   int position_simulations = 0;  // 0: run-outs without position play
   std::vector<ShotKind> kinds = PlanRequest{}.kinds;  // the run-outs' shot kinds
   std::string json;
+  std::string layouts_out;  // a folder: each single-pot layout written there as a scenario
   std::string suite = "all";
 };
 
@@ -741,7 +742,7 @@ void usage() {
   std::printf(
       "usage: cueball-planner-benchmark [--suite single|runout|all] [--layouts N] [--racks N] [--repeats N]\n"
       "                                 [--seed S] [--planner-simulations N] [--position N] [--threads T]\n"
-      "                                 [--json FILE]\n"
+      "                                 [--json FILE] [--layouts-out DIR]\n"
       "The shot planner against a ghost-ball baseline and an exhaustive grid search (docs/planner-benchmark.md).\n"
       "  --suite S                single, runout or all (default all)\n"
       "  --layouts N              single-pot layouts, [1, 1000000] (default 1000); layout k from seed S + k\n"
@@ -755,6 +756,8 @@ void usage() {
       "                           (default direct,bank, the planner's default)\n"
       "  --threads T              layouts in parallel, [1, 256] (default 1); results do not depend on it, timings do\n"
       "  --json FILE              also write the results as JSON\n"
+      "  --layouts-out DIR        write each single-pot layout as DIR/layout-<seed>.json (a scenario without a\n"
+      "                           cue: the balls at rest, tournament noise), for cueball plan-shot --ball 1\n"
       "Exit status: 0 done, 1 an engine error, 2 bad flags.\n",
       kMinPlanSimulations, kMaxPlanSimulations, kMinPlanSimulations, kMaxPlanSimulations);
 }
@@ -768,11 +771,11 @@ Options parse(int argc, char** argv) {
       std::exit(0);
     }
     static const char* const known[] = {"--suite",  "--layouts", "--racks", "--repeats", "--seed", "--planner-simulations",
-                                        "--position", "--kinds", "--threads", "--json"};
+                                        "--position", "--kinds", "--threads", "--json", "--layouts-out"};
     if (std::find_if(std::begin(known), std::end(known), [&](const char* k) { return flag == k; }) == std::end(known))
       bad_flag("flag", flag,
                "--suite, --layouts, --racks, --repeats, --seed, --planner-simulations, --position, --kinds, --threads, "
-               "--json, --help");
+               "--json, --layouts-out, --help");
     if (i + 1 >= argc) bad_flag(flag, "", "a value after the flag");
     const std::string value = argv[++i];
     if (flag == "--suite") {
@@ -804,6 +807,9 @@ Options parse(int argc, char** argv) {
       o.planner_simulations = static_cast<int>(integer_flag(flag, value, kMinPlanSimulations, kMaxPlanSimulations));
     } else if (flag == "--threads") {
       o.threads = static_cast<int>(integer_flag(flag, value, 1, 256));
+    } else if (flag == "--layouts-out") {
+      if (value.empty()) bad_flag(flag, value, "a folder path");
+      o.layouts_out = value;
     } else {
       if (value.empty()) bad_flag(flag, value, "a file path");
       o.json = value;
@@ -859,6 +865,17 @@ int run(const Options& o) {
   bool first_suite = true;
   if (o.single) {
     const auto start = std::chrono::steady_clock::now();
+    if (!o.layouts_out.empty())
+      for (int k = 0; k < o.layouts; ++k) {
+        const std::uint64_t seed = o.seed + static_cast<std::uint64_t>(k);
+        int others = 0;
+        const std::string path = o.layouts_out + "/layout-" + std::to_string(seed) + ".json";
+        std::ofstream out(path);
+        if (!out) bad_flag("--layouts-out", o.layouts_out, "an existing, writable folder");
+        Scenario layout = single_layout(st, seed, others);
+        layout.cue.reset();  // the table state only: the planner chooses the strike
+        out << scenario_to_json(layout) << "\n";
+      }
     std::vector<SingleRecord> recs(static_cast<std::size_t>(o.layouts));
     parallel_for(o.layouts, o.threads, [&](int k) {
       recs[static_cast<std::size_t>(k)] = run_single(st, o.seed + static_cast<std::uint64_t>(k), o.repeats, o.planner_simulations);

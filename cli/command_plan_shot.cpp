@@ -75,6 +75,7 @@ nlohmann::ordered_json shot_json(const Scenario& s, int cue_ball, const PlannedS
   j["success_probability"] = shot.success_probability;
   j["success_standard_error"] = shot.success_standard_error;
   j["noisy_shots"] = shot.noisy_shots;
+  j["window_probability"] = shot.window_probability;
   j["aim_window_deg"] = {shot.aim_window_deg[0], shot.aim_window_deg[1]};
   j["speed_window"] = {shot.speed_window[0], shot.speed_window[1]};
   j["robot"] = {{"tip_height", shot.robot.tip_height}, {"cue_speed", shot.robot.cue_speed}};

@@ -27,17 +27,25 @@ namespace {
 constexpr double kDegree = std::numbers::pi / 180.0;
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
-// Shots of the noisy screen of each candidate (one batch block) and the
-// most candidates screened.
-constexpr int kScreenShots = kBatchBlockShots;
+// Shots of the brief noisy screen of every feasible shot, and the most
+// feasible shots kept.
+constexpr int kBaseScreenShots = 16;
 constexpr std::size_t kMaxScreened = 12;
 // Spin and speed variants (step 4 of the header): of the kVariantCandidates
-// best screened candidates, each tip height of kVariantHeights (ball radii:
-// draw, centre, follow) at each cue-speed factor of kVariantSpeeds on the
-// shot's own speed; a variant's search may take kVariantRuns runs or so.
+// best feasible shots by window probability, each tip height of
+// kVariantHeights (ball radii: draw, centre, follow) at each cue-speed factor
+// of kVariantSpeeds on the shot's own speed, one more step along the speed
+// where the best was at an end, and side kVariantSide either way at the best;
+// a variant's search may take kVariantRuns runs or so. A shot whose window
+// probability is kNothingToGain or more is not varied.
 constexpr std::size_t kVariantCandidates = 3;
 constexpr std::array<double, 3> kVariantHeights{-0.3, 0.0, 0.3};
 constexpr std::array<double, 3> kVariantSpeeds{0.7, 1.0, 1.8};
+constexpr double kVariantSide = 0.2;
+constexpr double kNothingToGain = 0.999;
+// The finalists screened on common draws, and the most shots each.
+constexpr std::size_t kFinalists = 3;
+constexpr int kFinalistShots = 200;
 constexpr int kVariantRuns = 60;
 // Engine runs one candidate's noise-free search may take.
 constexpr int kCandidateRuns = 120;
@@ -49,6 +57,11 @@ constexpr std::uint64_t kScreenFirstShot = std::uint64_t{1} << 40;
 constexpr double kArrivalSpeed = 1.0;
 // The target's miss of the pocket's centre the aim is solved to, m.
 constexpr double kLateralTol = 0.5e-3;
+// Where the target through the pocket's centre does not drop: the misses
+// tried instead, in steps of kOffsetFraction of the pocket's radius, at most
+// kOffsetSteps to either side.
+constexpr double kOffsetFraction = 0.3;
+constexpr int kOffsetSteps = 3;
 
 double distance_to_path(Vec2 p, Vec2 a, Vec2 b) {
   const Vec2 ab = b - a;
@@ -65,6 +78,31 @@ double distance_to_path(Vec3 p, Vec3 a, Vec3 b) {
 }
 
 double angle_deg(Vec2 v) { return std::atan2(v.y, v.x) / kDegree; }
+
+double normal_cdf(double x) { return 0.5 * std::erfc(-x / std::numbers::sqrt2); }
+
+// The chance that x + sigma z, z standard normal, lies in [lo, hi] (sigma 0:
+// whether x does).
+double inside_probability(double lo, double hi, double x, double sigma) {
+  if (!(sigma > 0.0)) return lo <= x && x <= hi ? 1.0 : 0.0;
+  return std::max(0.0, normal_cdf((hi - x) / sigma) - normal_cdf((lo - x) / sigma));
+}
+
+// The success probability the noise-free windows predict (header, step 4):
+// the aim inside the aim window under the aim noise and the squirt of the
+// side-offset noise (C8, linearised at the strike's offsets), times the cue
+// speed inside the speed window under the speed noise. It leaves out what
+// the windows do not see (a scratch or a kiss under the tip-height noise, a
+// window that moves with the speed), which the noisy screen catches.
+double window_probability(const PlannedShot& shot, const CueStrikeNoise& noise, const BallParameters& ball,
+                          const CueParameters& cue) {
+  const double a = shot.strike.side * ball.radius, b = shot.strike.height * ball.radius;
+  constexpr double h = 1e-4;  // m
+  const double squirt_rate = (squirt_angle(a + h, b, ball, cue) - squirt_angle(a - h, b, ball, cue)) / (2.0 * h);
+  const double sigma_aim_deg = std::hypot(noise.aim, squirt_rate * noise.side_offset) / kDegree;
+  return inside_probability(shot.aim_window_deg[0], shot.aim_window_deg[1], shot.strike.aim_deg, sigma_aim_deg) *
+         inside_probability(shot.speed_window[0], shot.speed_window[1], shot.strike.speed, noise.speed);
+}
 
 std::size_t index_of(const std::vector<SimulationBall>& balls, int id) {
   for (std::size_t i = 0; i < balls.size(); ++i)
@@ -198,6 +236,21 @@ class Planner {
       if (t.success && std::abs(f) < best_miss) best = x, best_miss = std::abs(f);
       return t.success && std::abs(f) < kLateralTol;
     };
+    // The target through the pocket's centre without dropping (a side
+    // pocket met at an angle, a jaw that turns it out): aims that send it
+    // kOffsetSteps steps of a fraction of the pocket's radius to either side
+    // of the centre, nearest first, from the local slope of the miss.
+    const auto off_centre = [&](double root, double slope) -> std::optional<double> {
+      if (!std::isfinite(slope) || slope == 0.0) return best;
+      const double step = kOffsetFraction * s_.table.pockets[c.pocket].radius;
+      for (int k = 1; k <= kOffsetSteps; ++k)
+        for (const double sign : {1.0, -1.0}) {
+          double f = kNaN;
+          run(root + sign * k * step / slope, f);
+          if (best) return best;
+        }
+      return best;
+    };
     double x0 = a.aim_deg, f0 = kNaN;
     if (run(x0, f0)) return x0;
     if (short_of_pocket || !std::isfinite(f0)) return best;
@@ -211,6 +264,7 @@ class Planner {
         x1 = 0.5 * (x0 + x1);
         continue;
       }
+      if (std::abs(f1) < kLateralTol) return best ? best : off_centre(x1, (f1 - f0) / (x1 - x0));
       if (!bracketed && std::signbit(f0) != std::signbit(f1)) {
         bracketed = true;
         lo = x0, flo = f0, hi = x1;
@@ -691,7 +745,7 @@ ShotPlanResult plan_shot(const Scenario& table_state, const PlanRequest& q) {
   // 3. The exact simulation: aim corrected, windows, speed chosen.
   // At most half the budget on the search (a candidate started before then
   // may go on to three quarters), the rest for the noise.
-  const int search_budget = q.simulations / 2;
+  const int search_budget = q.simulations * 2 / 5;
   Planner planner(s, cue, target, q.simulations * 3 / 4);
   const Parameters& par = s.settings.parameters;
   const double roll = par.cloth.rolling_resistance * par.cloth.gravity;
@@ -700,7 +754,7 @@ ShotPlanResult plan_shot(const Scenario& table_state, const PlanRequest& q) {
   // speed chosen; nullopt and `why` when it does not pot.
   // `fixed`: a variant's cue speed and the aim its solve starts from (the
   // speed is then kept, not chosen).
-  const auto search = [&](const Candidate& c, double height, std::string& why,
+  const auto search = [&](const Candidate& c, double side, double height, std::string& why,
                           std::optional<std::pair<double, double>> fixed = std::nullopt) -> std::optional<PlannedShot> {
     // First speed: the object ball arriving at about kArrivalSpeed, rolling
     // (5/7 of its speed kept after sliding), 95 % of the striking ball's
@@ -717,7 +771,7 @@ ShotPlanResult plan_shot(const Scenario& table_state, const PlanRequest& q) {
     const double v_cue = v_object / (0.95 * std::cos(c.cut_deg * kDegree));
     const double v0 = 1.2 * std::sqrt(v_cue * v_cue + 2.0 * roll * c.cue_path) / (c.kind == ShotKind::kick ? 0.75 : 1.0);
     const double cue_speed_of = level_cue_speed(v0, height * R, ball, s.cue_parameters);
-    const std::optional<double> elevation = clearing_elevation(s, cue, c.aim_deg, q.side, height);
+    const std::optional<double> elevation = clearing_elevation(s, cue, c.aim_deg, side, height);
     if (!elevation) {
       why = "the cue is obstructed at every elevation up to " + format_number(kMaxPlanElevationDeg) + " deg";
       return std::nullopt;
@@ -726,7 +780,7 @@ ShotPlanResult plan_shot(const Scenario& table_state, const PlanRequest& q) {
       why = "no finite first speed or aim from geometry";
       return std::nullopt;
     }
-    ShotAction a{std::clamp(cue_speed_of / std::cos(*elevation * kDegree), 0.3, 10.0), c.aim_deg, *elevation, q.side,
+    ShotAction a{std::clamp(cue_speed_of / std::cos(*elevation * kDegree), 0.3, 10.0), c.aim_deg, *elevation, side,
                  height};
     std::optional<double> aim;
     const auto set_speed = [](ShotAction& x, double v) { x.speed = v; };
@@ -804,6 +858,7 @@ ShotPlanResult plan_shot(const Scenario& table_state, const PlanRequest& q) {
     shot.robot.cue_speed = level_cue_speed(shot.ball_speed, shot.robot.tip_height, ball, s.cue_parameters);
     for (const BallTrajectory& b : final_trial.result.balls)
       shot.predicted.push_back({b.id, b.final_state.position, b.pocketed, b.pocketed ? b.pocket : -1});
+    shot.window_probability = window_probability(shot, q.noise, ball, s.cue_parameters);
     return shot;
   };
   // Centre ball first; a scratch or a miss there tries draw, then follow (the
@@ -822,7 +877,7 @@ ShotPlanResult plan_shot(const Scenario& table_state, const PlanRequest& q) {
     std::optional<PlannedShot> shot;
     for (double height : heights) {
       try {
-        shot = search(c, height, why);
+        shot = search(c, q.side, height, why);
       } catch (const BudgetSpent&) {
         why = "not finished (the simulation budget is spent)";
         break;
@@ -877,7 +932,8 @@ ShotPlanResult plan_shot(const Scenario& table_state, const PlanRequest& q) {
     int hits = 0;
     for (std::size_t k = 0; k < static_cast<std::size_t>(m.shots); ++k)
       hits += !m.miscue[k] && !m.failure[k] && m.first_contact[k] == first_contact &&
-                      m.pocket[k * n + target] == shot.pocket && !m.pocketed[k * n + cue]
+                      (q.pocket ? m.pocket[k * n + target] == shot.pocket : m.pocketed[k * n + target] != 0) &&
+                      !m.pocketed[k * n + cue]
                   ? 1
                   : 0;
     return hits;
@@ -895,90 +951,153 @@ ShotPlanResult plan_shot(const Scenario& table_state, const PlanRequest& q) {
     feasible.resize(kMaxScreened);
     feasible_of.resize(kMaxScreened);
   }
-  // Spin and speed under noise: unless the request fixes the tip height,
-  // the kVariantCandidates best by the screen are tried again at each of
-  // kVariantHeights and kVariantSpeeds (slower, the shot's cue speed, faster),
-  // the aim solved and its window found on the exact simulation, and each
-  // variant that pots screened on the same noise draws (common random
-  // numbers, so the comparison is paired); all compete with the rest.
-  const std::size_t variant_candidates = q.height ? 0 : std::min(kVariantCandidates, feasible.size());
-  const std::size_t planned_variants = variant_candidates * (kVariantHeights.size() * kVariantSpeeds.size() - 1);
-  const std::size_t screened_count = feasible.size() + planned_variants;
-  const int remaining = q.simulations - result.simulations;
-  const int screen =
-      screened_count > 1 ? std::min(kScreenShots, remaining / (2 * static_cast<int>(screened_count))) : 0;
+  // Spin and speed under noise (header, step 4). Every feasible shot is
+  // screened briefly (its alternatives' estimate); unless the request fixes
+  // the tip height, the kVariantCandidates best by their window probability
+  // are tried again at other tip heights, speeds and sides; the
+  // kFinalists best of all by window probability (and the best by the brief
+  // screen) are screened on the same draws, the best of them measured on
+  // fresh draws.
+  const int budget = q.simulations;
+  const int finalist_shots = std::min(kFinalistShots, budget / 15);
+  const int final_reserve = budget / 5;
+  const int base_screen =
+      feasible.size() > 1 ? std::min(kBaseScreenShots, budget / (10 * static_cast<int>(feasible.size()))) : 0;
   int screened_shots = 0;
-  if (screen > 0) {
-    for (PlannedShot& shot : feasible) {
-      estimate(shot, successes(shot, screen, kScreenFirstShot), screen);
-      shot.simulations += screen;
-      screened_shots += screen;
-    }
+  const auto screen = [&](PlannedShot& shot, int shots) {
+    estimate(shot, successes(shot, shots, kScreenFirstShot), shots);
+    shot.simulations += shots;
+    screened_shots += shots;
+  };
+  if (base_screen > 0)
+    for (PlannedShot& shot : feasible) screen(shot, base_screen);
+  std::vector<std::size_t> family(feasible.size());  // the feasible candidate each shot varies
+  for (std::size_t i = 0; i < family.size(); ++i) family[i] = i;
+  const auto by_window = [&](std::size_t a, std::size_t b) {
+    return feasible[a].window_probability > feasible[b].window_probability;
+  };
+  if (!q.height) {
     std::vector<std::size_t> order(feasible.size());
     for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
-    std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
-      return feasible[a].success_probability > feasible[b].success_probability;
-    });
-    // The final estimate keeps at least a quarter of the budget.
-    const int reserve = q.simulations / 4;
+    std::stable_sort(order.begin(), order.end(), by_window);
+    const std::size_t variant_candidates = std::min(kVariantCandidates, order.size());
+    // What the variants may spend: the finalists' screen and the final
+    // estimate's reserve stay free.
+    const int variant_cap = budget - final_reserve - static_cast<int>(kFinalists) * finalist_shots - screened_shots;
     bool spent = false;
-    for (std::size_t r = 0; r < variant_candidates && !spent; ++r) {
-      const std::size_t i = order[r];
-      if (feasible[i].success_probability >= 1.0) continue;  // nothing to gain
-      const PlannedShot base = feasible[i];
-      const Candidate& c = candidates[feasible_of[i]];
-      for (double height : kVariantHeights) {
-        for (double factor : kVariantSpeeds) {
-          if (height == base.strike.height && factor == 1.0) continue;  // the base shot itself
-          const int left = q.simulations - planner.runs() - screened_shots;
-          if (left < kVariantRuns + screen + reserve) {
-            spent = true;
-            break;
-          }
-          double speed = base.strike.speed * factor;
-          // Faster: at most 3 sigma of speed noise below the base's fastest
-          // pot; slower: at least 3 sigma above its slowest.
-          if (factor > 1.0) {
-            speed = std::min(speed, base.speed_window[1] - 3.0 * q.noise.speed);
-            if (speed < base.strike.speed * 1.2) continue;
-          } else if (factor < 1.0) {
-            speed = std::max(speed, base.speed_window[0] + 3.0 * q.noise.speed);
-            if (speed > base.strike.speed * 0.9) continue;
-          }
-          // A hard cap: this variant's screen and half the reserve stay free.
-          planner.limit(q.simulations - screened_shots - screen - reserve / 2);
-          const int runs_before = planner.runs();
-          std::string why;
-          std::optional<PlannedShot> v;
-          try {
-            v = search(c, height, why, std::pair<double, double>{speed, base.strike.aim_deg});
-          } catch (const BudgetSpent&) {
-            spent = true;
-            break;
-          }
-          if (!v) continue;
-          v->simulations = planner.runs() - runs_before;
-          estimate(*v, successes(*v, screen, kScreenFirstShot), screen);
-          v->simulations += screen;
-          screened_shots += screen;
-          feasible.push_back(std::move(*v));
-        }
-        if (spent) break;
+    // One variant of feasible[base]: nullopt when it does not pot (or spent).
+    const auto vary = [&](std::size_t base, double side, double height, double speed) -> std::optional<std::size_t> {
+      if (spent) return std::nullopt;
+      if (planner.runs() + kVariantRuns > variant_cap) {
+        spent = true;
+        return std::nullopt;
       }
+      planner.limit(variant_cap);
+      const std::size_t ci = feasible_of[family[base]];
+      const int runs_before = planner.runs();
+      std::string why;
+      std::optional<PlannedShot> v;
+      try {
+        v = search(candidates[ci], side, height, why, std::pair<double, double>{speed, feasible[base].strike.aim_deg});
+      } catch (const BudgetSpent&) {
+        spent = true;
+      }
+      if (!v) return std::nullopt;
+      v->simulations = planner.runs() - runs_before;
+      feasible.push_back(std::move(*v));
+      family.push_back(family[base]);
+      return feasible.size() - 1;
+    };
+    // The speed of a variant at `factor` times the base's, kept 3 sigma of
+    // speed noise inside the base's speed window; nullopt when that leaves
+    // it too close to the base's own speed.
+    const auto variant_speed = [&](const PlannedShot& b, double factor) -> std::optional<double> {
+      double speed = b.strike.speed * factor;
+      if (factor > 1.0) {
+        speed = std::min(speed, b.speed_window[1] - 3.0 * q.noise.speed);
+        if (speed < b.strike.speed * 1.2) return std::nullopt;
+      } else if (factor < 1.0) {
+        speed = std::max(speed, b.speed_window[0] + 3.0 * q.noise.speed);
+        if (speed > b.strike.speed * 0.9) return std::nullopt;
+      }
+      return speed;
+    };
+    for (std::size_t r = 0; r < variant_candidates && !spent; ++r) {
+      const std::size_t base = order[r];
+      if (feasible[base].window_probability >= kNothingToGain) continue;
+      // Tip heights x speeds about the base.
+      std::size_t best = base;
+      double best_factor = 1.0;
+      for (double height : kVariantHeights)
+        for (double factor : kVariantSpeeds) {
+          if (height == feasible[base].strike.height && factor == 1.0) continue;
+          const std::optional<double> speed = variant_speed(feasible[base], factor);
+          if (!speed) continue;
+          if (const std::optional<std::size_t> v = vary(base, feasible[base].strike.side, height, *speed);
+              v && feasible[*v].window_probability > feasible[best].window_probability)
+            best = *v, best_factor = factor;
+        }
+      // Further along the speed of the best, when it was at an end.
+      if (best_factor != 1.0) {
+        const double factor = best_factor < 1.0 ? kVariantSpeeds.front() : kVariantSpeeds.back();
+        if (const std::optional<double> speed = variant_speed(feasible[best], factor))
+          if (const std::optional<std::size_t> v = vary(best, feasible[best].strike.side, feasible[best].strike.height, *speed);
+              v && feasible[*v].window_probability > feasible[best].window_probability)
+            best = *v;
+      }
+      // Side spin at the best, unless the request gives the side.
+      if (q.side == 0.0)
+        for (double side : {-kVariantSide, kVariantSide})
+          if (std::hypot(side, feasible[best].strike.height) <= kMiscueOffsetFraction)
+            vary(best, side, feasible[best].strike.height, feasible[best].strike.speed);
     }
-    result.simulations = planner.runs() + screened_shots;
-    // Best first: the screened probability, then the wider aim window.
-    std::stable_sort(feasible.begin(), feasible.end(), [](const PlannedShot& a, const PlannedShot& b) {
-      if (a.success_probability != b.success_probability) return a.success_probability > b.success_probability;
-      return a.aim_window_deg[1] - a.aim_window_deg[0] > b.aim_window_deg[1] - b.aim_window_deg[0];
-    });
   }
-  const int final_shots = std::max(1, q.simulations - result.simulations);
-  PlannedShot& best = feasible.front();
+  // The finalists: the best by window probability, and the best by the brief screen.
+  std::vector<std::size_t> finalists(feasible.size());
+  for (std::size_t i = 0; i < finalists.size(); ++i) finalists[i] = i;
+  std::stable_sort(finalists.begin(), finalists.end(), by_window);
+  if (finalists.size() > kFinalists) {
+    const auto screened_best =
+        std::max_element(finalists.begin(), finalists.end(), [&](std::size_t a, std::size_t b) {
+          return feasible[a].noisy_shots > 0 && feasible[b].noisy_shots > 0
+                     ? feasible[a].success_probability < feasible[b].success_probability
+                     : feasible[a].noisy_shots < feasible[b].noisy_shots;
+        });
+    if (screened_best - finalists.begin() >= static_cast<std::ptrdiff_t>(kFinalists))
+      std::swap(finalists[kFinalists - 1], *screened_best);
+    finalists.resize(kFinalists);
+  }
+  std::size_t chosen = finalists.front();
+  if (finalists.size() > 1 && finalist_shots > 0) {
+    for (std::size_t i : finalists) screen(feasible[i], finalist_shots);
+    for (std::size_t i : finalists) {
+      const PlannedShot& a = feasible[i];
+      const PlannedShot& b = feasible[chosen];
+      if (a.success_probability > b.success_probability ||
+          (a.success_probability == b.success_probability && a.window_probability > b.window_probability))
+        chosen = i;
+    }
+  }
+  result.simulations = planner.runs() + screened_shots;
+  const int final_shots = std::max(1, budget - result.simulations);
+  PlannedShot& best = feasible[chosen];
   estimate(best, successes(best, final_shots, 0), final_shots);
   best.simulations += final_shots;
   result.simulations += final_shots;
   result.shot = std::move(best);
+  // Best first: the screened probability (of the most shots screened), then the window's.
+  std::vector<std::size_t> rest;
+  for (std::size_t i = 0; i < feasible.size(); ++i)
+    if (i != chosen) rest.push_back(i);
+  std::stable_sort(rest.begin(), rest.end(), [&](std::size_t a, std::size_t b) {
+    if (feasible[a].success_probability != feasible[b].success_probability)
+      return feasible[a].success_probability > feasible[b].success_probability;
+    return feasible[a].window_probability > feasible[b].window_probability;
+  });
+  std::vector<PlannedShot> others;
+  for (std::size_t i : rest) others.push_back(std::move(feasible[i]));
+  feasible = std::move(others);
+  feasible.insert(feasible.begin(), PlannedShot{});  // the chosen one's place (moved out above)
   // The alternatives: the best variant (tip height, speed) of each other
   // shot, a shot being its kind, pocket, cushions and intermediate ball.
   const auto same_shot = [](const PlannedShot& a, const PlannedShot& b) {

@@ -163,8 +163,8 @@ inline constexpr std::size_t kMaxCombinationBalls = 3;
 /// Highest elevation the planner raises the cue to, to clear an obstruction, degrees.
 inline constexpr double kMaxPlanElevationDeg = 30.0;
 /// Precision of the aim window's edges, degrees, and of the speed window's, m/s.
-inline constexpr double kAimWindowTolDeg = 0.002;
-inline constexpr double kSpeedWindowTol = 0.01;
+inline constexpr double kAimWindowTolDeg = 0.01;
+inline constexpr double kSpeedWindowTol = 0.03;
 /// Accepted `simulations` budgets.
 inline constexpr int kMinPlanSimulations = 500;
 inline constexpr int kMaxPlanSimulations = 1'000'000;
@@ -230,6 +230,11 @@ struct PlannedShot {
   double success_probability = 0.0; ///< under the request's noise
   double success_standard_error = 0.0;
   int noisy_shots = 0;              ///< N of the estimate
+  /// The success probability the noise-free windows predict: the aim inside
+  /// aim_window_deg under the aim noise and the side noise's squirt, times
+  /// the cue speed inside speed_window under the speed noise (the planner's
+  /// ranking before its noisy screen; header, step 4).
+  double window_probability = 0.0;
   std::array<double, 2> aim_window_deg{};  ///< aims that pot, the rest held, noise-free
   std::array<double, 2> speed_window{};    ///< cue speeds that pot, the rest held, noise-free, m/s
   std::vector<PredictedBall> predicted;    ///< every ball's end, noise-free, in the scenario's order

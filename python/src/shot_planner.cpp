@@ -85,6 +85,7 @@ py::dict shot_dict(const Scenario& s, int cue_ball, const PlannedShot& shot, con
   d["success_probability"] = shot.success_probability;
   d["success_standard_error"] = shot.success_standard_error;
   d["noisy_shots"] = shot.noisy_shots;
+  d["window_probability"] = shot.window_probability;
   d["aim_window_deg"] = py::make_tuple(shot.aim_window_deg[0], shot.aim_window_deg[1]);
   d["speed_window"] = py::make_tuple(shot.speed_window[0], shot.speed_window[1]);
   py::dict robot;

@@ -43,6 +43,14 @@ constexpr std::array<double, 3> kVariantHeights{-0.3, 0.0, 0.3};
 constexpr std::array<double, 3> kVariantSpeeds{0.7, 1.0, 1.8};
 constexpr double kVariantSide = 0.2;
 constexpr double kNothingToGain = 0.999;
+// Window probabilities in one step of this rank by the brief noisy screen.
+constexpr double kWindowStep = 0.02;
+// The aim scan (header, step 2b): kScanAims aims across the cue ball's
+// straight hits on the target at each cue speed of kScanSpeeds (m/s),
+// centre ball; of the potting runs of aims found, at most kScanCandidates.
+constexpr int kScanAims = 40;
+constexpr std::array<double, 2> kScanSpeeds{2.0, 4.0};
+constexpr std::size_t kScanCandidates = 3;
 // The finalists screened on common draws, and the most shots each.
 constexpr std::size_t kFinalists = 3;
 constexpr int kFinalistShots = 200;
@@ -147,6 +155,8 @@ class Planner {
       : s_(s), cue_(cue), target_(target), R_(s.settings.parameters.ball.radius), most_runs_(most_runs) {}
 
   int runs() const { return runs_; }
+  // Counts n runs made elsewhere (the aim scan's batch).
+  void count(int n) { runs_ += n; }
   // Lowers the most runs play() may take (in all).
   void limit(int most_runs) { most_runs_ = std::min(most_runs_, most_runs); }
 
@@ -892,6 +902,138 @@ ShotPlanResult plan_shot(const Scenario& table_state, const PlanRequest& q) {
     feasible.push_back(std::move(*shot));
     feasible_of.push_back(ci);
   }
+  // 2b. The aim scan: pots that geometry misses or whose aim the secant
+  // cannot solve (a ball on the rail sent along it, a side pocket that wants
+  // the near jaw, a narrow path between two kisses).
+  const bool scan_kinds = std::find(q.kinds.begin(), q.kinds.end(), ShotKind::direct) != q.kinds.end() ||
+                          std::find(q.kinds.begin(), q.kinds.end(), ShotKind::bank) != q.kinds.end();
+  const int scan_runs = kScanAims * static_cast<int>(kScanSpeeds.size());
+  if (scan_kinds && planner.runs() + scan_runs + static_cast<int>(kScanCandidates) * kCandidateRuns <= q.simulations * 3 / 5) {
+    const Vec2 C = s.balls[cue].state.position, O = s.balls[target].state.position;
+    const double half = std::asin(std::min(1.0, 2.0 * R / norm(O - C))) / kDegree;
+    const double centre = angle_deg(O - C);
+    std::vector<ShotAction> actions;
+    for (double speed : kScanSpeeds)
+      for (int i = 0; i < kScanAims; ++i) {
+        const double aim = centre - half + (i + 0.5) * 2.0 * half / kScanAims;
+        const std::optional<double> elevation = clearing_elevation(s, cue, aim, 0.0, 0.0);
+        // An obstructed aim is kept unplayed (a NaN speed): the runs stay in order.
+        actions.push_back({elevation ? speed : kNaN, aim, elevation.value_or(0.0), 0.0, 0.0});
+      }
+    std::vector<ShotAction> played;
+    for (const ShotAction& a : actions)
+      if (std::isfinite(a.speed)) played.push_back(a);
+    Scenario scan = s;
+    scan.cue = ShotStrike{};
+    scan.cue->ball = cue_id;
+    const ManyResult m = played.empty() ? ManyResult{} : simulate_many(scan, played, {}, ManyOptions{});
+    planner.count(m.shots);
+    // Each potting run of aims (the same speed, pocket and cushion count).
+    struct Run {
+      std::size_t pocket;
+      int cushions;
+      double speed, first_aim, last_aim;
+      int aims;
+    };
+    std::vector<Run> runs;
+    const auto n = static_cast<std::size_t>(m.balls);
+    std::size_t k = 0;
+    bool extends = false;
+    for (const ShotAction& a : actions) {
+      if (!std::isfinite(a.speed)) {
+        extends = false;
+        continue;
+      }
+      const std::size_t row = k++;
+      const bool pots = !m.failure[row] && m.first_contact[row] == q.target && m.pocketed[row * n + target] &&
+                        !m.pocketed[row * n + cue];
+      if (!pots) {
+        extends = false;
+        continue;
+      }
+      const auto pocket = static_cast<std::size_t>(m.pocket[row * n + target]);
+      const int cushions = m.cushions[row * n + target];
+      if (extends && runs.back().pocket == pocket && runs.back().cushions == cushions && runs.back().speed == a.speed) {
+        runs.back().last_aim = a.aim_deg;
+        ++runs.back().aims;
+      } else {
+        runs.push_back({pocket, cushions, a.speed, a.aim_deg, a.aim_deg, 1});
+      }
+      extends = true;
+    }
+    // Runs into the pocket asked for, of a kind asked for, wider than the
+    // aim window of any feasible shot of that kind into that pocket; the
+    // widest first. A run's kind: its middle played once in full, the target
+    // a bank when it meets a rail (a cushion long enough to bank off, not a
+    // pocket's facing) before it drops.
+    std::stable_sort(runs.begin(), runs.end(), [](const Run& a, const Run& b) { return a.aims > b.aims; });
+    const double scan_step = 2.0 * half / kScanAims;
+    std::size_t found = 0;
+    for (const Run& r : runs) {
+      if (found == kScanCandidates) break;
+      if (q.pocket && static_cast<std::size_t>(*q.pocket) != r.pocket) continue;
+      Candidate c;
+      c.pocket = r.pocket;
+      c.first_ball = target;
+      c.aim_deg = 0.5 * (r.first_aim + r.last_aim);
+      const std::optional<double> elevation = clearing_elevation(s, cue, c.aim_deg, 0.0, 0.0);
+      if (!elevation) continue;
+      std::vector<SimulationBall> balls = s.balls;
+      balls[cue].state = strike_ball(to_strike(ShotAction{r.speed, c.aim_deg, *elevation, 0.0, 0.0}, R),
+                                     balls[cue].state.position, ball, s.cue_parameters);
+      if (planner.runs() >= q.simulations * 3 / 5) break;
+      planner.count(1);
+      SimulationResult played_out;
+      try {
+        played_out = simulate_unchecked(s.table, balls, s.settings);
+      } catch (const SimulationError&) {
+        continue;
+      }
+      const BallTrajectory& t = played_out.balls[target];
+      if (!t.pocketed || t.segments.size() < 2) continue;
+      for (const Event& e : played_out.events) {
+        if (e.type != EventType::ball_cushion || e.ball != q.target) continue;
+        const CushionSegment& seg = s.table.cushions[static_cast<std::size_t>(e.other)];
+        if (norm(seg.end - seg.start) >= 6.0 * R) c.cushions.push_back(static_cast<std::size_t>(e.other));
+      }
+      c.kind = c.cushions.empty() ? ShotKind::direct : ShotKind::bank;
+      const ShotKind kind = c.kind;
+      if (std::find(q.kinds.begin(), q.kinds.end(), kind) == q.kinds.end() || c.cushions.size() > 2) continue;
+      const bool known = std::any_of(feasible.begin(), feasible.end(), [&](const PlannedShot& f) {
+        return f.kind == kind && f.pocket == static_cast<int>(r.pocket) && f.cushions.size() == c.cushions.size() &&
+               f.aim_window_deg[1] - f.aim_window_deg[0] >= r.aims * scan_step;
+      });
+      if (known) continue;
+      ++found;
+      const Vec2 last = t.segments.back().state.velocity, first = t.segments[1].state.velocity;
+      if (!(norm(last) > 0.0) || !(norm(first) > 0.0)) continue;
+      c.last_leg = last / norm(last);
+      c.cut_deg = std::acos(std::clamp(dot(first / norm(first), Vec2{std::cos(c.aim_deg * kDegree),
+                                                                        std::sin(c.aim_deg * kDegree)}),
+                                       -1.0, 1.0)) /
+                  kDegree;
+      c.what = std::string(to_string(kind)) + " into " + s.table.pockets[r.pocket].name;
+      for (std::size_t i = 0; i < c.cushions.size(); ++i)
+        c.what += (i == 0 ? " off " : ", then ") + cushion_name(s.table, c.cushions[i]);
+      c.what += " (found by the aim scan)";
+      candidates.push_back(c);
+      const int runs_before = planner.runs();
+      std::string why;
+      std::optional<PlannedShot> shot;
+      try {
+        shot = search(candidates.back(), q.side, q.height.value_or(0.0), why, std::pair<double, double>{r.speed, c.aim_deg});
+      } catch (const BudgetSpent&) {
+        why = "not finished (the simulation budget is spent)";
+      }
+      if (!shot) {
+        result.rejected.push_back(c.what + ": " + why);
+        continue;
+      }
+      shot->simulations = planner.runs() - runs_before;
+      feasible.push_back(std::move(*shot));
+      feasible_of.push_back(candidates.size() - 1);
+    }
+  }
   result.simulations = planner.runs();
   if (feasible.empty()) {
     // A summary by reason first (the message is cut in the middle when long), then each.
@@ -973,8 +1115,13 @@ ShotPlanResult plan_shot(const Scenario& table_state, const PlanRequest& q) {
     for (PlannedShot& shot : feasible) screen(shot, base_screen);
   std::vector<std::size_t> family(feasible.size());  // the feasible candidate each shot varies
   for (std::size_t i = 0; i < family.size(); ++i) family[i] = i;
+  // Better first: the window probability in steps of kWindowStep, then the
+  // brief screen's estimate.
   const auto by_window = [&](std::size_t a, std::size_t b) {
-    return feasible[a].window_probability > feasible[b].window_probability;
+    const double wa = std::floor(feasible[a].window_probability / kWindowStep);
+    const double wb = std::floor(feasible[b].window_probability / kWindowStep);
+    if (wa != wb) return wa > wb;
+    return feasible[a].success_probability > feasible[b].success_probability;
   };
   if (!q.height) {
     std::vector<std::size_t> order(feasible.size());

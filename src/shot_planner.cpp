@@ -63,6 +63,10 @@ constexpr int kCandidateRuns = 120;
 constexpr std::uint64_t kScreenFirstShot = std::uint64_t{1} << 40;
 // Arrival speed of the object ball at the pocket that the first speed aims at, m/s.
 constexpr double kArrivalSpeed = 1.0;
+// The largest step of the aim window's search outwards, degrees: a hole in
+// the window wider than this (a jaw that turns the ball out between two
+// aims that pot) is not stepped over.
+constexpr double kAimWindowMostStepDeg = 0.2;
 // The target's miss of the pocket's centre the aim is solved to, m.
 constexpr double kLateralTol = 0.5e-3;
 // Where the target through the pocket's centre does not drop: the misses
@@ -296,7 +300,7 @@ class Planner {
   // the action.
   template <class Set>
   double window_edge(ShotAction a, const Candidate& c, double inside, double direction, double step, double tol,
-                     double limit, Set set) {
+                     double limit, Set set, double most_step = std::numeric_limits<double>::infinity()) {
     double in = inside, out = kNaN;
     for (int i = 0; i < 8; ++i) {
       double x = in + direction * step;
@@ -308,7 +312,7 @@ class Planner {
       }
       in = x;
       if (x == limit) return limit;
-      step *= 2.0;
+      step = std::min(2.0 * step, most_step);
     }
     if (!std::isfinite(out)) return in;
     while (std::abs(out - in) > tol) {
@@ -843,8 +847,9 @@ ShotPlanResult plan_shot(const Scenario& table_state, const PlanRequest& q) {
     shot.geometric_aim_deg = c.aim_deg;
     shot.cut_deg = c.cut_deg;
     shot.combination_cut_deg = c.combination_cut_deg;
-    shot.aim_window_deg = {planner.window_edge(a, c, a.aim_deg, -1.0, 0.1, kAimWindowTolDeg, a.aim_deg - 20.0, set_aim),
-                           planner.window_edge(a, c, a.aim_deg, +1.0, 0.1, kAimWindowTolDeg, a.aim_deg + 20.0, set_aim)};
+    shot.aim_window_deg = {
+        planner.window_edge(a, c, a.aim_deg, -1.0, 0.1, kAimWindowTolDeg, a.aim_deg - 20.0, set_aim, kAimWindowMostStepDeg),
+        planner.window_edge(a, c, a.aim_deg, +1.0, 0.1, kAimWindowTolDeg, a.aim_deg + 20.0, set_aim, kAimWindowMostStepDeg)};
     // The window's middle: the most aim noise it can take either way.
     a.aim_deg = 0.5 * (shot.aim_window_deg[0] + shot.aim_window_deg[1]);
     shot.speed_window = {planner.window_edge(a, c, a.speed, -1.0, 0.25, kSpeedWindowTol, 0.05, set_speed),

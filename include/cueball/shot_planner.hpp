@@ -43,47 +43,68 @@
 //      kMaxCutDeg, whose bank point is not on its cushion or meets it more
 //      than 75 deg from its normal, or whose cue is obstructed at every
 //      elevation up to kMaxPlanElevationDeg (cue_obstructed()).
+//   2b. The aim scan (direct and bank shots): 40 aims spread evenly
+//      over every straight line on which the cue ball meets the target, at
+//      2 and 4 m/s, centre ball, in one simulate_many batch. Each run of
+//      neighbouring aims that pots (the same pocket and cushion count) and
+//      is wider than the aim window of any feasible shot of its kind into
+//      its pocket becomes a candidate, its kind read from its middle aim
+//      played out (a bank when the target meets a rail, not a pocket's
+//      facing, before it drops). It finds what geometry misses: a ball on
+//      the rail sent along it, a side pocket that wants the near jaw, a path
+//      between two kisses.
 //   3. The aim is corrected on the exact simulation (noise-free): the
 //      target's signed lateral miss of P (its closest approach to P, measured
 //      across the intended last leg) is driven to zero by the secant method,
 //      so cut- and spin-induced throw, the cloth's curve and the cushions'
-//      rebounds are in the answer. The speed window (cue speeds that still
-//      pot, the rest held) is found by bisection from there, each edge to
-//      kSpeedWindowTol, and the speed chosen in it: the first guess (the
-//      object ball reaching the pocket at about 1 m/s), but at least
-//      max(0.3 m/s, a quarter of the slowest pot) + 3 sigma above the
-//      slowest pot and at most the window's middle; the aim is solved again
-//      at that speed. The aim window is then found the same way (edges to
-//      kAimWindowTolDeg) and the aim played is its middle, the aim that
-//      takes the most aim noise either way; the speed window reported is
-//      the one at that aim.
-//   4. The success probability is estimated from noisy copies of the strike
-//      (simulate_many with the request's CueStrikeNoise, batch.hpp): every
-//      feasible candidate (at most 12) is screened with up to 64 shots on common
-//      noise draws. Spin and speed are then chosen under noise (unless the
-//      request gives the tip height): the 3 best candidates by the screen
-//      (one that pots on every screened shot excepted) are tried again with
-//      draw (-0.3), centre ball and follow (+0.3) at 0.7, 1 and 1.8 times
+//      rebounds are in the answer; where the target passes the centre
+//      without dropping (a jaw turns it out), misses of 0.3, 0.6 and 0.9
+//      pocket radii either side are tried. The lowest cue speed that still
+//      pots (the rest held) is found by bisection from there, to
+//      kSpeedWindowTol, and the speed chosen: the first guess (the object
+//      ball reaching the pocket at about 1 m/s), but at least max(0.3 m/s, a
+//      quarter of the slowest pot) + 3 sigma above the slowest pot and at
+//      most the speed window's middle; the aim is solved again at that speed.
+//      The aim window (aims that pot, the rest held) is then found by steps
+//      outwards of at most 0.2 deg and bisection, each edge to
+//      kAimWindowTolDeg, and the aim played is its middle, the aim that takes
+//      the most aim noise either way; the speed window is found at that aim.
+//   4. Spin, speed and the shot are chosen under noise. Each feasible shot
+//      has its window probability (PlannedShot::window_probability): the
+//      chance that the aim, under the aim noise and the squirt of the
+//      side-offset noise (C8 of cue_strike.hpp, linearised), stays inside the
+//      aim window, times the chance that the cue speed stays inside the speed
+//      window; over the planner benchmark's chosen shots it correlates 0.98
+//      with the success rate of 2,000 noisy repeats, and it costs no noisy
+//      shot. Every feasible shot (at most 12) is also screened briefly on
+//      common noise draws (16 shots, fewer on a small budget). Unless the request gives
+//      the tip height, the 3 best by window probability are
+//      varied: draw (-0.3), centre and follow (+0.3) at 0.7, 1 and 1.8 times
 //      their cue speed (kept 3 sigma of speed noise inside their speed
-//      window), each variant's aim solved and its windows found on the exact
-//      simulation as in step 3 (the speed held), and each variant that pots
-//      screened on the same draws (common random numbers: the comparisons
-//      are paired). Variants stop while a quarter of the budget is left.
-//      The best of all by the screen is then measured with the
-//      rest of the budget on fresh draws (the noise stream simulate_batch
-//      draws for the request's seed, so its estimate carries no selection
-//      bias), standard error sqrt(p (1 - p) / N).
-// A shot succeeds only when the target drops in the intended pocket, the
-// cue ball's first contact is the target (for a combination: ball A) and the
-// cue ball is not pocketed (a scratch); a miscue or an event-limit failure
-// is a failure. Kinds are tried only when asked for: the default is direct
+//      window), one more speed step where the best was at an end, and side
+//      0.2 either way at the best (unless the request gives a
+//      side), each variant's aim solved and windows found as in step 3 (its
+//      speed held). The 3 best of all by window probability (in
+//      steps of 0.02, then by the brief screen), with the best by the brief
+//      screen among them, are screened on the same draws (common random
+//      numbers: the comparison is paired) with a fifteenth of the budget each (at most 200); the
+//      best is then measured with the rest of the budget (at least a fifth)
+//      on fresh draws (the noise stream simulate_batch draws for the
+//      request's seed, so its estimate carries no selection bias), standard
+//      error sqrt(p (1 - p) / N).
+// A noise-free strike pots only when the target drops in the intended
+// pocket, the cue ball's first contact is the target (for a combination: ball
+// A) and the cue ball is not pocketed (a scratch). A noisy shot succeeds on
+// the same terms, except that a request without a pocket (any pocket, as in
+// 9-ball) counts the target dropping in any pocket; a miscue or an
+// event-limit failure is a failure. Kinds are tried only when asked for: the default is direct
 // and bank (the kicks and combinations of a full table add about as many
 // candidates again; see the README's "Planning a 2D shot").
 //
 // The first strike of a candidate is centre ball unless the request gives
 // the tip height; a centre-ball strike that misses or scratches (a
 // straight-in's cue ball following the object ball in) is tried again with
-// draw, then follow; the spin and speed variants of step 4 follow. It is
+// draw, then follow; the spin, speed and side variants of step 4 follow. It is
 // level unless the cue must be raised to clear a ball or the rail; the butt
 // of a level cue is below the rail, so most strikes come out at 2 degrees.
 // Deterministic: the same scenario, request and seed give the same plan bit

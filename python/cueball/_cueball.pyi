@@ -1074,7 +1074,7 @@ def plan_shot(
     """The strike that pots ball `target` (cueball plan-shot): the dict of `plan-shot --json`
     (cue in degrees and ball radii, kind ('direct', 'bank' off one or two cushions, 'kick',
     'combination'), pocket, cushion, cushions, intermediate_ball, success_probability and its standard error,
-    aim_window_deg, speed_window m/s, robot, predicted, alternatives, rejected) and `scenario`,
+    window_probability, aim_window_deg, speed_window m/s, robot, predicted, alternatives, rejected) and `scenario`,
     the Scenario with the planned cue. noise 'tournament', 'none', 'scenario' or a dict of sigmas
     as the scenario's "noise" (speed m/s, aim_deg, elevation_deg, side, height ball radii); raises
     NoFeasibleShot when nothing pots. position=True plays for position (plan-shot --position):

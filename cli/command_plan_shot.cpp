@@ -233,11 +233,13 @@ Command add_plan_shot_command(CLI::App& app) {
   CLI::App* sub = app.add_subcommand(
       "plan-shot",
       "Plans the strike that pots ball --ball: ghost-ball (direct, combination) and mirror-point (bank\n"
-      "off one or two cushions, kick) geometry for a first aim, blocked paths and an obstructed cue\n"
-      "skipped, the aim then corrected on the exact simulation (throw, the cloth, the cushions), the\n"
-      "aim and speed windows that still pot found, and the success probability estimated from noisy\n"
-      "simulations (--noise tournament: sigma 0.125 deg aim, 0.1 deg elevation, 0.075 m/s speed, 0.5\n"
-      "mm tip). A pot needs the ball in the intended pocket, the cue ball touching it first (for a\n"
+      "off one or two cushions, kick) geometry for a first aim, and a scan of aims for pots geometry\n"
+      "misses; blocked paths and an obstructed cue skipped, the aim then corrected on the exact\n"
+      "simulation (throw, the cloth, the cushions), the aim and speed windows that still pot found,\n"
+      "spin and speed variants ranked by the chance that the noise keeps them inside their windows, and\n"
+      "the success probability estimated from noisy simulations (--noise tournament: sigma 0.125 deg\n"
+      "aim, 0.1 deg elevation, 0.075 m/s speed, 0.5 mm tip). A pot needs the ball in the intended pocket\n"
+      "(under the noise, with --pocket any, in any pocket), the cue ball touching it first (for a\n"
       "combination: the intermediate ball) and not pocketed. The scenario's own cue strike is\n"
       "ignored. --scenario-out writes the scenario with the planned cue (cueball simulate\n"
       "replays it); --html the viewer page of the planned shot with its aim line and ghost ball. The\n"

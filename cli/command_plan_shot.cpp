@@ -263,8 +263,9 @@ Command add_plan_shot_command(CLI::App& app) {
                   "Write the viewer page of the planned shot (noise-free) with the aim line and ghost ball");
   sub->add_flag("--json", flags->json, "Print one JSON object");
   sub->add_flag("--position", flags->position,
-                "Play for position: among the shots that pot (centre ball, draw, follow), the one that leaves\n"
-                "the best next shot, scored P(this pot) x P(next pot) on the table each leaves");
+                "Play for position: among the shots that pot (planned freely and at centre ball, draw,\n"
+                "follow), the one that leaves the best next shot, scored P(this pot) x P(next pot) on the\n"
+                "table each leaves");
   sub->add_option("--next", flags->next, "With --position: id of the next ball (default: the lowest id left)");
   sub->add_option("--next-simulations", flags->next_simulations,
                   "With --position: engine runs of each next-shot plan, [500, 1e6]")

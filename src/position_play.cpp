@@ -70,12 +70,15 @@ PositionPlanResult plan_shot_for_position(const Scenario& table_state, const Pos
     result.next_target = default_next_target(s, cue_id, q.shot.target);
   }
 
-  const std::vector<double> heights =
-      q.shot.height ? std::vector<double>{*q.shot.height} : std::vector<double>{0.0, -0.3, 0.3};
+  // The free plan (its spin, speed and side variants) first, then centre
+  // ball, draw and follow; the request's tip height alone when it gives one.
+  const std::vector<std::optional<double>> heights =
+      q.shot.height ? std::vector<std::optional<double>>{*q.shot.height}
+                    : std::vector<std::optional<double>>{std::nullopt, 0.0, -0.3, 0.3};
   std::vector<Candidate> candidates;
   int simulations = 0;
   std::optional<NoFeasibleShot> infeasible;
-  for (double height : heights) {
+  for (const std::optional<double>& height : heights) {
     PlanRequest at_height = q.shot;
     at_height.height = height;
     try {

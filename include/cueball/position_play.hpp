@@ -2,10 +2,11 @@
 // prefer the one that leaves the cue ball where the next target has the
 // highest success probability. A one-shot lookahead over plan_shot():
 //
-//   1. The shot is planned at each tip height tried (centre ball, draw -0.3,
-//      follow +0.3 ball radii; only the request's when it gives one): each
-//      plan_shot() call returns its best shot and its ranked alternatives,
-//      every one with the noise-free end of every ball (PlannedShot::predicted).
+//   1. The shot is planned freely (plan_shot()'s own spin, speed and side
+//      variants) and at each tip height (centre ball, draw -0.3, follow +0.3
+//      ball radii); only at the request's when it gives one: each plan_shot()
+//      call returns its best shot and its ranked alternatives, every one with
+//      the noise-free end of every ball (PlannedShot::predicted).
 //   2. For each of those candidates (those whose success probability is at
 //      least kPositionKeepFraction of the best's, at most kMaxPositionCandidates,
 //      best first), the table it leaves is built: the balls not pocketed, at

@@ -146,6 +146,17 @@ struct CushionImpactOptions {
   int paper_steps = 5000;
   /// Fill CushionImpactResult::history (allocates; off in simulation loops).
   bool record_history = false;
+  /// `exact` on a rolling ball (no slip at C, a simulator's usual cushion hit):
+  /// look the answer up in the table that cushion_impact_model() builds once
+  /// per process for its constants (exact solves precomputed as piecewise
+  /// Chebyshev interpolants in the one variable such an impact depends on;
+  /// fitted to 3e-9 of the largest incoming velocity; ~0.1 us instead of
+  /// ~2-3 us). The Runge-Kutta solve instead when false, when the history is
+  /// recorded, for a model not made by cushion_impact_model(), and where the
+  /// table has no fitted piece (near a change in the sequence of slip and
+  /// stick phases; |xG' - cos(theta) R w_z / (1 + sin(theta))| > 50 yG').
+  /// solver_steps is 0 for a looked-up answer.
+  bool rolling_table = true;
 };
 
 /// The state of the impact at one value of the normal impulse P_I.

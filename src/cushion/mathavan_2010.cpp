@@ -130,6 +130,7 @@ CushionImpactModel cushion_impact_model(const Parameters& table, const CushionPa
   m.restitution = cushion.restitution;
   m.sin_theta = cushion_sin_theta(cushion, table.ball);
   validate(m);
+  mathavan_2010::prepare_rolling_table(mathavan_2010::coefficients(m));  // once per process and constants
   return m;
 }
 
@@ -165,9 +166,12 @@ CushionImpactResult solve_cushion_impact_unchecked(const IncomingBall& ball, con
 
   CushionImpactResult r;
   std::vector<CushionImpactSample>* history = options.record_history ? &r.history : nullptr;
-  const Outcome o = options.solver == CushionSolver::paper
-                        ? mathavan_2010::solve_paper(k, y0, options.paper_steps, units, history)
-                        : mathavan_2010::solve_exact(k, y0, units, history);
+  Outcome o;
+  if (options.solver == CushionSolver::paper) {
+    o = mathavan_2010::solve_paper(k, y0, options.paper_steps, units, history);
+  } else if (history != nullptr || !options.rolling_table || !mathavan_2010::solve_rolling(k, y0, o)) {
+    o = mathavan_2010::solve_exact(k, y0, units, history);
+  }
   const State& y = o.final_state;
   const double spin = units.speed / units.radius;
   r.velocity = {y[kVx] * units.speed, y[kVy] * units.speed, 0.0};

@@ -44,6 +44,7 @@
 #include <array>
 #include <cmath>
 #include <cstddef>
+#include <cstdint>
 #include <vector>
 
 #include "cueball/cushion_impact.hpp"
@@ -184,6 +185,12 @@ struct Outcome {
   double compression_work = 0.0;
   int steps = 0;
   int events = 0;
+  // The kinds of the events in order and the contact modes chosen at them,
+  // hashed: two impacts with equal signatures went through the same sequence
+  // of slip and stick phases (mathavan_2010_rolling.cpp tells the smooth
+  // pieces of its table apart by it).
+  std::uint64_t signature = 0;
+  void note(unsigned code) { signature = (signature ^ code) * 0x100000001b3ULL; }
 };
 
 // The paper's explicit Euler scheme in P_I with N = n_steps (section 3.4):
@@ -191,8 +198,35 @@ struct Outcome {
 Outcome solve_paper(const Coefficients& k, State y, int n_steps, const Units& units,
                     std::vector<CushionImpactSample>* history);
 
+// Local error per Runge-Kutta step of the exact solver, relative to the
+// largest initial velocity: the default keeps outcomes within ~5e-8 of the
+// N -> infinity limit of the paper's scheme (mathavan_2010_exact.cpp).
+inline constexpr double kExactTolerance = 1e-7;
+
 // The event-driven solver without discretisation error: mathavan_2010_exact.cpp.
+// `tolerance` below the default only for reference solutions (building and
+// checking the rolling-ball table).
 Outcome solve_exact(const Coefficients& k, const State& y0, const Units& units,
-                    std::vector<CushionImpactSample>* history);
+                    std::vector<CushionImpactSample>* history, double tolerance = kExactTolerance);
+
+// A rolling ball's impact from a table of the exact solver's answers, built
+// once per process and set of constants: mathavan_2010_rolling.cpp.
+// prepare_rolling_table() builds it (allocates; tens of ms, once);
+// solve_rolling() fills `out` and returns true for a rolling ball inside the
+// table's fitted pieces, else returns false and leaves `out` alone (the
+// caller then solves by solve_exact). Thread-safe; solve_rolling() does not
+// allocate.
+void prepare_rolling_table(const Coefficients& k);
+bool solve_rolling(const Coefficients& k, const State& y0, Outcome& out);
+
+struct RollingTableStats {
+  bool built = false;
+  double beta_max = 0.0;        // the table covers beta = atan(xi) in [-beta_max, beta_max]
+  int fitted_pieces = 0;
+  int fallback_pieces = 0;
+  double fallback_width = 0.0;  // total width of the pieces left to the exact solver, rad
+  int solves = 0;               // exact solves it took to build
+};
+RollingTableStats rolling_table_stats(const Coefficients& k);
 
 }  // namespace cueball::mathavan_2010

@@ -146,13 +146,20 @@ struct CushionImpactOptions {
   int paper_steps = 5000;
   /// Fill CushionImpactResult::history (allocates; off in simulation loops).
   bool record_history = false;
+  /// `exact`: the local error tolerance of a Runge-Kutta step, relative to the
+  /// largest incoming velocity (R x spin included), in [1e-11, 1e-7]. The
+  /// default 1e-7 is what the accuracy goal (1e-6 of that velocity from the
+  /// N -> infinity limit of `paper`) is checked with; smaller values are for
+  /// reference solutions and cost more steps.
+  double exact_tolerance = 1e-7;
   /// `exact` on a rolling ball (no slip at C, a simulator's usual cushion hit):
   /// look the answer up in the table that cushion_impact_model() builds once
   /// per process for its constants (exact solves precomputed as piecewise
   /// Chebyshev interpolants in the one variable such an impact depends on;
   /// fitted to 3e-9 of the largest incoming velocity; ~0.1 us instead of
   /// ~2-3 us). The Runge-Kutta solve instead when false, when the history is
-  /// recorded, for a model not made by cushion_impact_model(), and where the
+  /// recorded, when exact_tolerance is not the default, for constants that
+  /// cushion_impact_model() has not seen in this process, and where the
   /// table has no fitted piece (near a change in the sequence of slip and
   /// stick phases; |xG' - cos(theta) R w_z / (1 + sin(theta))| > 50 yG').
   /// solver_steps is 0 for a looked-up answer.

@@ -68,6 +68,11 @@ void validate_options(const CushionImpactOptions& options) {
   if (options.solver != CushionSolver::exact && options.solver != CushionSolver::paper) {
     throw InvalidArgument("solver", "solver is not a CushionSolver value");
   }
+  static_assert(CushionImpactOptions{}.exact_tolerance == mathavan_2010::kExactTolerance);
+  if (!(options.exact_tolerance >= 1e-11 && options.exact_tolerance <= mathavan_2010::kExactTolerance)) {
+    reject("exact_tolerance", options.exact_tolerance, "[1e-11, 1e-7]",
+           "local error per Runge-Kutta step of the exact solver, relative to the largest incoming velocity");
+  }
   if (options.paper_steps < 1 || options.paper_steps > 1'000'000'000) {
     reject("paper_steps", options.paper_steps, "[1, 1e9]", "N, Euler steps per (1 + e_e) M yG'(0) (section 3.4)");
   }
@@ -169,8 +174,9 @@ CushionImpactResult solve_cushion_impact_unchecked(const IncomingBall& ball, con
   Outcome o;
   if (options.solver == CushionSolver::paper) {
     o = mathavan_2010::solve_paper(k, y0, options.paper_steps, units, history);
-  } else if (history != nullptr || !options.rolling_table || !mathavan_2010::solve_rolling(k, y0, o)) {
-    o = mathavan_2010::solve_exact(k, y0, units, history);
+  } else if (history != nullptr || !options.rolling_table || options.exact_tolerance != mathavan_2010::kExactTolerance ||
+             !mathavan_2010::solve_rolling(k, y0, o)) {
+    o = mathavan_2010::solve_exact(k, y0, units, history, options.exact_tolerance);
   }
   const State& y = o.final_state;
   const double spin = units.speed / units.radius;

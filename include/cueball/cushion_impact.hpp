@@ -40,7 +40,11 @@
 //          approach to zero is finished in logarithmic slip time. A head-on
 //          impact stays exactly in its plane and is piecewise linear in P_I.
 //          About 3 us per impact, some 55x faster than `paper` at N = 5000
-//          (bench_cushion_impact).
+//          (bench_cushion_impact). A rolling ball's impact depends on one
+//          number (its incidence and sidespin combined), and is looked up in
+//          a table of this solver's answers that cushion_impact_model()
+//          builds once per process and set of constants (~0.2 us per impact;
+//          CushionImpactOptions::rolling_table).
 //
 // Solving allocates nothing unless the history is requested: validate the
 // constants once with cushion_impact_model() and call solve_cushion_impact()

@@ -18,23 +18,23 @@
 // of xi = s_I,x / (1 + s) = xG' - c u_z / (1 + s), the incidence and the
 // sidespin in one number, and scales with V (rate independence).
 //
-// The table. Over beta = atan(xi) in [0, atan(50)] the outputs (the
-// change of xG', yG', u_x, u_y, u_z; P_I^c, P_I^f, W^c) are smooth except
-// where the impact's sequence of slip and stick phases changes (a slip that
-// reaches zero, a contact that sticks: kinks); negative xi is the mirror
-// image X -> -X of positive xi (xG', u_y, u_z change sign), and xi = 0
-// exactly (head-on, no sidespin) is left to the exact solver. A scan of the exact solver's
-// event signature locates those changes (bisected to 1e-12 rad); between
-// them, Chebyshev interpolants of degree 15 are fitted on the exact solver
-// at tolerance 1e-10 (~1e-9 of the limit, against ~5e-8 to ~1e-6 for the
-// default 1e-7) and each is checked against the solver between its nodes
-// and at its ends, halving the piece until the check holds to
-// 2e-8 x max(1, |xi|) (in units of V, i.e. relative to the largest incoming
-// velocity) with the same signature everywhere. What cannot be fitted in
-// pieces wider than 2e-4 rad (the neighbourhood of a kink; near xi = 0,
-// where a slip closes in on zero and just misses it, the solver's answer is
-// not smooth to 2e-8), and |xi| > 50 (grazing, or sidespin beyond ~50 V/R),
-// is left to the exact solver.
+// The table. Over beta = atan(xi) in [0, atan(50)] the outputs (the change
+// of xG', yG', u_x, u_y, u_z; P_I^c, P_I^f, W^c) are smooth except where the
+// impact's sequence of slip and stick phases changes (a slip that reaches
+// zero, a contact that sticks: kinks); negative xi is the mirror image
+// X -> -X of positive xi (xG', u_y, u_z change sign), and xi = 0 exactly
+// (head-on, no sidespin) is left to the exact solver. A scan of the exact
+// solver's event signature locates those changes (bisected to 1e-12 rad);
+// between them, Chebyshev interpolants of degree 15 are fitted on the exact
+// solver at tolerance 1e-10 (within ~1e-8 of the solver at 1e-11 on the
+// scans below, where the default 1e-7 is up to 7e-6 off) and each is
+// checked against the solver between its nodes and at its ends, halving the
+// piece until the check holds to 2e-8 x max(1, |xi|) (in units of V, i.e.
+// relative to the largest incoming velocity) with the same signature
+// everywhere. What cannot be fitted in pieces wider than 2e-4 rad (the
+// neighbourhood of a kink; near xi = 0, where a slip closes in on zero and
+// just misses it, the solver's answer is not smooth to 2e-8), and |xi| > 50
+// (grazing, or sidespin beyond ~50 V/R), is left to the exact solver.
 //
 // Measured (a scratch scan, 20,000 random rolling balls per set of
 // constants, alpha in [0.5, 90] deg, R w_z in [-3, 3] V, against the exact
@@ -42,14 +42,24 @@
 // velocity and 1.5e-6 deg of rebound angle over the carom and snooker
 // cushions, the translator's fit, mu_w = 0.43, sin(theta) = 0.3 and 0.5, and
 // e_e = 0.8 with mu_s = 0.5, mu_w = 0.3; left to the exact solver: at most
-// 7e-3 rad of the 3.1 rad of beta. tests/test_cushion_impact.cpp checks it
-// against the Runge-Kutta solve and the paper scheme's limit.
+// 4e-3 rad of the 1.55 rad of beta. Where the two disagreed more (up to 7e-4
+// with sin(theta) = 0.6, mu_s = 0.3, mu_w = 0.7, e_e = 0.9, grazing with
+// large sidespin), the Richardson limit of the paper scheme sided with the
+// table (1e-7): the exact solver's slip thresholds scale with the largest
+// velocity, which is then large against the slips. The Runge-Kutta solve at
+// the default tolerance is itself up to 7e-6 off the limit on rolling balls
+// near xi = 0 with the snooker constants (tests/test_cushion_impact.cpp,
+// CushionRollingTable.*, which check the table against both references).
 //
 // Cost: built once per process and per set of constants (mu_w, mu_s, e_e,
-// sin(theta)) by cushion_impact_model(), 1e3-2.5e3 exact solves (10-50 ms;
-// at most kMaxSolves); at most kMaxTables sets are kept (the rest solve
-// every impact by the ODE). A lookup is an arctangent, a binary search and
-// eight Chebyshev sums.
+// sin(theta)) by cushion_impact_model(): 550-1150 exact solves for the sets
+// above (1-35 ms), at most kMaxSolves (5,000-5,900 and 130-280 ms for mu_s =
+// 1 with mu_w = tan(theta), and for sin(theta) = 0.6 with mu_w = 0.7); at
+// most kMaxTables sets are kept (the rest solve every impact by the ODE, so
+// the answer for a 17th set differs, by the Runge-Kutta solve's error, from
+// what a fresh process would give). A lookup is an arctangent, a binary search and eight Chebyshev
+// sums: ~730 instructions against ~19,800 for the Runge-Kutta solve
+// (callgrind, the rolling grid of bench_cushion_impact).
 //
 // Sources: S. Mathavan, M. R. Jackson, R. M. Parkin, Proc. IMechE Part C 224
 // (2010), equations (12), (13), (16) as numbered there. Chebyshev
@@ -81,10 +91,8 @@ constexpr int kScan = 512;             // signature scan of [0, beta_max]
 constexpr double kBoundaryWidth = 1e-12;  // a change of signature is located to this (rad)
 constexpr double kMinPiece = 2e-4;     // narrower pieces are left to the exact solver (rad)
 constexpr std::size_t kMaxTables = 16;
-// Exact solves a table may cost (~10-20 us each); past it, what is left is
-// left to the exact solver. Measured: the carom cushion 1.1e3, the paper's
-// snooker fit 1.5e3, the translator's fit 1.8e3, mu_w = 0.43 1.5e3,
-// e_e = 0.8 with mu_s = 0.5 and mu_w = 0.3 2.3e3.
+// Exact solves a table may cost (~5-50 us each); past it, what is left is
+// left to the exact solver (see the measurements above).
 constexpr int kMaxSolves = 6000;
 
 // A rolling ball's slip at C below this (x the velocity scale) is zero: the

@@ -3,7 +3,9 @@
 // validate), the incoming ball of section 3.1, and solving: validation of the
 // inputs, the scaling to the solvers' units and back, and the choice of
 // solver, `paper` (mathavan_2010_euler.cpp) or `exact`
-// (mathavan_2010_exact.cpp); what they share is in mathavan_2010_equations.hpp.
+// (mathavan_2010_exact.cpp, and for a rolling ball its answers tabulated by
+// mathavan_2010_rolling.cpp, built by cushion_impact_model()); what they
+// share is in mathavan_2010_equations.hpp.
 //
 // Sources: S. Mathavan, M. R. Jackson, R. M. Parkin, Proc. IMechE Part C 224
 // (2010), sections 3.1 and 3.5 and equations (3d), (7), (16) as numbered

@@ -1,7 +1,8 @@
 // Mathavan, Jackson & Parkin (2010), the ball-cushion impact: what its two
 // solvers share (an internal header of the library, not installed). The
 // solvers are mathavan_2010_euler.cpp (`paper`, the authors' explicit Euler
-// scheme of section 3.4) and mathavan_2010_exact.cpp (`exact`, event-driven);
+// scheme of section 3.4) and mathavan_2010_exact.cpp (`exact`, event-driven;
+// mathavan_2010_rolling.cpp tabulates its answers for rolling balls);
 // mathavan_2010.cpp is the public API of cueball/cushion_impact.hpp and
 // chooses between them. Here: the coefficients, the state and its layout,
 // the slip velocities, the rate equations, the scaling to and from SI and

@@ -1004,12 +1004,9 @@ double locate(G g, double g_lo, double g_hi) {
 
 // Accuracy and effort of the exact solver, relative to the velocity scale
 // (the largest initial velocity component, in units of the normal speed).
+// The local error per Runge-Kutta step is solve_exact's `tolerance`
+// (kExactTolerance by default, mathavan_2010_equations.hpp).
 struct ExactLimits {
-  // Local error per Runge-Kutta step. 1e-7 keeps outcomes within ~5e-8 m/s
-  // (R x spin within ~2e-7) of the N -> infinity limit of the paper's scheme
-  // over the benchmark grid (BM_CushionAccuracy), 5x inside the 1e-6 goal;
-  // 3e-8 was 3x tighter and cost ~20% more steps per impact in a break.
-  static constexpr double tolerance = kExactTolerance;
   static constexpr double slaved_slip = 1e-3;   // a small slip may be slaved below this
   static constexpr double small_slip = 1e-6;    // a free slip closing in on zero is finished below this
   static constexpr double tiny_slip = 1e-10;    // a slip this small is zero

@@ -18,6 +18,7 @@
 #include <limits>
 #include <random>
 #include <string>
+#include <thread>
 #include <tuple>
 #include <utility>
 #include <vector>
@@ -714,14 +715,16 @@ TEST(CushionImpactConvergence, SlipHoveringNearZeroOnALowCushionIsSetToZero) {
   // that hovers is set to zero and the modes are chosen afresh. The outcome
   // is as close to the Richardson limit as that of its neighbours, which do
   // not hover (~2e-6 here: near head-on the slip reversal inside an Euler
-  // step spoils Richardson, as noted above).
+  // step spoils Richardson, as noted above; at alpha 85 the solve at
+  // tolerance 1e-11 is 3.03e-6 from that estimate, and the default within
+  // 3e-8 of it).
   CushionParameters low = paper_fit();
   low.contact_height = radius() * 1.2;
   for (const double a : {84.0, 85.0, 86.0}) {
     const IncomingBall b = ball(1.0, a, 0.5, 0.0);
     const CushionImpactResult exact = cushion_impact(b, table(), low);
     const CushionImpactResult limit = richardson_limit(b, low);
-    EXPECT_LT(gap(exact, limit), 3e-6) << "alpha " << a;
+    EXPECT_LT(gap(exact, limit), 3.5e-6) << "alpha " << a;
     EXPECT_LT(exact.solver_steps, 400) << "alpha " << a;
   }
 }
@@ -816,18 +819,21 @@ TEST(CushionImpact, UncheckedSolveIsTheValidatedSolveWithoutTheChecks) {
 TEST(CushionImpact, ExactSolverTakesFewSteps) {
   // The cost of an impact is its Runge-Kutta steps (see bench_cushion_impact):
   // a guard against a change that multiplies them while the answers stay right.
+  // (Rolling balls solved too, not looked up in their table.)
   double steps = 0.0;
   int count = 0;
   const CushionImpactModel m = cushion_impact_model(table(), paper_fit());
+  CushionImpactOptions o;
+  o.rolling_table = false;
   for (int a = 1; a <= 90; ++a) {
     for (const double kt : {-1.0, 0.0, 1.0, 2.0}) {
       for (const double ks : {-2.0, 0.0, 2.0}) {
-        steps += solve_cushion_impact(ball(1, a, kt, ks), m).solver_steps;
+        steps += solve_cushion_impact(ball(1, a, kt, ks), m, o).solver_steps;
         ++count;
       }
     }
   }
-  EXPECT_LT(steps / count, 16.0);
+  EXPECT_LT(steps / count, 16.0) << steps / count;
 }
 
 TEST(CushionImpact, SolvingAValidatedModelDoesNotAllocate) {
@@ -836,6 +842,9 @@ TEST(CushionImpact, SolvingAValidatedModelDoesNotAllocate) {
   const CushionImpactModel m = cushion_impact_model(table(), paper_fit());
   const IncomingBall balls[] = {ball(1, 90, 1, 0), ball(1, 44, 0, 1), ball(2, 45, 1.5, 2), ball(1, 80, 1, -2),
                                 ball(1, 30, 0.5, 0)};
+  // The first rolling ball with these constants builds their rolling-ball
+  // table (allocates, once per table).
+  solve_cushion_impact(balls[3], m);
   for (const CushionSolver s : kSolvers) {
     const CushionImpactOptions o = options(s);
     for (const IncomingBall& b : balls) {
@@ -877,8 +886,8 @@ TEST(CushionImpact, HistoryRunsFromTheIncomingToTheOutgoingState) {
 // ------------------------------------------------------------------ the rolling-ball table
 
 // A rolling ball's impact depends on one number (mathavan_2010_rolling.cpp),
-// and `exact` looks it up in a table that cushion_impact_model() builds
-// once per set of constants. The table must carry the exact solver's
+// and `exact` looks it up in a table built on the first such impact with
+// each set of constants. The table must carry the exact solver's
 // accuracy: it is checked against the exact solver at its tightest
 // tolerance, 1e-11 (the reference, ~1e-9 of the limit where the impact is
 // smooth), and against the paper scheme's N -> infinity limit.
@@ -979,7 +988,7 @@ TEST(CushionRollingTable, HoldsTheLimitWhereTheSlipAtTheCushionNearlyVanishes) {
   EXPECT_LT(gap(r, limit), 1e-7 * largest_velocity(b));
 }
 
-TEST(CushionRollingTable, IsUsedForRollingBallsOfAPreparedModelOnly) {
+TEST(CushionRollingTable, IsUsedForEveryRollingBallAtTheDefaultTolerance) {
   const CushionImpactModel m = cushion_impact_model(table(), paper_fit());
   const IncomingBall rolling = ball(1.2, 40, 1.0, 0.7);
   const CushionImpactResult looked_up = solve_cushion_impact(rolling, m);
@@ -987,9 +996,9 @@ TEST(CushionRollingTable, IsUsedForRollingBallsOfAPreparedModelOnly) {
   EXPECT_GE(looked_up.solver_events, 2);  // the end of compression and of restitution at least
   EXPECT_GT(looked_up.total_impulse, looked_up.compression_impulse);
   EXPECT_LT(looked_up.compression_work, 0.0);
-  // The Runge-Kutta solve instead: asked for, with the history, at another
-  // tolerance; for a sliding ball; for exactly head-on without sidespin;
-  // for constants cushion_impact_model() has not seen.
+  // The Runge-Kutta solve instead: asked for, with the history, at a
+  // tighter tolerance; for a sliding ball; for exactly head-on without
+  // sidespin.
   CushionImpactOptions no_table;
   no_table.rolling_table = false;
   CushionImpactOptions history;
@@ -1001,14 +1010,100 @@ TEST(CushionRollingTable, IsUsedForRollingBallsOfAPreparedModelOnly) {
     EXPECT_GT(r.solver_steps, 0);
     EXPECT_LT(gap(r, looked_up), 1e-6 * largest_velocity(rolling));
   }
+  CushionImpactOptions looser;
+  looser.exact_tolerance = 1e-7;
+  EXPECT_EQ(solve_cushion_impact(rolling, m, looser).solver_steps, 0);
   EXPECT_GT(solve_cushion_impact(ball(1.2, 40, 0.5, 0.7), m).solver_steps, 0);
   IncomingBall head_on;
   head_on.velocity = {0.0, 1.0, 0.0};
   head_on.angular_velocity = {-1.0 / radius(), 0.0, 0.0};
   EXPECT_GT(solve_cushion_impact(head_on, m).solver_steps, 0);
+  // Constants no model was made for: the table is built on first use.
   CushionImpactModel unseen = m;
   unseen.cushion_friction = 0.1234;
-  EXPECT_GT(solve_cushion_impact(rolling, unseen).solver_steps, 0);
+  EXPECT_EQ(solve_cushion_impact(rolling, unseen).solver_steps, 0);
+}
+
+// The answer depends on the inputs and options alone: not on which tables
+// the process has built, evicted (the cache keeps 16) or is building on
+// another thread.
+std::vector<CushionImpactResult> rolling_answers(const std::vector<CushionImpactModel>& models) {
+  std::vector<CushionImpactResult> out;
+  for (const CushionImpactModel& m : models) {
+    for (const auto& [a, ks] : {std::pair{25.0, 0.4}, std::pair{55.0, -1.2}, std::pair{80.0, 2.0}}) {
+      out.push_back(solve_cushion_impact(ball(1.1, a, 1.0, ks), m));
+    }
+  }
+  return out;
+}
+
+void expect_identical(const std::vector<CushionImpactResult>& a, const std::vector<CushionImpactResult>& b) {
+  ASSERT_EQ(a.size(), b.size());
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    EXPECT_EQ(a[i].velocity.x, b[i].velocity.x) << i;
+    EXPECT_EQ(a[i].velocity.y, b[i].velocity.y) << i;
+    EXPECT_EQ(a[i].angular_velocity.x, b[i].angular_velocity.x) << i;
+    EXPECT_EQ(a[i].angular_velocity.y, b[i].angular_velocity.y) << i;
+    EXPECT_EQ(a[i].angular_velocity.z, b[i].angular_velocity.z) << i;
+    EXPECT_EQ(a[i].total_impulse, b[i].total_impulse) << i;
+    EXPECT_EQ(a[i].solver_steps, b[i].solver_steps) << i;
+  }
+}
+
+TEST(CushionRollingTable, AnswersDoNotDependOnWhatTheProcessDidBefore) {
+  // 18 sets of constants (mu_w 0.19-0.36), more than the cache keeps: the
+  // first set's table is evicted and rebuilt, identically.
+  std::vector<CushionImpactModel> models;
+  for (int i = 0; i < 18; ++i) {
+    CushionParameters c = paper_fit();
+    c.friction = 0.19 + 0.01 * i;
+    models.push_back(cushion_impact_model(table(), c));
+  }
+  const std::vector<CushionImpactModel> first(models.begin(), models.begin() + 1);
+  const std::vector<CushionImpactResult> before = rolling_answers(first);
+  EXPECT_EQ(before[0].solver_steps, 0);
+  const std::vector<CushionImpactResult> all = rolling_answers(models);
+  expect_identical(rolling_answers(first), before);
+  // Four threads at once, each through the sets in its own order.
+  std::vector<std::vector<CushionImpactResult>> by_thread(4);
+  std::vector<std::thread> threads;
+  for (std::size_t t = 0; t < by_thread.size(); ++t) {
+    threads.emplace_back([&, t] {
+      std::vector<CushionImpactModel> order = models;
+      std::rotate(order.begin(), order.begin() + static_cast<std::ptrdiff_t>(5 * t), order.end());
+      std::vector<CushionImpactResult> r = rolling_answers(order);
+      std::rotate(r.rbegin(), r.rbegin() + static_cast<std::ptrdiff_t>(15 * t), r.rend());  // back to the first order
+      by_thread[t] = std::move(r);
+    });
+  }
+  for (std::thread& t : threads) t.join();
+  for (const auto& r : by_thread) expect_identical(r, all);
+}
+
+TEST(CushionImpact, DefaultToleranceKeepsTheGoalWhereASlipNearlyVanishes) {
+  // A sliding ball (out of a 20,000-impact random scan, snooker constants)
+  // on which the Runge-Kutta solve at 1e-7, the default before, was 7.4e-6
+  // of the largest incoming velocity from the solve at 1e-11: the default
+  // must be within the 1e-6 goal of that reference and of the paper scheme's
+  // Richardson limit.
+  IncomingBall b;
+  b.velocity = {1.6707695497711776, 1.4920476515635424, 0.0};
+  b.angular_velocity = {-51.756413231526714, 57.95595009448413, 95.073581980387772};
+  const CushionImpactModel m = cushion_impact_model(table(), paper_fit());
+  const CushionImpactResult r = solve_cushion_impact(b, m);
+  const CushionImpactResult ref = solve_cushion_impact(b, m, reference_options());
+  // (The Richardson estimate from N = 1e5, 2e5 is itself 1.8e-6 m/s from
+  // the reference here, 0.7 of the goal: the spin is large.)
+  const double goal = 1e-6 * largest_velocity(b);
+  const CushionImpactResult limit = richardson_limit(b);
+  EXPECT_LT(gap(r, ref), 0.1 * goal);
+  EXPECT_LT(gap(r, limit), goal);
+  // What this test is about: the old default is beyond the goal from both.
+  CushionImpactOptions old_default;
+  old_default.exact_tolerance = 1e-7;
+  const CushionImpactResult old = solve_cushion_impact(b, m, old_default);
+  EXPECT_GT(gap(old, ref), 5.0 * goal);
+  EXPECT_GT(gap(old, limit), 5.0 * goal);
 }
 
 TEST(CushionRollingTable, MirrorImagesAreMirrored) {

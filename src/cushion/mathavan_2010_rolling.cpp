@@ -51,13 +51,15 @@
 // near xi = 0 with the snooker constants (tests/test_cushion_impact.cpp,
 // CushionRollingTable.*, which check the table against both references).
 //
-// Cost: built once per process and per set of constants (mu_w, mu_s, e_e,
-// sin(theta)) by cushion_impact_model(): 550-1150 exact solves for the sets
-// above (1-35 ms), at most kMaxSolves (5,000-5,900 and 130-280 ms for mu_s =
-// 1 with mu_w = tan(theta), and for sin(theta) = 0.6 with mu_w = 0.7); at
-// most kMaxTables sets are kept (the rest solve every impact by the ODE, so
-// the answer for a 17th set differs, by the Runge-Kutta solve's error, from
-// what a fresh process would give). A lookup is an arctangent, a binary search and eight Chebyshev
+// Cost: built on the first rolling ball (at the default tolerance, with
+// rolling_table on) per set of constants (mu_w, mu_s, e_e, sin(theta)), not
+// before: 550-1150 exact solves for the sets above (1-35 ms), at most
+// kMaxSolves (5,000-5,900 and 130-280 ms for mu_s = 1 with mu_w =
+// tan(theta), and for sin(theta) = 0.6 with mu_w = 0.7). The build is
+// deterministic (the same solves in the same order), and the kMaxTables most
+// recently used tables are kept; an evicted one is rebuilt identically when
+// needed, so an answer depends on the inputs and options alone, not on what
+// the process did before. A lookup is an arctangent, a binary search and eight Chebyshev
 // sums: ~730 instructions against ~19,800 for the Runge-Kutta solve
 // (callgrind, the rolling grid of bench_cushion_impact).
 //
@@ -69,10 +71,10 @@
 // basis of the piecewise-smooth fit and of the check between the nodes).
 #include <algorithm>
 #include <array>
-#include <atomic>
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <memory>
 #include <mutex>
 #include <vector>
 
@@ -90,10 +92,13 @@ constexpr double kXiMax = 50.0;        // |xi| beyond this: the exact solver
 constexpr int kScan = 512;             // signature scan of [0, beta_max]
 constexpr double kBoundaryWidth = 1e-12;  // a change of signature is located to this (rad)
 constexpr double kMinPiece = 2e-4;     // narrower pieces are left to the exact solver (rad)
+// Tables kept (least recently used evicted; rebuilt, identically, when needed
+// again). A table is ~0.1 MB.
 constexpr std::size_t kMaxTables = 16;
 // Exact solves a table may cost (~5-50 us each); past it, what is left is
 // left to the exact solver (see the measurements above).
 constexpr int kMaxSolves = 6000;
+constexpr long kMaxSteps = 120'000;  // and their Runge-Kutta steps (the build's time)
 
 // A rolling ball's slip at C below this (x the velocity scale) is zero: the
 // simulator's rolling balls have none to rounding.
@@ -111,6 +116,7 @@ struct RollingTable {
   double mu_w, mu_s, e, s;
   double beta_max = 0.0;
   int solves = 0;  // exact solves it took to build
+  long steps = 0;  // and their Runge-Kutta steps
   std::vector<double> starts;  // pieces[i].lo, for the search
   std::vector<Piece> pieces;
 };
@@ -119,25 +125,13 @@ bool same_constants(const RollingTable& t, const Coefficients& k) {
   return t.mu_w == k.mu_w && t.mu_s == k.mu_s && t.e == k.e && t.s == k.s;
 }
 
-// Tables are immutable once published and live as long as the process.
-std::array<std::atomic<const RollingTable*>, kMaxTables> g_tables{};
-std::mutex g_build;
-
-const RollingTable* find_table(const Coefficients& k) {
-  for (const auto& slot : g_tables) {
-    const RollingTable* t = slot.load(std::memory_order_acquire);
-    if (t == nullptr) return nullptr;
-    if (same_constants(*t, k)) return t;
-  }
-  return nullptr;
-}
-
 // ------------------------------------------------------------------ building
 
 struct Sample {
   bool ok = false;
   std::uint64_t signature = 0;
   int events = 0;
+  int steps = 0;
   std::array<double, kOutputs> v{};
 };
 
@@ -154,9 +148,11 @@ Sample solve_at(const Coefficients& k, double beta) {
     out.v[7] = o.compression_work;
     out.signature = o.signature;
     out.events = o.events;
+    out.steps = o.steps;
     out.ok = std::all_of(out.v.begin(), out.v.end(), [](double x) { return std::isfinite(x); });
   } catch (...) {
     out.ok = false;  // wedged or out of steps: left to the exact solver
+    out.steps = 20000;  // counted as the solver's most (its max_attempts)
   }
   return out;
 }
@@ -181,11 +177,14 @@ struct Builder {
   Coefficients k;
   std::vector<Piece> pieces;
   int solves = 0;
+  long steps = 0;
 
-  bool spent() const { return solves >= kMaxSolves; }
+  bool spent() const { return solves >= kMaxSolves || steps >= kMaxSteps; }
   Sample solve(double beta) {
     ++solves;
-    return solve_at(k, beta);
+    const Sample s = solve_at(k, beta);
+    steps += s.steps;
+    return s;
   }
 
   void fallback(double lo, double hi) {
@@ -251,7 +250,7 @@ struct Builder {
 };
 
 RollingTable build_table(const Coefficients& k) {
-  RollingTable t{k.mu_w, k.mu_s, k.e, k.s, std::atan(kXiMax), 0, {}, {}};
+  RollingTable t{k.mu_w, k.mu_s, k.e, k.s, std::atan(kXiMax), 0, 0, {}, {}};
   Builder b{k, {}};
   const double beta_max = t.beta_max;
   auto signature_at = [&](double beta) {
@@ -297,31 +296,63 @@ RollingTable build_table(const Coefficients& k) {
   }
   t.pieces = std::move(b.pieces);
   t.solves = b.solves;
+  t.steps = b.steps;
   t.starts.reserve(t.pieces.size());
   for (const Piece& p : t.pieces) t.starts.push_back(p.lo);
   return t;
 }
 
-}  // namespace
+// ------------------------------------------------------------------ the cache
 
-void prepare_rolling_table(const Coefficients& k) {
-  if (find_table(k) != nullptr) return;
-  const std::lock_guard<std::mutex> lock(g_build);
-  if (find_table(k) != nullptr) return;
-  for (auto& slot : g_tables) {
-    if (slot.load(std::memory_order_acquire) != nullptr) continue;
-    slot.store(new RollingTable(build_table(k)), std::memory_order_release);  // lives as long as the process
-    return;
-  }
+// Tables are immutable once built. The cache holds the kMaxTables most
+// recently used, most recent last; each thread also holds the last table it
+// used, so that a table evicted meanwhile stays alive while that thread
+// looks answers up in it, and so that the usual lookup (the same constants
+// as the last impact on this thread) takes no lock. Building happens under
+// the cache's lock: a thread that needs a table another is building waits
+// for it rather than building it twice.
+using TablePtr = std::shared_ptr<const RollingTable>;
+
+struct Cache {
+  std::mutex mutex;
+  std::vector<TablePtr> tables;  // least recently used first
+  std::size_t builds = 0;
+};
+
+Cache& cache() {
+  static Cache* const c = new Cache;  // never destroyed: threads may outlive static destruction
+  return *c;
 }
+
+thread_local TablePtr t_last;
+
+// The table for k, built on first use. The pointer stays valid until this
+// thread's next call.
+const RollingTable& table_for(const Coefficients& k) {
+  if (t_last != nullptr && same_constants(*t_last, k)) return *t_last;
+  Cache& c = cache();
+  const std::lock_guard<std::mutex> lock(c.mutex);
+  const auto it = std::find_if(c.tables.begin(), c.tables.end(), [&](const TablePtr& t) { return same_constants(*t, k); });
+  if (it != c.tables.end()) {
+    std::rotate(it, it + 1, c.tables.end());  // now the most recently used
+  } else {
+    c.tables.push_back(std::make_shared<const RollingTable>(build_table(k)));
+    ++c.builds;
+    if (c.tables.size() > kMaxTables) c.tables.erase(c.tables.begin());
+  }
+  t_last = c.tables.back();
+  return *t_last;
+}
+
+}  // namespace
 
 RollingTableStats rolling_table_stats(const Coefficients& k) {
   RollingTableStats st;
-  const RollingTable* t = find_table(k);
-  if (t == nullptr) return st;
+  const RollingTable* t = &table_for(k);
   st.built = true;
   st.beta_max = t->beta_max;
   st.solves = t->solves;
+  st.steps = t->steps;
   for (const Piece& p : t->pieces) {
     if (p.fitted) {
       ++st.fitted_pieces;
@@ -338,12 +369,11 @@ bool solve_rolling(const Coefficients& k, const State& y0, Outcome& out) {
   const Vec2 sc = bed_slip(y0);
   const double limit = kRollingSlip * scale;
   if (!(sc.x * sc.x + sc.y * sc.y <= limit * limit)) return false;
-  const RollingTable* t = find_table(k);
-  if (t == nullptr) return false;
   const double xi = cushion_slip(k, y0).x * k.inv_1ps;
   // Exactly head-on without sidespin: the Runge-Kutta solve, which keeps the
   // impact in its plane exactly (and is piecewise linear there, in few steps).
   if (!(std::abs(xi) <= kXiMax) || xi == 0.0) return false;
+  const RollingTable* t = &table_for(k);  // built here, on the first rolling impact with these constants
   const double beta = std::atan(std::abs(xi));
   const auto it = std::upper_bound(t->starts.begin(), t->starts.end(), beta);
   if (it == t->starts.begin()) return false;

@@ -39,7 +39,7 @@
 //          and singular, a slip's direction follows its slow manifold and an
 //          approach to zero is finished in logarithmic slip time. A head-on
 //          impact stays exactly in its plane and is piecewise linear in P_I.
-//          About 3 us per impact, some 55x faster than `paper` at N = 5000
+//          About 3 us per impact at the default tolerance, ~50x faster than `paper` at N = 5000
 //          (bench_cushion_impact). A rolling ball's impact depends on one
 //          number (its incidence and sidespin combined), and is looked up in
 //          a table of this solver's answers built on first use per set of
@@ -162,8 +162,8 @@ struct CushionImpactOptions {
   /// answers for these constants (piecewise Chebyshev interpolants in the one
   /// variable such an impact depends on, fitted to 2e-8 of the largest
   /// incoming velocity; ~0.2 us instead of ~2-3 us). The table is built on
-  /// the first rolling ball that needs it (1-35 ms for usual constants, at
-  /// most ~0.3 s; deterministic, thread-safe) and kept in a cache of the 16
+  /// the first rolling ball that needs it (15-45 ms for usual constants, at
+  /// most ~0.15 s; deterministic, thread-safe) and kept in a cache of the 16
   /// most recently used sets of constants (an evicted one is rebuilt
   /// identically), so the answer depends on the inputs and options alone.
   /// Turn it off where the constants change from call to call (fitting

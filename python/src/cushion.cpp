@@ -123,7 +123,7 @@ void bind_cushion(py::module_& m) {
       "exact_tolerance: the exact solver's local error per Runge-Kutta step relative to the\n"
       "largest incoming velocity, [1e-11, 1e-7], default 1e-8. rolling_table: a rolling ball\n"
       "(at exact_tolerance >= 1e-8) is looked up in a table built once per set of constants\n"
-      "(1-35 ms, cached); pass False when sweeping the constants.");
+      "(15-150 ms, cached); pass False when sweeping the constants.");
   m.attr("RIGID_CUSHION_SPEED_LIMIT") = cueball::kRigidCushionSpeedLimit;
 
   py::class_<cueball::CushionRebound> rebound(

@@ -223,7 +223,7 @@ Outcome solve_exact(const Coefficients& k, const State& y0, const Units& units,
 // mathavan_2010_rolling.cpp. solve_rolling() fills `out` and returns true
 // for a rolling ball inside the table's fitted pieces, else returns false and
 // leaves `out` alone (the caller then solves by solve_exact). The table for
-// k is built on the first rolling ball that needs it (allocates; 1-300 ms,
+// k is built on the first rolling ball that needs it (allocates; 15-150 ms,
 // deterministic) and kept in a bounded cache (evicted tables are rebuilt
 // identically), so the answer depends on k and y0 alone. Thread-safe.
 bool solve_rolling(const Coefficients& k, const State& y0, Outcome& out);

@@ -53,14 +53,17 @@
 //
 // Cost: built on the first rolling ball (at the default tolerance, with
 // rolling_table on) per set of constants (mu_w, mu_s, e_e, sin(theta)), not
-// before: 550-1150 exact solves for the sets above (1-35 ms), at most
-// kMaxSolves (5,000-5,900 and 130-280 ms for mu_s = 1 with mu_w =
-// tan(theta), and for sin(theta) = 0.6 with mu_w = 0.7). The build is
-// deterministic (the same solves in the same order), and the kMaxTables most
-// recently used tables are kept; an evicted one is rebuilt identically when
-// needed, so an answer depends on the inputs and options alone, not on what
-// the process did before. A lookup is an arctangent, a binary search and eight Chebyshev
-// sums: ~730 instructions against ~19,800 for the Runge-Kutta solve
+// before: 550-1150 exact solves for the sets above (37,000-53,000 Runge-Kutta
+// steps, 16-45 ms). The build stops at kMaxSolves solves or kMaxSteps steps,
+// leaving the rest of beta to the exact solver: it did for mu_s = 1 with
+// mu_w = tan(theta) and for sin(theta) = 0.6 with mu_w = 0.7 (which would
+// take 2,200-5,900 solves and 0.2-0.9 s uncapped; 65-146 ms capped, on a
+// loaded host, with 0.8-1.5 rad of the 1.55 rad of beta left to the solver).
+// The build is deterministic (the same solves in the same order), and the
+// kMaxTables most recently used tables are kept; an evicted one is rebuilt
+// identically when needed, so an answer depends on the inputs and options
+// alone, not on what the process did before. A lookup is an arctangent, a
+// binary search and eight Chebyshev sums: ~730 instructions against ~19,800 for the Runge-Kutta solve
 // (callgrind, the rolling grid of bench_cushion_impact).
 //
 // Sources: S. Mathavan, M. R. Jackson, R. M. Parkin, Proc. IMechE Part C 224
@@ -95,8 +98,9 @@ constexpr double kMinPiece = 2e-4;     // narrower pieces are left to the exact 
 // Tables kept (least recently used evicted; rebuilt, identically, when needed
 // again). A table is ~0.1 MB.
 constexpr std::size_t kMaxTables = 16;
-// Exact solves a table may cost (~5-50 us each); past it, what is left is
-// left to the exact solver (see the measurements above).
+// Exact solves a table may cost (~5-50 us each), and their Runge-Kutta
+// steps (~1 us each); past either, what is left is left to the exact solver
+// (see the measurements above).
 constexpr int kMaxSolves = 6000;
 constexpr long kMaxSteps = 120'000;  // and their Runge-Kutta steps (the build's time)
 

@@ -914,8 +914,8 @@ TEST(CushionRollingTable, MatchesTheExactSolverAtItsTightestToleranceOverARandom
   // The table's error must be far inside the 1e-6 goal: below 1e-7 of the
   // largest incoming velocity and 1e-5 deg of rebound angle (measured with a
   // scratch scan: 6.7e-8 and 5e-7 deg over 100,000 balls on each of the
-  // carom, pool and snooker cushions). The Runge-Kutta solve at the default
-  // tolerance is not held to this: up to 7e-6 off the same reference on
+  // carom, pool and snooker cushions). The Runge-Kutta solve at tolerance 1e-7
+  // (the default before 1e-8) is not held to this: up to 7e-6 off the same reference on
   // such scans (mathavan_2010_rolling.cpp).
   CushionParameters low = paper_fit();
   low.contact_height = 1.2 * radius();
@@ -974,7 +974,7 @@ TEST(CushionRollingTable, HoldsTheLimitWhereTheSlipAtTheCushionNearlyVanishes) {
   // estimated with N = 4e5 and 8e5 (in scaled units the estimates from
   // (1e5, 2e5) and (2e5, 4e5) differ by 5e-7 here, those from (4e5, 8e5) and
   // (8e5, 1.6e6) by 7e-8). Measured when this test was written: the
-  // Runge-Kutta solve at its default tolerance (rolling_table = false) is
+  // Runge-Kutta solve at tolerance 1e-7, the default then (no table), is
   // 8.4e-6 m/s off in R w_x here, above the 1e-6 goal; the table was fitted
   // with it at tolerance 1e-10, which is within 2e-8 of the limit here.
   const CushionImpactModel m = cushion_impact_model(table(), paper_fit());

@@ -47,8 +47,8 @@
 // large sidespin), the Richardson limit of the paper scheme sided with the
 // table (1e-7): the exact solver's slip thresholds scale with the largest
 // velocity, which is then large against the slips. The Runge-Kutta solve at
-// the default tolerance is itself up to 7e-6 off the limit on rolling balls
-// near xi = 0 with the snooker constants (tests/test_cushion_impact.cpp,
+// tolerance 1e-7 (the default before 1e-8) is itself up to 7e-6 off the
+// limit on rolling balls near xi = 0 with the snooker constants (tests/test_cushion_impact.cpp,
 // CushionRollingTable.*, which check the table against both references).
 //
 // Cost: built on the first rolling ball (at the default tolerance, with

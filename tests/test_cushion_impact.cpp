@@ -1030,7 +1030,7 @@ TEST(CushionRollingTable, IsUsedForEveryRollingBallAtTheDefaultTolerance) {
 std::vector<CushionImpactResult> rolling_answers(const std::vector<CushionImpactModel>& models) {
   std::vector<CushionImpactResult> out;
   for (const CushionImpactModel& m : models) {
-    for (const auto& [a, ks] : {std::pair{25.0, 0.4}, std::pair{55.0, -1.2}, std::pair{80.0, 2.0}}) {
+    for (const auto& [a, ks] : {std::pair{25.0, 0.4}, std::pair{70.0, -1.2}}) {
       out.push_back(solve_cushion_impact(ball(1.1, a, 1.0, ks), m));
     }
   }
@@ -1064,15 +1064,16 @@ TEST(CushionRollingTable, AnswersDoNotDependOnWhatTheProcessDidBefore) {
   EXPECT_EQ(before[0].solver_steps, 0);
   const std::vector<CushionImpactResult> all = rolling_answers(models);
   expect_identical(rolling_answers(first), before);
-  // Four threads at once, each through the sets in its own order.
-  std::vector<std::vector<CushionImpactResult>> by_thread(4);
+  // Two threads at once, each through the sets in its own order (evicting
+  // tables the other may be using).
+  std::vector<std::vector<CushionImpactResult>> by_thread(2);
   std::vector<std::thread> threads;
   for (std::size_t t = 0; t < by_thread.size(); ++t) {
     threads.emplace_back([&, t] {
       std::vector<CushionImpactModel> order = models;
-      std::rotate(order.begin(), order.begin() + static_cast<std::ptrdiff_t>(5 * t), order.end());
+      std::rotate(order.begin(), order.begin() + static_cast<std::ptrdiff_t>(9 * t), order.end());
       std::vector<CushionImpactResult> r = rolling_answers(order);
-      std::rotate(r.rbegin(), r.rbegin() + static_cast<std::ptrdiff_t>(15 * t), r.rend());  // back to the first order
+      std::rotate(r.rbegin(), r.rbegin() + static_cast<std::ptrdiff_t>(18 * t), r.rend());  // back to the first order
       by_thread[t] = std::move(r);
     });
   }

@@ -13,7 +13,10 @@
 //   BM_CushionExactUnchecked   solve_cushion_impact_unchecked() per impact
 //   BM_CushionExactRolling  the model path on rolling balls only (topspin
 //                           K = 1, sidespin -2..2, alpha 1..90 deg): the
-//                           usual cushion hit in a game
+//                           usual cushion hit in a game, looked up in the
+//                           rolling-ball table (steps = 0 where it is)
+//   BM_CushionExactRollingOde  the same balls by the Runge-Kutta solve
+//                           (CushionImpactOptions::rolling_table = false)
 //   BM_CushionSpeedup       exact and paper timed back to back in one process
 //                           (CPU time): speedup = paper time / exact time over
 //                           the same grid
@@ -148,6 +151,16 @@ BENCHMARK(BM_CushionExactUnchecked)->Unit(benchmark::kMillisecond);
 
 void BM_CushionExactRolling(benchmark::State& state) { run_solver(state, {}, Entry::model, rolling_grid()); }
 BENCHMARK(BM_CushionExactRolling)->Unit(benchmark::kMillisecond);
+
+CushionImpactOptions without_rolling_table() {
+  CushionImpactOptions o;
+  o.rolling_table = false;
+  return o;
+}
+void BM_CushionExactRollingOde(benchmark::State& state) {
+  run_solver(state, without_rolling_table(), Entry::model, rolling_grid());
+}
+BENCHMARK(BM_CushionExactRollingOde)->Unit(benchmark::kMillisecond);
 
 void BM_CushionPaper5000(benchmark::State& state) { run_solver(state, paper_options(5000)); }
 BENCHMARK(BM_CushionPaper5000)->Unit(benchmark::kMillisecond);

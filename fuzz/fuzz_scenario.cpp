@@ -6,7 +6,8 @@
 //     non-empty); nothing else escapes, nothing crashes (ASan, UBSan).
 // and for every accepted scenario:
 //   * its table survives table_to_json -> table_from_json exactly (table.hpp);
-//   * run_scenario, capped at kMaxEvents events, returns or throws
+//   * run_scenario, capped at kMaxEvents events (and on a table of more than
+//     kMaxExactHeights contact heights by the paper's cushion solver), returns or throws
 //     SimulationError (the event limit); events are in time order with finite
 //     times; every ball's final state is finite;
 //   * result_to_json writes the result (and a few samples) without throwing.
@@ -18,6 +19,7 @@
 #include <exception>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "cueball/errors.hpp"
 #include "cueball/scenario.hpp"
@@ -31,6 +33,11 @@ using cueball_fuzz::check;
 
 // Keeps one input well under a second even for a full rack.
 constexpr int kMaxEvents = 2000;
+// The exact cushion solver builds a rolling-ball table on the first rolling
+// impact at each contact height (a set of constants; up to ~0.2 s in Release,
+// several times that under ASan and coverage): a table of many heights runs
+// the paper scheme instead (capped below), so an input builds at most this many.
+constexpr std::size_t kMaxExactHeights = 3;
 
 bool finite(cueball::Vec2 v) { return std::isfinite(v.x) && std::isfinite(v.y); }
 bool finite(cueball::Vec3 v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
@@ -71,6 +78,13 @@ void run_bounded(cueball::Scenario s) {
   s.settings.max_events = std::min(s.settings.max_events, kMaxEvents);
   // The paper's Euler scheme costs its N per impact: kept short here too.
   s.settings.cushion.paper_steps = std::min(s.settings.cushion.paper_steps, 200);
+  std::vector<double> heights;
+  for (const cueball::CushionSegment& c : s.table.cushions) heights.push_back(c.contact_height);
+  for (const cueball::JawArc& j : s.table.jaws) heights.push_back(j.contact_height);
+  std::sort(heights.begin(), heights.end());
+  const auto distinct = static_cast<std::size_t>(std::unique(heights.begin(), heights.end()) - heights.begin());
+  if (distinct > kMaxExactHeights && s.settings.cushion.model == cueball::CushionModel::mathavan_2010)
+    s.settings.cushion.solver = cueball::CushionSolver::paper;
   try {
     check_result(s, cueball::run_scenario(s));
   } catch (const cueball::SimulationError& e) {

@@ -37,6 +37,10 @@ class Residuals {
       : data_(data), base_(base), radius_(radius) {
     options_.solver = options.solver;
     options_.paper_steps = options.paper_steps;
+    // Every evaluation has its own (e_e, mu_w), the Jacobian's 1e-6 apart: a
+    // rolling-ball table per set would cost far more than the few impacts
+    // solved with it (and fill the cache), so these are solved by the ODE.
+    options_.rolling_table = false;
     for (const ObliqueRebound& o : data.oblique) balls_.push_back(incoming_ball(o.incidence));
   }
 

@@ -16,7 +16,9 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <random>
 #include <string>
+#include <thread>
 #include <tuple>
 #include <utility>
 #include <vector>
@@ -165,6 +167,11 @@ TEST(CushionImpact, RejectsBadInputNamingTheField) {
   CushionImpactOptions o;
   o.paper_steps = 0;
   expect_invalid("paper_steps", [&] { cushion_impact(good, p, c, o); });
+  for (const double tolerance : {0.0, 1e-12, 2e-7, std::numeric_limits<double>::quiet_NaN()}) {
+    CushionImpactOptions t;
+    t.exact_tolerance = tolerance;
+    expect_invalid("exact_tolerance", [&] { cushion_impact(good, p, c, t); });
+  }
 
   // The raw model accepts mu_s = 0 but not beyond its own ranges.
   CushionImpactModel m = cushion_impact_model(p, c);
@@ -708,14 +715,16 @@ TEST(CushionImpactConvergence, SlipHoveringNearZeroOnALowCushionIsSetToZero) {
   // that hovers is set to zero and the modes are chosen afresh. The outcome
   // is as close to the Richardson limit as that of its neighbours, which do
   // not hover (~2e-6 here: near head-on the slip reversal inside an Euler
-  // step spoils Richardson, as noted above).
+  // step spoils Richardson, as noted above; at alpha 85 the solve at
+  // tolerance 1e-11 is 3.03e-6 from that estimate, and the default within
+  // 3e-8 of it).
   CushionParameters low = paper_fit();
   low.contact_height = radius() * 1.2;
   for (const double a : {84.0, 85.0, 86.0}) {
     const IncomingBall b = ball(1.0, a, 0.5, 0.0);
     const CushionImpactResult exact = cushion_impact(b, table(), low);
     const CushionImpactResult limit = richardson_limit(b, low);
-    EXPECT_LT(gap(exact, limit), 3e-6) << "alpha " << a;
+    EXPECT_LT(gap(exact, limit), 3.5e-6) << "alpha " << a;
     EXPECT_LT(exact.solver_steps, 400) << "alpha " << a;
   }
 }
@@ -810,18 +819,21 @@ TEST(CushionImpact, UncheckedSolveIsTheValidatedSolveWithoutTheChecks) {
 TEST(CushionImpact, ExactSolverTakesFewSteps) {
   // The cost of an impact is its Runge-Kutta steps (see bench_cushion_impact):
   // a guard against a change that multiplies them while the answers stay right.
+  // (Rolling balls solved too, not looked up in their table.)
   double steps = 0.0;
   int count = 0;
   const CushionImpactModel m = cushion_impact_model(table(), paper_fit());
+  CushionImpactOptions o;
+  o.rolling_table = false;
   for (int a = 1; a <= 90; ++a) {
     for (const double kt : {-1.0, 0.0, 1.0, 2.0}) {
       for (const double ks : {-2.0, 0.0, 2.0}) {
-        steps += solve_cushion_impact(ball(1, a, kt, ks), m).solver_steps;
+        steps += solve_cushion_impact(ball(1, a, kt, ks), m, o).solver_steps;
         ++count;
       }
     }
   }
-  EXPECT_LT(steps / count, 16.0);
+  EXPECT_LT(steps / count, 16.0) << steps / count;
 }
 
 TEST(CushionImpact, SolvingAValidatedModelDoesNotAllocate) {
@@ -830,6 +842,9 @@ TEST(CushionImpact, SolvingAValidatedModelDoesNotAllocate) {
   const CushionImpactModel m = cushion_impact_model(table(), paper_fit());
   const IncomingBall balls[] = {ball(1, 90, 1, 0), ball(1, 44, 0, 1), ball(2, 45, 1.5, 2), ball(1, 80, 1, -2),
                                 ball(1, 30, 0.5, 0)};
+  // The first rolling ball with these constants builds their rolling-ball
+  // table (allocates, once per table).
+  solve_cushion_impact(balls[3], m);
   for (const CushionSolver s : kSolvers) {
     const CushionImpactOptions o = options(s);
     for (const IncomingBall& b : balls) {
@@ -865,6 +880,254 @@ TEST(CushionImpact, HistoryRunsFromTheIncomingToTheOutgoingState) {
     // Without the history the answer is the same.
     const CushionImpactResult plain = cushion_impact(b, table(), paper_fit(), options(s));
     EXPECT_EQ(plain.velocity, r.velocity);
+  }
+}
+
+// ------------------------------------------------------------------ the rolling-ball table
+
+// A rolling ball's impact depends on one number (mathavan_2010_rolling.cpp),
+// and `exact` looks it up in a table built on the first such impact with
+// each set of constants. The table must carry the exact solver's
+// accuracy: it is checked against the exact solver at its tightest
+// tolerance, 1e-11 (the reference, ~1e-9 of the limit where the impact is
+// smooth), and against the paper scheme's N -> infinity limit.
+
+// Largest incoming velocity, R x spin included: the scale of the accuracy goal.
+double largest_velocity(const IncomingBall& b) {
+  const double r = radius();
+  return std::max({std::abs(b.velocity.x), std::abs(b.velocity.y), r * std::abs(b.angular_velocity.x),
+                   r * std::abs(b.angular_velocity.y), r * std::abs(b.angular_velocity.z)});
+}
+
+CushionImpactOptions reference_options() {
+  CushionImpactOptions o;
+  o.exact_tolerance = 1e-11;
+  o.rolling_table = false;
+  return o;
+}
+
+TEST(CushionRollingTable, MatchesTheExactSolverAtItsTightestToleranceOverARandomScan) {
+  // 1,500 random rolling balls per cushion: V0 in [0.05, 2.5] m/s, alpha in
+  // [0.5, 90] deg, sidespin R w_S in [-3, 3] V0; the snooker paper fit, the
+  // translator's fit, a low cushion (sin(theta) = 0.2, near the carom
+  // table's 0.203), the pool table's (0.278) and a sticky one (mu_w = 0.43).
+  // The table's error must be far inside the 1e-6 goal: below 1e-7 of the
+  // largest incoming velocity and 1e-5 deg of rebound angle (measured with a
+  // scratch scan: 6.7e-8 and 5e-7 deg over 100,000 balls on each of the
+  // carom, pool and snooker cushions). The Runge-Kutta solve at tolerance 1e-7
+  // (the default before 1e-8) is not held to this: up to 7e-6 off the same reference on
+  // such scans (mathavan_2010_rolling.cpp).
+  CushionParameters low = paper_fit();
+  low.contact_height = 1.2 * radius();
+  CushionParameters pool = paper_fit();
+  pool.contact_height = (1.0 + 0.3125 / 1.125) * radius();  // the pool table's 1 7/16 in nose, 2 1/4 in ball
+  CushionParameters sticky = paper_fit();
+  sticky.friction = 0.43;
+  const CushionParameters cushions[] = {paper_fit(), cushion_translator_exact_fit(table().ball), low, pool, sticky};
+  std::mt19937_64 rng(20261202);
+  std::uniform_real_distribution<double> speed(0.05, 2.5), angle(0.5, 90.0), side(-3.0, 3.0);
+  for (const CushionParameters& cushion : cushions) {
+    const CushionImpactModel m = cushion_impact_model(table(), cushion);
+    double worst = 0.0;
+    double worst_angle = 0.0;
+    int looked_up = 0;
+    constexpr int kBalls = 1500;
+    for (int i = 0; i < kBalls; ++i) {
+      const double v0 = speed(rng);
+      const IncomingBall b = incoming_ball({v0, angle(rng) * kDeg, v0 / radius(), side(rng) * v0 / radius()});
+      const CushionImpactResult r = solve_cushion_impact(b, m);
+      const CushionImpactResult ref = solve_cushion_impact(b, m, reference_options());
+      if (r.solver_steps == 0) ++looked_up;
+      worst = std::max(worst, gap(r, ref) / largest_velocity(b));
+      worst_angle = std::max(worst_angle, std::abs(r.rebound_angle - ref.rebound_angle) / kDeg);
+      EXPECT_NEAR(r.total_impulse, ref.total_impulse, 1e-7 * m.mass * largest_velocity(b));
+      EXPECT_NEAR(r.compression_work, ref.compression_work,
+                  1e-7 * m.mass * largest_velocity(b) * largest_velocity(b));
+    }
+    EXPECT_LT(worst, 1e-7) << "mu_w " << cushion.friction << " h " << cushion.contact_height;
+    EXPECT_LT(worst_angle, 1e-5) << "mu_w " << cushion.friction << " h " << cushion.contact_height;
+    // Nearly every rolling ball is looked up (not: grazing beyond |xi| = 50,
+    // and the pieces next to a change of the sequence of slip and stick phases).
+    EXPECT_GT(looked_up, kBalls * 95 / 100) << "mu_w " << cushion.friction << " h " << cushion.contact_height;
+  }
+}
+
+TEST(CushionRollingTable, MatchesTheLimitOfThePaperScheme) {
+  // Rolling balls with and without sidespin against the Richardson limit of
+  // the Euler scheme (as ExactMatchesTheRichardsonLimitOfThePaperScheme),
+  // to 1e-7 of the incoming speed, a tenth of the goal.
+  const CushionImpactModel m = cushion_impact_model(table(), paper_fit());
+  for (const auto& [a, ks] : {std::pair{8.0, 0.0}, std::pair{20.0, -1.0}, std::pair{35.0, 0.5}, std::pair{50.0, 0.0},
+                              std::pair{60.0, 1.5}, std::pair{75.0, -2.0}, std::pair{88.0, 0.3}}) {
+    const IncomingBall b = ball(1.0, a, 1.0, ks);
+    const CushionImpactResult r = solve_cushion_impact(b, m);
+    ASSERT_EQ(r.solver_steps, 0) << "looked up: alpha " << a << " sidespin " << ks;
+    const CushionImpactResult limit = richardson_limit(b);
+    EXPECT_LT(gap(r, limit), 1e-7 * largest_velocity(b)) << "alpha " << a << " sidespin " << ks;
+    EXPECT_LT(std::abs(r.rebound_angle - std::atan2(-limit.velocity.y, limit.velocity.x)) / kDeg, 1e-5) << a;
+  }
+}
+
+TEST(CushionRollingTable, HoldsTheLimitWhereTheSlipAtTheCushionNearlyVanishes) {
+  // Rolling at 41.8 deg with sidespin 1.14 V0/R (xi = -0.004, the slip at I
+  // passing close to zero): the table is within 6e-8 m/s of the limit,
+  // estimated with N = 4e5 and 8e5 (in scaled units the estimates from
+  // (1e5, 2e5) and (2e5, 4e5) differ by 5e-7 here, those from (4e5, 8e5) and
+  // (8e5, 1.6e6) by 7e-8). Measured when this test was written: the
+  // Runge-Kutta solve at tolerance 1e-7, the default then (no table), is
+  // 8.4e-6 m/s off in R w_x here, above the 1e-6 goal; the table was fitted
+  // with it at tolerance 1e-10, which is within 2e-8 of the limit here.
+  const CushionImpactModel m = cushion_impact_model(table(), paper_fit());
+  const IncomingBall b = ball(1.0, 41.819391, 1.0, 1.142434);
+  const CushionImpactResult r = solve_cushion_impact(b, m);
+  ASSERT_EQ(r.solver_steps, 0);
+  CushionImpactResult limit = paper_interpolated(b, 400000);
+  const CushionImpactResult fine = paper_interpolated(b, 800000);
+  limit.velocity = 2.0 * fine.velocity - limit.velocity;
+  limit.angular_velocity = 2.0 * fine.angular_velocity - limit.angular_velocity;
+  EXPECT_LT(gap(r, limit), 1e-7 * largest_velocity(b));
+}
+
+TEST(CushionRollingTable, IsUsedForEveryRollingBallAtTheDefaultTolerance) {
+  const CushionImpactModel m = cushion_impact_model(table(), paper_fit());
+  const IncomingBall rolling = ball(1.2, 40, 1.0, 0.7);
+  const CushionImpactResult looked_up = solve_cushion_impact(rolling, m);
+  EXPECT_EQ(looked_up.solver_steps, 0);
+  EXPECT_GE(looked_up.solver_events, 2);  // the end of compression and of restitution at least
+  EXPECT_GT(looked_up.total_impulse, looked_up.compression_impulse);
+  EXPECT_LT(looked_up.compression_work, 0.0);
+  // The Runge-Kutta solve instead: asked for, with the history, at a
+  // tighter tolerance; for a sliding ball; for exactly head-on without
+  // sidespin.
+  CushionImpactOptions no_table;
+  no_table.rolling_table = false;
+  CushionImpactOptions history;
+  history.record_history = true;
+  CushionImpactOptions tighter;
+  tighter.exact_tolerance = 1e-9;
+  for (const CushionImpactOptions& o : {no_table, history, tighter}) {
+    const CushionImpactResult r = solve_cushion_impact(rolling, m, o);
+    EXPECT_GT(r.solver_steps, 0);
+    EXPECT_LT(gap(r, looked_up), 1e-6 * largest_velocity(rolling));
+  }
+  CushionImpactOptions looser;
+  looser.exact_tolerance = 1e-7;
+  EXPECT_EQ(solve_cushion_impact(rolling, m, looser).solver_steps, 0);
+  EXPECT_GT(solve_cushion_impact(ball(1.2, 40, 0.5, 0.7), m).solver_steps, 0);
+  IncomingBall head_on;
+  head_on.velocity = {0.0, 1.0, 0.0};
+  head_on.angular_velocity = {-1.0 / radius(), 0.0, 0.0};
+  EXPECT_GT(solve_cushion_impact(head_on, m).solver_steps, 0);
+  // Constants no model was made for: the table is built on first use.
+  CushionImpactModel unseen = m;
+  unseen.cushion_friction = 0.1234;
+  EXPECT_EQ(solve_cushion_impact(rolling, unseen).solver_steps, 0);
+}
+
+// The answer depends on the inputs and options alone: not on which tables
+// the process has built, evicted (the cache keeps 16) or is building on
+// another thread.
+std::vector<CushionImpactResult> rolling_answers(const std::vector<CushionImpactModel>& models) {
+  std::vector<CushionImpactResult> out;
+  for (const CushionImpactModel& m : models) {
+    for (const auto& [a, ks] : {std::pair{25.0, 0.4}, std::pair{70.0, -1.2}}) {
+      out.push_back(solve_cushion_impact(ball(1.1, a, 1.0, ks), m));
+    }
+  }
+  return out;
+}
+
+void expect_identical(const std::vector<CushionImpactResult>& a, const std::vector<CushionImpactResult>& b) {
+  ASSERT_EQ(a.size(), b.size());
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    EXPECT_EQ(a[i].velocity.x, b[i].velocity.x) << i;
+    EXPECT_EQ(a[i].velocity.y, b[i].velocity.y) << i;
+    EXPECT_EQ(a[i].angular_velocity.x, b[i].angular_velocity.x) << i;
+    EXPECT_EQ(a[i].angular_velocity.y, b[i].angular_velocity.y) << i;
+    EXPECT_EQ(a[i].angular_velocity.z, b[i].angular_velocity.z) << i;
+    EXPECT_EQ(a[i].total_impulse, b[i].total_impulse) << i;
+    EXPECT_EQ(a[i].solver_steps, b[i].solver_steps) << i;
+  }
+}
+
+TEST(CushionRollingTable, AnswersDoNotDependOnWhatTheProcessDidBefore) {
+  // 18 sets of constants (mu_w 0.19-0.36), more than the cache keeps: the
+  // first set's table is evicted and rebuilt, identically.
+  std::vector<CushionImpactModel> models;
+  for (int i = 0; i < 18; ++i) {
+    CushionParameters c = paper_fit();
+    c.friction = 0.19 + 0.01 * i;
+    models.push_back(cushion_impact_model(table(), c));
+  }
+  const std::vector<CushionImpactModel> first(models.begin(), models.begin() + 1);
+  const std::vector<CushionImpactResult> before = rolling_answers(first);
+  EXPECT_EQ(before[0].solver_steps, 0);
+  const std::vector<CushionImpactResult> all = rolling_answers(models);
+  expect_identical(rolling_answers(first), before);
+  // Two threads at once, each through the sets in its own order (evicting
+  // tables the other may be using).
+  std::vector<std::vector<CushionImpactResult>> by_thread(2);
+  std::vector<std::thread> threads;
+  for (std::size_t t = 0; t < by_thread.size(); ++t) {
+    threads.emplace_back([&, t] {
+      std::vector<CushionImpactModel> order = models;
+      std::rotate(order.begin(), order.begin() + static_cast<std::ptrdiff_t>(9 * t), order.end());
+      std::vector<CushionImpactResult> r = rolling_answers(order);
+      std::rotate(r.rbegin(), r.rbegin() + static_cast<std::ptrdiff_t>(18 * t), r.rend());  // back to the first order
+      by_thread[t] = std::move(r);
+    });
+  }
+  for (std::thread& t : threads) t.join();
+  for (const auto& r : by_thread) expect_identical(r, all);
+}
+
+TEST(CushionImpact, DefaultToleranceKeepsTheGoalWhereASlipNearlyVanishes) {
+  // A sliding ball (out of a 20,000-impact random scan, snooker constants)
+  // on which the Runge-Kutta solve at 1e-7, the default before, was 7.4e-6
+  // of the largest incoming velocity from the solve at 1e-11: the default
+  // must be within the 1e-6 goal of that reference and of the paper scheme's
+  // Richardson limit.
+  IncomingBall b;
+  b.velocity = {1.6707695497711776, 1.4920476515635424, 0.0};
+  b.angular_velocity = {-51.756413231526714, 57.95595009448413, 95.073581980387772};
+  const CushionImpactModel m = cushion_impact_model(table(), paper_fit());
+  const CushionImpactResult r = solve_cushion_impact(b, m);
+  const CushionImpactResult ref = solve_cushion_impact(b, m, reference_options());
+  // (The Richardson estimate from N = 1e5, 2e5 is itself 1.8e-6 m/s from
+  // the reference here, 0.7 of the goal: the spin is large.)
+  const double goal = 1e-6 * largest_velocity(b);
+  const CushionImpactResult limit = richardson_limit(b);
+  EXPECT_LT(gap(r, ref), 0.1 * goal);
+  EXPECT_LT(gap(r, limit), goal);
+  // What this test is about: the old default is beyond the goal from both.
+  CushionImpactOptions old_default;
+  old_default.exact_tolerance = 1e-7;
+  const CushionImpactResult old = solve_cushion_impact(b, m, old_default);
+  EXPECT_GT(gap(old, ref), 5.0 * goal);
+  EXPECT_GT(gap(old, limit), 5.0 * goal);
+}
+
+TEST(CushionRollingTable, MirrorImagesAreMirrored) {
+  // X -> -X: xG', w_y and w_z change sign, the rest does not (exactly: one
+  // table serves both, the mirror applied to its odd outputs).
+  const CushionImpactModel m = cushion_impact_model(table(), paper_fit());
+  for (const auto& [a, ks] : {std::pair{30.0, 0.8}, std::pair{70.0, -1.5}}) {
+    const IncomingBall b = ball(1.0, a, 1.0, ks);
+    IncomingBall mirror = b;
+    mirror.velocity.x = -b.velocity.x;
+    mirror.angular_velocity.y = -b.angular_velocity.y;
+    mirror.angular_velocity.z = -b.angular_velocity.z;
+    const CushionImpactResult r = solve_cushion_impact(b, m);
+    const CushionImpactResult rm = solve_cushion_impact(mirror, m);
+    EXPECT_EQ(rm.velocity.x, -r.velocity.x);
+    EXPECT_EQ(rm.velocity.y, r.velocity.y);
+    EXPECT_EQ(rm.angular_velocity.x, r.angular_velocity.x);
+    EXPECT_EQ(rm.angular_velocity.y, -r.angular_velocity.y);
+    EXPECT_EQ(rm.angular_velocity.z, -r.angular_velocity.z);
+    // The Runge-Kutta solve agrees with the mirrored table.
+    CushionImpactOptions no_table;
+    no_table.rolling_table = false;
+    EXPECT_LT(gap(solve_cushion_impact(mirror, m, no_table), rm), 1e-6 * largest_velocity(b));
   }
 }
 

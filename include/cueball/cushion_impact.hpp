@@ -39,10 +39,14 @@
 //          and singular, a slip's direction follows its slow manifold and an
 //          approach to zero is finished in logarithmic slip time. A head-on
 //          impact stays exactly in its plane and is piecewise linear in P_I.
-//          About 3 us per impact, some 55x faster than `paper` at N = 5000
-//          (bench_cushion_impact).
+//          About 3 us per impact at the default tolerance, ~50x faster than `paper` at N = 5000
+//          (bench_cushion_impact). A rolling ball's impact depends on one
+//          number (its incidence and sidespin combined), and is looked up in
+//          a table of this solver's answers built on first use per set of
+//          constants (~0.2 us per impact; CushionImpactOptions::rolling_table).
 //
-// Solving allocates nothing unless the history is requested: validate the
+// Solving allocates nothing unless the history is requested (or a rolling
+// ball with new constants builds their table, once): validate the
 // constants once with cushion_impact_model() and call solve_cushion_impact()
 // in a simulation loop (cushion_impact() also runs validate(Parameters)), or
 // solve_cushion_impact_unchecked() where the caller guarantees the ranges.
@@ -146,6 +150,29 @@ struct CushionImpactOptions {
   int paper_steps = 5000;
   /// Fill CushionImpactResult::history (allocates; off in simulation loops).
   bool record_history = false;
+  /// `exact`: the local error tolerance of a Runge-Kutta step, relative to the
+  /// largest incoming velocity (R x spin included), in [1e-11, 1e-7]. The
+  /// default 1e-8 keeps the accuracy goal (1e-6 of that velocity from the
+  /// N -> infinity limit of `paper`) on random impacts where 1e-7 did not (a
+  /// slip passing close to zero); smaller values are for reference solutions
+  /// and cost more steps, 1e-7 trades that accuracy for ~30% fewer steps.
+  double exact_tolerance = 1e-8;
+  /// `exact` on a rolling ball (no slip at C, a simulator's usual cushion hit)
+  /// at exact_tolerance >= 1e-8: look the answer up in a table of the solver's
+  /// answers for these constants (piecewise Chebyshev interpolants in the one
+  /// variable such an impact depends on, fitted to 2e-8 of the largest
+  /// incoming velocity; ~0.2 us instead of ~2-3 us). The table is built on
+  /// the first rolling ball that needs it (15-45 ms for usual constants, at
+  /// most ~0.15 s; deterministic, thread-safe) and kept in a cache of the 16
+  /// most recently used sets of constants (an evicted one is rebuilt
+  /// identically), so the answer depends on the inputs and options alone.
+  /// Turn it off where the constants change from call to call (fitting
+  /// them). The Runge-Kutta solve also when the history is recorded, at
+  /// tighter tolerances, and where the table has no fitted piece (near a
+  /// change in the sequence of slip and stick phases;
+  /// |xG' - cos(theta) R w_z / (1 + sin(theta))| > 50 yG').
+  /// solver_steps is 0 for a looked-up answer.
+  bool rolling_table = true;
 };
 
 /// The state of the impact at one value of the normal impulse P_I.

@@ -336,8 +336,12 @@ def cushion_impact(
     solver: str = "exact",
     paper_steps: _Int = 5000,
     history: bool = False,
+    exact_tolerance: _Float = 1e-8,
+    rolling_table: bool = True,
 ) -> CushionImpactResult:
-    """Mathavan 2010: speed V0 m/s, angle alpha rad in (0, pi/2], spins rad/s (topspin None: rolling)."""
+    """Mathavan 2010: speed V0 m/s, angle alpha rad in (0, pi/2], spins rad/s (topspin None: rolling).
+
+    exact_tolerance in [1e-11, 1e-7]; rolling_table=False when sweeping the constants."""
 
 RIGID_CUSHION_SPEED_LIMIT: float
 """m/s"""

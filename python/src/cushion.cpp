@@ -94,7 +94,7 @@ void bind_cushion(py::module_& m) {
       "cushion_impact",
       [](double speed, double angle, std::optional<double> topspin, double sidespin, const Parameters& p,
          double restitution, double friction, std::optional<double> contact_height, const std::string& solver,
-         int paper_steps, bool history) {
+         int paper_steps, bool history, double exact_tolerance, bool rolling_table) {
         const cueball::PaperIncidence incidence = checked_incidence(speed, angle, topspin, sidespin, p);
         if (paper_steps < 1 || paper_steps > 100000000)
           throw cueball::InvalidArgument("paper_steps", paper_steps, "[1, 1e8]", "Euler steps of the paper solver");
@@ -104,18 +104,26 @@ void bind_cushion(py::module_& m) {
         options.solver = cushion_solver(solver);
         options.paper_steps = paper_steps;
         options.record_history = history;
+        options.exact_tolerance = exact_tolerance;
+        options.rolling_table = rolling_table;
         return cueball::cushion_impact(cueball::incoming_ball(incidence), p, cushion, options);
       },
       "speed"_a, "angle"_a, "topspin"_a = py::none(), "sidespin"_a = 0.0, py::kw_only(), params_arg(),
       "restitution"_a = fit.restitution, "friction"_a = fit.friction, "contact_height"_a = py::none(),
       "solver"_a = "exact", "paper_steps"_a = 5000, "history"_a = false,
+      "exact_tolerance"_a = cueball::CushionImpactOptions{}.exact_tolerance,
+      "rolling_table"_a = cueball::CushionImpactOptions{}.rolling_table,
       "A ball hitting a cushion: Mathavan, Jackson & Parkin (2010), solved exactly ('exact') or\n"
       "with the authors' Euler scheme ('paper', paper_steps steps).\n"
       "speed: V0 > 0, m/s. angle: alpha in RADIANS, (0, pi/2], between the velocity and the\n"
       "cushion (pi/2 = head-on). topspin: w_T, rad/s (default None: rolling, V0/R; negative is\n"
       "draw). sidespin: w_S, rad/s about Z, > 0 the 'right' spin of the paper's Fig 2.\n"
       "restitution e_e and friction mu_w default to the authors' fit (0.98, 0.14); contact_height\n"
-      "h, m, in (R, 2R), default 7R/5. history=True records the impact along P_I.");
+      "h, m, in (R, 2R), default 7R/5. history=True records the impact along P_I.\n"
+      "exact_tolerance: the exact solver's local error per Runge-Kutta step relative to the\n"
+      "largest incoming velocity, [1e-11, 1e-7], default 1e-8. rolling_table: a rolling ball\n"
+      "(at exact_tolerance >= 1e-8) is looked up in a table built once per set of constants\n"
+      "(15-150 ms, cached); pass False when sweeping the constants.");
   m.attr("RIGID_CUSHION_SPEED_LIMIT") = cueball::kRigidCushionSpeedLimit;
 
   py::class_<cueball::CushionRebound> rebound(

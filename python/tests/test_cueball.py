@@ -362,6 +362,23 @@ class CushionImpactTest(unittest.TestCase):
         self.assertAlmostEqual(exact.history[-1].normal_impulse, exact.total_impulse, delta=1e-12)
         self.assertEqual(paper.history, [])
 
+    def test_exact_tolerance_and_rolling_table(self):
+        # A rolling ball is looked up in the rolling-ball table (no Runge-Kutta steps) unless
+        # rolling_table=False or a tighter tolerance asks for the solve; all agree far inside 1e-6.
+        looked_up = cueball.cushion_impact(1.2, math.radians(40), sidespin=15.0)
+        self.assertEqual(looked_up.solver_steps, 0)
+        solved = cueball.cushion_impact(1.2, math.radians(40), sidespin=15.0, rolling_table=False)
+        reference = cueball.cushion_impact(1.2, math.radians(40), sidespin=15.0, exact_tolerance=1e-11)
+        for r in (solved, reference):
+            self.assertGreater(r.solver_steps, 0)
+            for a, b in zip(r.velocity, looked_up.velocity):
+                self.assertAlmostEqual(a, b, delta=1e-6)
+        self.assertEqual(cueball.cushion_impact(1.2, math.radians(40), sidespin=15.0).velocity, looked_up.velocity)
+        for bad in (1e-6, 1e-12, math.nan):
+            with self.assertRaises(cueball.InvalidArgument) as caught:
+                cueball.cushion_impact(1.0, 1.0, exact_tolerance=bad)
+            self.assertEqual(caught.exception.field, "exact_tolerance")
+
     def test_bad_input(self):
         with self.assertRaises(cueball.InvalidArgument) as caught:
             cueball.cushion_impact(math.nan, 1.0)

@@ -30,6 +30,8 @@ def main() -> None:
     plan: cueball.ShotPlan = cueball.plan_natural_roll_shot(x2=1.0)
     ball = cueball.strike_ball(cueball.CueStrike(2.0, side_offset=0.01), params=p)
     impact = cueball.cushion_impact(1.0, math.radians(45), sidespin=np.int64(3))
+    reference = cueball.cushion_impact(1.0, math.radians(45), exact_tolerance=1e-11, rolling_table=False)
+    assert reference.solver_steps > 0
     assert shot.v1 > 0.0 and plan.v0 > 0.0 and ball.angular_velocity[2] > 0.0 and impact.rebound_speed > 0.0
 
     result = cueball.simulate(CUT_SHOT, sample_rate=30.0)

@@ -3,7 +3,9 @@
 // validate), the incoming ball of section 3.1, and solving: validation of the
 // inputs, the scaling to the solvers' units and back, and the choice of
 // solver, `paper` (mathavan_2010_euler.cpp) or `exact`
-// (mathavan_2010_exact.cpp); what they share is in mathavan_2010_equations.hpp.
+// (mathavan_2010_exact.cpp, and for a rolling ball its answers tabulated by
+// mathavan_2010_rolling.cpp, built on first use); what they
+// share is in mathavan_2010_equations.hpp.
 //
 // Sources: S. Mathavan, M. R. Jackson, R. M. Parkin, Proc. IMechE Part C 224
 // (2010), sections 3.1 and 3.5 and equations (3d), (7), (16) as numbered
@@ -67,6 +69,11 @@ void validate_ball(const IncomingBall& ball) {
 void validate_options(const CushionImpactOptions& options) {
   if (options.solver != CushionSolver::exact && options.solver != CushionSolver::paper) {
     throw InvalidArgument("solver", "solver is not a CushionSolver value");
+  }
+  static_assert(CushionImpactOptions{}.exact_tolerance == mathavan_2010::kExactTolerance);
+  if (!(options.exact_tolerance >= 1e-11 && options.exact_tolerance <= 1e-7)) {
+    reject("exact_tolerance", options.exact_tolerance, "[1e-11, 1e-7]",
+           "local error per Runge-Kutta step of the exact solver, relative to the largest incoming velocity");
   }
   if (options.paper_steps < 1 || options.paper_steps > 1'000'000'000) {
     reject("paper_steps", options.paper_steps, "[1, 1e9]", "N, Euler steps per (1 + e_e) M yG'(0) (section 3.4)");
@@ -165,9 +172,13 @@ CushionImpactResult solve_cushion_impact_unchecked(const IncomingBall& ball, con
 
   CushionImpactResult r;
   std::vector<CushionImpactSample>* history = options.record_history ? &r.history : nullptr;
-  const Outcome o = options.solver == CushionSolver::paper
-                        ? mathavan_2010::solve_paper(k, y0, options.paper_steps, units, history)
-                        : mathavan_2010::solve_exact(k, y0, units, history);
+  Outcome o;
+  if (options.solver == CushionSolver::paper) {
+    o = mathavan_2010::solve_paper(k, y0, options.paper_steps, units, history);
+  } else if (history != nullptr || !options.rolling_table || !(options.exact_tolerance >= mathavan_2010::kExactTolerance) ||
+             !mathavan_2010::solve_rolling(k, y0, o)) {
+    o = mathavan_2010::solve_exact(k, y0, units, history, options.exact_tolerance);
+  }
   const State& y = o.final_state;
   const double spin = units.speed / units.radius;
   r.velocity = {y[kVx] * units.speed, y[kVy] * units.speed, 0.0};

@@ -1,7 +1,8 @@
 // Mathavan, Jackson & Parkin (2010), the ball-cushion impact: what its two
 // solvers share (an internal header of the library, not installed). The
 // solvers are mathavan_2010_euler.cpp (`paper`, the authors' explicit Euler
-// scheme of section 3.4) and mathavan_2010_exact.cpp (`exact`, event-driven);
+// scheme of section 3.4) and mathavan_2010_exact.cpp (`exact`, event-driven;
+// mathavan_2010_rolling.cpp tabulates its answers for rolling balls);
 // mathavan_2010.cpp is the public API of cueball/cushion_impact.hpp and
 // chooses between them. Here: the coefficients, the state and its layout,
 // the slip velocities, the rate equations, the scaling to and from SI and
@@ -44,6 +45,7 @@
 #include <array>
 #include <cmath>
 #include <cstddef>
+#include <cstdint>
 #include <vector>
 
 #include "cueball/cushion_impact.hpp"
@@ -184,6 +186,12 @@ struct Outcome {
   double compression_work = 0.0;
   int steps = 0;
   int events = 0;
+  // The kinds of the events in order and the contact modes chosen at them,
+  // hashed: two impacts with equal signatures went through the same sequence
+  // of slip and stick phases (mathavan_2010_rolling.cpp tells the smooth
+  // pieces of its table apart by it).
+  std::uint64_t signature = 0;
+  void note(unsigned code) { signature = (signature ^ code) * 0x100000001b3ULL; }
 };
 
 // The paper's explicit Euler scheme in P_I with N = n_steps (section 3.4):
@@ -191,8 +199,44 @@ struct Outcome {
 Outcome solve_paper(const Coefficients& k, State y, int n_steps, const Units& units,
                     std::vector<CushionImpactSample>* history);
 
+// Local error per Runge-Kutta step of the exact solver, relative to the
+// largest initial velocity (CushionImpactOptions::exact_tolerance, in
+// [1e-11, 1e-7]). The default 1e-8 is what keeps the accuracy goal (1e-6 of
+// that velocity from the N -> infinity limit of the paper's scheme) on
+// random impacts: on 20,000 (snooker constants, V0 0.2-3 m/s, alpha 1-90
+// deg, topspin -1..2, sidespin -2..2 V0/R) against the solve at 1e-11, 1e-7
+// left 5 beyond 1e-6 (worst 7.4e-6, where a slip passes close to zero),
+// 1e-8 none (worst 6.4e-8), for 46% more steps (17.8 against 12.2 per
+// impact). Not every impact: on 200,000 (two seeds) 1e-8 left 0 and 3
+// (worst 6.6e-6), and tighter tolerances (5e-9, 2e-9) as many: there the
+// solver's answer jumps where a slip just misses zero, which no tolerance
+// above the reference's removes.
+inline constexpr double kExactTolerance = 1e-8;
+
 // The event-driven solver without discretisation error: mathavan_2010_exact.cpp.
+// `tolerance` below the default only for reference solutions (building and
+// checking the rolling-ball table).
 Outcome solve_exact(const Coefficients& k, const State& y0, const Units& units,
-                    std::vector<CushionImpactSample>* history);
+                    std::vector<CushionImpactSample>* history, double tolerance = kExactTolerance);
+
+// A rolling ball's impact from a table of the exact solver's answers:
+// mathavan_2010_rolling.cpp. solve_rolling() fills `out` and returns true
+// for a rolling ball inside the table's fitted pieces, else returns false and
+// leaves `out` alone (the caller then solves by solve_exact). The table for
+// k is built on the first rolling ball that needs it (allocates; 15-150 ms,
+// deterministic) and kept in a bounded cache (evicted tables are rebuilt
+// identically), so the answer depends on k and y0 alone. Thread-safe.
+bool solve_rolling(const Coefficients& k, const State& y0, Outcome& out);
+
+struct RollingTableStats {
+  bool built = false;
+  double beta_max = 0.0;        // the table covers beta = atan(xi) in [-beta_max, beta_max]
+  int fitted_pieces = 0;
+  int fallback_pieces = 0;
+  double fallback_width = 0.0;  // total width of the pieces left to the exact solver, rad
+  int solves = 0;               // exact solves it took to build
+  long steps = 0;               // and their Runge-Kutta steps
+};
+RollingTableStats rolling_table_stats(const Coefficients& k);  // builds the table if need be
 
 }  // namespace cueball::mathavan_2010

@@ -1004,12 +1004,9 @@ double locate(G g, double g_lo, double g_hi) {
 
 // Accuracy and effort of the exact solver, relative to the velocity scale
 // (the largest initial velocity component, in units of the normal speed).
+// The local error per Runge-Kutta step is solve_exact's `tolerance`
+// (kExactTolerance by default, mathavan_2010_equations.hpp).
 struct ExactLimits {
-  // Local error per Runge-Kutta step. 1e-7 keeps outcomes within ~5e-8 m/s
-  // (R x spin within ~2e-7) of the N -> infinity limit of the paper's scheme
-  // over the benchmark grid (BM_CushionAccuracy), 5x inside the 1e-6 goal;
-  // 3e-8 was 3x tighter and cost ~20% more steps per impact in a break.
-  static constexpr double tolerance = 1e-7;
   static constexpr double slaved_slip = 1e-3;   // a small slip may be slaved below this
   static constexpr double small_slip = 1e-6;    // a free slip closing in on zero is finished below this
   static constexpr double tiny_slip = 1e-10;    // a slip this small is zero
@@ -1021,10 +1018,10 @@ struct ExactLimits {
 }  // namespace
 
 Outcome solve_exact(const Coefficients& k, const State& y0, const Units& units,
-                    std::vector<CushionImpactSample>* history) {
+                    std::vector<CushionImpactSample>* history, double tolerance) {
   const double scale = std::max(velocity_scale(y0), 1.0);
   const double tiny_slip = ExactLimits::tiny_slip * scale;
-  const double atol = ExactLimits::tolerance * scale;
+  const double atol = tolerance * scale;
   Exact sys{};
   sys.k = k;
   sys.zero_slip = 1e-13 * scale;
@@ -1050,6 +1047,7 @@ Outcome solve_exact(const Coefficients& k, const State& y0, const Units& units,
   if (history) record(0.0);
 
   Outcome out;
+  out.note(64 + (sys.modes.cushion == kStick ? 1u : 0u) + (sys.modes.bed == kStick ? 2u : 0u));
   bool compressing = true;
   double work_target = 0.0;
   double p = 0.0;
@@ -1079,6 +1077,7 @@ Outcome solve_exact(const Coefficients& k, const State& y0, const Units& units,
       cushion_zero = cushion_zero || sys.modes.cushion == kStick || length(slip_i(y)) <= tiny_slip;
       bed_zero = bed_zero || sys.modes.bed == kStick || length(slip_c(y)) <= tiny_slip;
       choose_modes(cushion_zero, bed_zero);
+      out.note(64 + (sys.modes.cushion == kStick ? 1u : 0u) + (sys.modes.bed == kStick ? 2u : 0u));
     }
     if (history) record(p);
     sys.set_references(y);
@@ -1255,6 +1254,7 @@ Outcome solve_exact(const Coefficients& k, const State& y0, const Units& units,
         out.compression_work = component_at(tc, kW);
         work_target = (1.0 - k.e * k.e) * out.compression_work;  // (16b)
         if (++out.events > ExactLimits::max_events) wedged();
+        out.note(32);
         if (history && tc > 0.0) {
           dense();
           history->push_back(sample(k, units, out.compression_impulse, velocity_state(k, interpolate(y, st, tc), j)));
@@ -1281,6 +1281,7 @@ Outcome solve_exact(const Coefficients& k, const State& y0, const Units& units,
         }
         p += h * tr;
         if (++out.events > ExactLimits::max_events) wedged();
+        out.note(33);
         out.total_impulse = p;
         out.final_state = velocity_state(k, y, j);
         if (history) record(p);

@@ -351,6 +351,128 @@ std::optional<double> clearing_elevation(const Scenario& s, std::size_t cue, dou
   return std::nullopt;
 }
 
+// The aim scan (header, step 2b): kScanAims aims spread evenly over the cue
+// ball's straight hits on the target at each speed of kScanSpeeds, centre
+// ball, each at its clearing elevation (an obstructed aim is not played), in
+// one simulate_many batch; each run of neighbouring aims that pot (the
+// target dropping, the cue ball touching it first and staying up) at one
+// speed into one pocket with one cushion count.
+struct AimRun {
+  std::size_t pocket;
+  int cushions;
+  double speed, first_aim, last_aim;
+  int aims;
+};
+struct AimScan {
+  std::vector<AimRun> runs;  // the widest first
+  double step_deg = 0.0;     // between neighbouring aims
+};
+
+// The scan's batch and its runs; `played`: its engine runs.
+AimScan scan_aims(const Scenario& s, std::size_t cue, std::size_t target, int& played) {
+  const double R = s.settings.parameters.ball.radius;
+  const Vec2 C = s.balls[cue].state.position, O = s.balls[target].state.position;
+  const double half = std::asin(std::min(1.0, 2.0 * R / norm(O - C))) / kDegree;
+  const double centre = angle_deg(O - C);
+  std::vector<ShotAction> actions;
+  for (double speed : kScanSpeeds)
+    for (int i = 0; i < kScanAims; ++i) {
+      const double aim = centre - half + (i + 0.5) * 2.0 * half / kScanAims;
+      const std::optional<double> elevation = clearing_elevation(s, cue, aim, 0.0, 0.0);
+      // An obstructed aim is kept unplayed (a NaN speed): the runs stay in order.
+      actions.push_back({elevation ? speed : kNaN, aim, elevation.value_or(0.0), 0.0, 0.0});
+    }
+  std::vector<ShotAction> to_play;
+  for (const ShotAction& a : actions)
+    if (std::isfinite(a.speed)) to_play.push_back(a);
+  Scenario scan = s;
+  scan.cue = ShotStrike{};
+  scan.cue->ball = s.balls[cue].id;
+  const ManyResult m = to_play.empty() ? ManyResult{} : simulate_many(scan, to_play, {}, ManyOptions{});
+  played = m.shots;
+  AimScan out;
+  out.step_deg = 2.0 * half / kScanAims;
+  const auto n = static_cast<std::size_t>(m.balls);
+  std::size_t k = 0;
+  bool extends = false;
+  for (const ShotAction& a : actions) {
+    if (!std::isfinite(a.speed)) {
+      extends = false;
+      continue;
+    }
+    const std::size_t row = k++;
+    const bool pots = !m.failure[row] && m.first_contact[row] == s.balls[target].id && m.pocketed[row * n + target] &&
+                      !m.pocketed[row * n + cue];
+    if (!pots) {
+      extends = false;
+      continue;
+    }
+    const auto pocket = static_cast<std::size_t>(m.pocket[row * n + target]);
+    const int cushions = m.cushions[row * n + target];
+    std::vector<AimRun>& runs = out.runs;
+    if (extends && runs.back().pocket == pocket && runs.back().cushions == cushions && runs.back().speed == a.speed) {
+      runs.back().last_aim = a.aim_deg;
+      ++runs.back().aims;
+    } else {
+      runs.push_back({pocket, cushions, a.speed, a.aim_deg, a.aim_deg, 1});
+    }
+    extends = true;
+  }
+  std::stable_sort(out.runs.begin(), out.runs.end(), [](const AimRun& a, const AimRun& b) { return a.aims > b.aims; });
+  return out;
+}
+
+// A run's candidate: its middle aim played once in full (one engine run, at
+// `elevation`), the target a bank when it meets a rail (a cushion long enough
+// to bank off, not a pocket's facing) before it drops; nullopt when that
+// play fails or does not pot. has_legs: its first and last legs have a
+// direction (the last leg and the cut are then set).
+struct ScannedCandidate {
+  Candidate candidate;
+  bool has_legs = false;
+};
+
+std::optional<ScannedCandidate> scanned_candidate(const Scenario& s, std::size_t cue, std::size_t target, const AimRun& r,
+                                                  double elevation) {
+  const double R = s.settings.parameters.ball.radius;
+  ScannedCandidate out;
+  Candidate& c = out.candidate;
+  c.pocket = r.pocket;
+  c.first_ball = target;
+  c.aim_deg = 0.5 * (r.first_aim + r.last_aim);
+  std::vector<SimulationBall> balls = s.balls;
+  balls[cue].state = strike_ball(to_strike(ShotAction{r.speed, c.aim_deg, elevation, 0.0, 0.0}, R),
+                                 balls[cue].state.position, s.settings.parameters.ball, s.cue_parameters);
+  SimulationResult played_out;
+  try {
+    played_out = simulate_unchecked(s.table, balls, s.settings);
+  } catch (const SimulationError&) {
+    return std::nullopt;
+  }
+  const BallTrajectory& t = played_out.balls[target];
+  if (!t.pocketed || t.segments.size() < 2) return std::nullopt;
+  for (const Event& e : played_out.events) {
+    if (e.type != EventType::ball_cushion || e.ball != s.balls[target].id) continue;
+    const CushionSegment& seg = s.table.cushions[static_cast<std::size_t>(e.other)];
+    if (norm(seg.end - seg.start) >= 6.0 * R) c.cushions.push_back(static_cast<std::size_t>(e.other));
+  }
+  c.kind = c.cushions.empty() ? ShotKind::direct : ShotKind::bank;
+  const Vec2 last = t.segments.back().state.velocity, first = t.segments[1].state.velocity;
+  out.has_legs = norm(last) > 0.0 && norm(first) > 0.0;
+  if (!out.has_legs) return out;
+  c.last_leg = last / norm(last);
+  c.cut_deg =
+      std::acos(std::clamp(dot(first / norm(first), Vec2{std::cos(c.aim_deg * kDegree), std::sin(c.aim_deg * kDegree)}),
+                           -1.0, 1.0)) /
+      kDegree;
+  c.what = std::string(to_string(c.kind)) + " into " + s.table.pockets[r.pocket].name;
+  for (std::size_t i = 0; i < c.cushions.size(); ++i)
+    c.what += (i == 0 ? " off " : ", then ") + cushion_name(s.table, c.cushions[i]);
+  c.what += " (found by the aim scan)";
+  return out;
+}
+
+
 // A cushion's line: where the centre of a ball touching the cushion is (the
 // nose line moved in by the contact distance, header comment).
 struct CushionLine {
@@ -914,113 +1036,31 @@ ShotPlanResult plan_shot(const Scenario& table_state, const PlanRequest& q) {
                           std::find(q.kinds.begin(), q.kinds.end(), ShotKind::bank) != q.kinds.end();
   const int scan_runs = kScanAims * static_cast<int>(kScanSpeeds.size());
   if (scan_kinds && planner.runs() + scan_runs + static_cast<int>(kScanCandidates) * kCandidateRuns <= q.simulations * 3 / 5) {
-    const Vec2 C = s.balls[cue].state.position, O = s.balls[target].state.position;
-    const double half = std::asin(std::min(1.0, 2.0 * R / norm(O - C))) / kDegree;
-    const double centre = angle_deg(O - C);
-    std::vector<ShotAction> actions;
-    for (double speed : kScanSpeeds)
-      for (int i = 0; i < kScanAims; ++i) {
-        const double aim = centre - half + (i + 0.5) * 2.0 * half / kScanAims;
-        const std::optional<double> elevation = clearing_elevation(s, cue, aim, 0.0, 0.0);
-        // An obstructed aim is kept unplayed (a NaN speed): the runs stay in order.
-        actions.push_back({elevation ? speed : kNaN, aim, elevation.value_or(0.0), 0.0, 0.0});
-      }
-    std::vector<ShotAction> played;
-    for (const ShotAction& a : actions)
-      if (std::isfinite(a.speed)) played.push_back(a);
-    Scenario scan = s;
-    scan.cue = ShotStrike{};
-    scan.cue->ball = cue_id;
-    const ManyResult m = played.empty() ? ManyResult{} : simulate_many(scan, played, {}, ManyOptions{});
-    planner.count(m.shots);
-    // Each potting run of aims (the same speed, pocket and cushion count).
-    struct Run {
-      std::size_t pocket;
-      int cushions;
-      double speed, first_aim, last_aim;
-      int aims;
-    };
-    std::vector<Run> runs;
-    const auto n = static_cast<std::size_t>(m.balls);
-    std::size_t k = 0;
-    bool extends = false;
-    for (const ShotAction& a : actions) {
-      if (!std::isfinite(a.speed)) {
-        extends = false;
-        continue;
-      }
-      const std::size_t row = k++;
-      const bool pots = !m.failure[row] && m.first_contact[row] == q.target && m.pocketed[row * n + target] &&
-                        !m.pocketed[row * n + cue];
-      if (!pots) {
-        extends = false;
-        continue;
-      }
-      const auto pocket = static_cast<std::size_t>(m.pocket[row * n + target]);
-      const int cushions = m.cushions[row * n + target];
-      if (extends && runs.back().pocket == pocket && runs.back().cushions == cushions && runs.back().speed == a.speed) {
-        runs.back().last_aim = a.aim_deg;
-        ++runs.back().aims;
-      } else {
-        runs.push_back({pocket, cushions, a.speed, a.aim_deg, a.aim_deg, 1});
-      }
-      extends = true;
-    }
+    int played = 0;
+    const AimScan scan = scan_aims(s, cue, target, played);
+    planner.count(played);
     // Runs into the pocket asked for, of a kind asked for, wider than the
     // aim window of any feasible shot of that kind into that pocket; the
-    // widest first. A run's kind: its middle played once in full, the target
-    // a bank when it meets a rail (a cushion long enough to bank off, not a
-    // pocket's facing) before it drops.
-    std::stable_sort(runs.begin(), runs.end(), [](const Run& a, const Run& b) { return a.aims > b.aims; });
-    const double scan_step = 2.0 * half / kScanAims;
+    // widest first.
     std::size_t found = 0;
-    for (const Run& r : runs) {
+    for (const AimRun& r : scan.runs) {
       if (found == kScanCandidates) break;
       if (q.pocket && static_cast<std::size_t>(*q.pocket) != r.pocket) continue;
-      Candidate c;
-      c.pocket = r.pocket;
-      c.first_ball = target;
-      c.aim_deg = 0.5 * (r.first_aim + r.last_aim);
-      const std::optional<double> elevation = clearing_elevation(s, cue, c.aim_deg, 0.0, 0.0);
+      const std::optional<double> elevation = clearing_elevation(s, cue, 0.5 * (r.first_aim + r.last_aim), 0.0, 0.0);
       if (!elevation) continue;
-      std::vector<SimulationBall> balls = s.balls;
-      balls[cue].state = strike_ball(to_strike(ShotAction{r.speed, c.aim_deg, *elevation, 0.0, 0.0}, R),
-                                     balls[cue].state.position, ball, s.cue_parameters);
       if (planner.runs() >= q.simulations * 3 / 5) break;
       planner.count(1);
-      SimulationResult played_out;
-      try {
-        played_out = simulate_unchecked(s.table, balls, s.settings);
-      } catch (const SimulationError&) {
-        continue;
-      }
-      const BallTrajectory& t = played_out.balls[target];
-      if (!t.pocketed || t.segments.size() < 2) continue;
-      for (const Event& e : played_out.events) {
-        if (e.type != EventType::ball_cushion || e.ball != q.target) continue;
-        const CushionSegment& seg = s.table.cushions[static_cast<std::size_t>(e.other)];
-        if (norm(seg.end - seg.start) >= 6.0 * R) c.cushions.push_back(static_cast<std::size_t>(e.other));
-      }
-      c.kind = c.cushions.empty() ? ShotKind::direct : ShotKind::bank;
-      const ShotKind kind = c.kind;
-      if (std::find(q.kinds.begin(), q.kinds.end(), kind) == q.kinds.end() || c.cushions.size() > 2) continue;
+      const std::optional<ScannedCandidate> sc = scanned_candidate(s, cue, target, r, *elevation);
+      if (!sc) continue;
+      const Candidate& c = sc->candidate;
+      if (std::find(q.kinds.begin(), q.kinds.end(), c.kind) == q.kinds.end() || c.cushions.size() > 2) continue;
       const bool known = std::any_of(feasible.begin(), feasible.end(), [&](const PlannedShot& f) {
-        return f.kind == kind && f.pocket == static_cast<int>(r.pocket) && f.cushions.size() == c.cushions.size() &&
-               f.aim_window_deg[1] - f.aim_window_deg[0] >= r.aims * scan_step;
+        return f.kind == c.kind && f.pocket == static_cast<int>(r.pocket) && f.cushions.size() == c.cushions.size() &&
+               f.aim_window_deg[1] - f.aim_window_deg[0] >= r.aims * scan.step_deg;
       });
       if (known) continue;
       ++found;
-      const Vec2 last = t.segments.back().state.velocity, first = t.segments[1].state.velocity;
-      if (!(norm(last) > 0.0) || !(norm(first) > 0.0)) continue;
-      c.last_leg = last / norm(last);
-      c.cut_deg = std::acos(std::clamp(dot(first / norm(first), Vec2{std::cos(c.aim_deg * kDegree),
-                                                                        std::sin(c.aim_deg * kDegree)}),
-                                       -1.0, 1.0)) /
-                  kDegree;
-      c.what = std::string(to_string(kind)) + " into " + s.table.pockets[r.pocket].name;
-      for (std::size_t i = 0; i < c.cushions.size(); ++i)
-        c.what += (i == 0 ? " off " : ", then ") + cushion_name(s.table, c.cushions[i]);
-      c.what += " (found by the aim scan)";
+      if (!sc->has_legs) continue;
       candidates.push_back(c);
       const int runs_before = planner.runs();
       std::string why;
@@ -1246,17 +1286,13 @@ ShotPlanResult plan_shot(const Scenario& table_state, const PlanRequest& q) {
       return feasible[a].success_probability > feasible[b].success_probability;
     return feasible[a].window_probability > feasible[b].window_probability;
   });
-  std::vector<PlannedShot> others;
-  for (std::size_t i : rest) others.push_back(std::move(feasible[i]));
-  feasible = std::move(others);
-  feasible.insert(feasible.begin(), PlannedShot{});  // the chosen one's place (moved out above)
-  // The alternatives: the best variant (tip height, speed) of each other
-  // shot, a shot being its kind, pocket, cushions and intermediate ball.
+  // The alternatives: the best variant (tip height, speed, side) of each
+  // other shot, a shot being its kind, pocket, cushions and intermediate ball.
   const auto same_shot = [](const PlannedShot& a, const PlannedShot& b) {
     return a.kind == b.kind && a.pocket == b.pocket && a.cushions == b.cushions &&
            a.intermediate_ball == b.intermediate_ball;
   };
-  for (std::size_t i = 1; i < feasible.size(); ++i) {
+  for (std::size_t i : rest) {
     const bool shown = same_shot(feasible[i], result.shot) ||
                        std::any_of(result.alternatives.begin(), result.alternatives.end(),
                                    [&](const PlannedShot& a) { return same_shot(a, feasible[i]); });

@@ -267,6 +267,8 @@ struct Choice {
   double seconds = 0.0;      // wall clock
   double cpu_seconds = 0.0;  // the thread's CPU time
   std::string what;          // kind and pocket, for the per-layout record
+  double success_probability = -1.0;       // the planner's own estimate; -1: no shot
+  double next_success_probability = -1.0;  // position play: the leave's next-shot estimate; -1: none
 };
 
 // position_simulations > 0: plan_shot_for_position (position_play.hpp) with
@@ -287,13 +289,16 @@ Choice planner_choice(const Scenario& s, int target, std::uint64_t seed, int sim
       PositionRequest p;
       p.shot = q;
       p.next_simulations = position_simulations;
-      r = plan_shot_for_position(s, p).plan;
+      PositionPlanResult pr = plan_shot_for_position(s, p);
+      c.next_success_probability = pr.leave.next_feasible ? pr.leave.next_success_probability : 0.0;
+      r = std::move(pr.plan);
     } else {
       r = plan_shot(s, q);
     }
     c.found = true;
     c.action = r.shot.strike;
     c.simulations = r.simulations;
+    c.success_probability = r.shot.success_probability;
     c.what = fmt("%s %s%s%s (window %.3f, screen %.3f)", to_string(r.shot.kind), r.shot.pocket_name.c_str(), r.shot.cushion.empty() ? "" : " off ",
                  r.shot.cushion.c_str(), r.shot.window_probability, r.shot.success_probability);
   } catch (const NoFeasibleShot& e) {
@@ -519,6 +524,8 @@ struct RackRecord {
   std::vector<double> decision_seconds, decision_cpu_seconds;
   long long simulations = 0;
   std::string detail;
+  // Per shot played: the planner's estimate and (position play) its leave's next-shot estimate.
+  std::vector<double> planned, planned_next;
 };
 
 Scenario with_balls_at(const Scenario& s, const ManyResult& m, std::size_t shot, std::vector<int>& potted_ids) {
@@ -641,6 +648,8 @@ RackRecord run_rack(const Setup& st, std::uint64_t seed, int planner_simulations
       return rec;
     }
     ++rec.shots;
+    rec.planned.push_back(c.success_probability);
+    rec.planned_next.push_back(c.next_success_probability);
     if (m.miscue[0]) {
       rec.stop = Stop::miscue;
       return rec;
@@ -1003,9 +1012,15 @@ int run(const Options& o) {
     json += "  \"per_rack\": [\n";
     for (std::size_t k = 0; k < recs.size(); ++k) {
       const RackRecord& r = recs[k];
-      json += fmt("   {\"seed\": %llu, \"on_break\": %d, \"potted\": %d, \"shots\": %d, \"ended_by\": \"%s\", \"detail\": %s}%s\n",
+      std::string planned, next;
+      for (std::size_t j = 0; j < r.planned.size(); ++j) {
+        planned += (j ? ", " : "") + num(r.planned[j]);
+        next += (j ? ", " : "") + num(r.planned_next[j]);
+      }
+      json += fmt("   {\"seed\": %llu, \"on_break\": %d, \"potted\": %d, \"shots\": %d, \"ended_by\": \"%s\", "
+                  "\"planned\": [%s], \"planned_next\": [%s], \"detail\": %s}%s\n",
                   static_cast<unsigned long long>(r.seed), r.on_break, r.potted, r.shots, kStopNames[static_cast<int>(r.stop)],
-                  quoted(r.detail).c_str(), k + 1 < recs.size() ? "," : "");
+                  planned.c_str(), next.c_str(), quoted(r.detail).c_str(), k + 1 < recs.size() ? "," : "");
     }
     json += "  ]\n }";
   }

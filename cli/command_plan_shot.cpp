@@ -44,6 +44,7 @@ nlohmann::ordered_json leave_json(const Leave& l, int next) {
   j["next_success_probability"] = l.next_success_probability;
   j["next_kind"] = l.next_kind.empty() ? nlohmann::ordered_json(nullptr) : nlohmann::ordered_json(l.next_kind);
   j["next_pocket"] = l.next_pocket.empty() ? nlohmann::ordered_json(nullptr) : nlohmann::ordered_json(l.next_pocket);
+  j["screened_probability"] = l.screened_probability;
   j["score"] = l.score;
   return j;
 }
@@ -208,7 +209,7 @@ void run_plan_shot(const PlanShotFlags& f, std::ostream& out, std::ostream& err)
     line += l.next_feasible ? "P = " + fixed(l.next_success_probability, 3) + " (" + l.next_kind + " into " +
                                   l.next_pocket + ")"
                             : "no feasible shot";
-    return line + "; P(both) = " + fixed(l.score, 3);
+    return line + "; P(both) = " + fixed(l.score, 3) + " (this pot screened at " + fixed(l.screened_probability, 3) + ")";
   };
   if (f.position) out << "  position   " << leave_line(position.leave) << "\n";
   out << "  cost       " << plan.simulations << (f.position ? " simulations at most, " : " simulations, ")
@@ -263,9 +264,8 @@ Command add_plan_shot_command(CLI::App& app) {
                   "Write the viewer page of the planned shot (noise-free) with the aim line and ghost ball");
   sub->add_flag("--json", flags->json, "Print one JSON object");
   sub->add_flag("--position", flags->position,
-                "Play for position: among the shots that pot (planned freely and at centre ball, draw,\n"
-                "follow), the one that leaves the best next shot, scored P(this pot) x P(next pot) on the\n"
-                "table each leaves");
+                "Play for position: among the shots that pot and their spin and speed variants, the one\n"
+                "that leaves the best next shot, scored P(this pot) x P(next pot) on the table each leaves");
   sub->add_option("--next", flags->next, "With --position: id of the next ball (default: the lowest id left)");
   sub->add_option("--next-simulations", flags->next_simulations,
                   "With --position: engine runs of each next-shot plan, [500, 1e6]")

@@ -3,10 +3,12 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <string>
 #include <utility>
 
 #include "cueball/errors.hpp"
+#include "shot_search.hpp"
 
 namespace cueball {
 
@@ -24,10 +26,12 @@ int default_next_target(const Scenario& s, int cue_ball, int target) {
   return next;
 }
 
-// A candidate and the plan that produced it.
+// A candidate shot, the table it leaves and its leave's scores.
 struct Candidate {
   PlannedShot shot;
   Leave leave;
+  Scenario left;
+  double next_window = 0.0;  // the best next shot's window probability (1: the next ball went down too)
 };
 
 }  // namespace
@@ -70,75 +74,109 @@ PositionPlanResult plan_shot_for_position(const Scenario& table_state, const Pos
     result.next_target = default_next_target(s, cue_id, q.shot.target);
   }
 
-  // The free plan (its spin, speed and side variants) first, then centre
-  // ball, draw and follow; the request's tip height alone when it gives one.
-  const std::vector<std::optional<double>> heights =
-      q.shot.height ? std::vector<std::optional<double>>{*q.shot.height}
-                    : std::vector<std::optional<double>>{std::nullopt, 0.0, -0.3, 0.3};
-  std::vector<Candidate> candidates;
-  int simulations = 0;
-  std::optional<NoFeasibleShot> infeasible;
-  for (const std::optional<double>& height : heights) {
-    PlanRequest at_height = q.shot;
-    at_height.height = height;
-    try {
-      ShotPlanResult plan = plan_shot(s, at_height);
-      simulations += plan.simulations;
-      if (candidates.empty()) result.plan.rejected = plan.rejected;
-      candidates.push_back({std::move(plan.shot), {}});
-      for (PlannedShot& alt : plan.alternatives) candidates.push_back({std::move(alt), {}});
-    } catch (const NoFeasibleShot& e) {
-      if (!infeasible) infeasible.emplace(e);
-    }
-  }
-  if (candidates.empty()) throw *infeasible;
+  PlanRequest next = q.shot;
+  next.cue_ball = cue_id;
+  next.target = result.next_target;
+  next.pocket.reset();
+  next.simulations = q.next_simulations;
+
+  // 1. The shot planned with the wide variant search: every feasible shot
+  // and variant is a candidate leave.
+  ShotSearch wide;
+  wide.variant_heights = {kPositionHeights.begin(), kPositionHeights.end()};
+  wide.variant_speeds = {kPositionSpeedFactors.begin(), kPositionSpeedFactors.end()};
+  wide.vary_easy = true;
+  wide.variant_runs = kPositionVariantBudgets * q.shot.simulations;
+  if (result.next_target < 0) wide = ShotSearch{};  // no lookahead: plan_shot()'s own plan
+  SearchedShots found = search_shots(s, q.shot, wide);
+  int simulations = found.plan.simulations;
+  result.plan.rejected = std::move(found.plan.rejected);
   result.plan.cue_ball = cue_id;
+  if (result.next_target < 0) {
+    result.plan = std::move(found.plan);
+    const auto cue_end = std::find_if(result.plan.shot.predicted.begin(), result.plan.shot.predicted.end(),
+                                      [&](const PredictedBall& p) { return p.id == cue_id; });
+    result.leave.cue_ball = cue_end->position;
+    result.leave.screened_probability = result.plan.shot.success_probability;
+    result.leave.score = result.plan.shot.success_probability;
+    result.plan.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    return result;
+  }
 
-  // Best first by this shot's own probability; the weak ones dropped.
+  // 2. The leaves scored by window probabilities alone (no noisy shot): this
+  // shot's, times the best next shot's on the table it leaves.
+  std::vector<Candidate> candidates;
+  double best_window = 0.0;
+  for (const PlannedShot& shot : found.every) best_window = std::max(best_window, shot.window_probability);
+  for (PlannedShot& shot : found.every)
+    if (shot.window_probability >= kPositionKeepFraction * best_window) candidates.push_back({std::move(shot), {}, {}, 0.0});
   std::stable_sort(candidates.begin(), candidates.end(), [](const Candidate& a, const Candidate& b) {
-    return a.shot.success_probability > b.shot.success_probability;
+    return a.shot.window_probability > b.shot.window_probability;
   });
-  const double best_p = candidates.front().shot.success_probability;
-  std::size_t kept = 1;
-  while (kept < candidates.size() && kept < kMaxPositionCandidates &&
-         candidates[kept].shot.success_probability >= kPositionKeepFraction * best_p)
-    ++kept;
-  candidates.resize(kept);
-
+  if (candidates.size() > kPositionLeaves) candidates.resize(kPositionLeaves);
+  ShotSearch windows_only;
+  windows_only.noisy = false;
   for (Candidate& c : candidates) {
     const auto cue_end = std::find_if(c.shot.predicted.begin(), c.shot.predicted.end(),
                                       [&](const PredictedBall& p) { return p.id == cue_id; });
     c.leave.cue_ball = cue_end->position;
-    if (result.next_target < 0) {
-      c.leave.score = c.shot.success_probability;
-      continue;
-    }
-    const Scenario left = table_left_by(s, c.shot);
-    if (!has_ball(left, result.next_target)) {  // the next ball went down too: scored as if there were none
-      c.leave.score = c.shot.success_probability;
-      continue;
-    }
-    PlanRequest next = q.shot;
-    next.cue_ball = cue_id;
-    next.target = result.next_target;
-    next.pocket.reset();
-    next.simulations = q.next_simulations;
+    c.left = table_left_by(s, c.shot);
+    c.next_window = 1.0;  // the next ball went down too: scored as if there were none
+    if (!has_ball(c.left, result.next_target)) continue;
+    c.next_window = 0.0;
     try {
-      const ShotPlanResult n = plan_shot(left, next);
+      const SearchedShots n = search_shots(c.left, next, windows_only);
+      simulations += n.plan.simulations;
+      c.next_window = n.plan.shot.window_probability;
+    } catch (const NoFeasibleShot&) {
+      simulations += q.next_simulations;  // counted at its budget (the error does not say what it spent)
+    }
+  }
+  std::stable_sort(candidates.begin(), candidates.end(), [](const Candidate& a, const Candidate& b) {
+    return a.shot.window_probability * a.next_window > b.shot.window_probability * b.next_window;
+  });
+  if (candidates.size() > kMaxPositionCandidates) candidates.resize(kMaxPositionCandidates);
+
+  // 3. The finalists: each shot screened on the same noisy draws, the next
+  // shot planned in full on the table it leaves.
+  const int screen_shots = std::max(1, q.shot.simulations / kPositionScreenFraction);
+  const auto estimate = [](PlannedShot& shot, int hits, int shots) {
+    shot.noisy_shots = shots;
+    shot.success_probability = static_cast<double>(hits) / shots;
+    shot.success_standard_error = std::sqrt(shot.success_probability * (1.0 - shot.success_probability) / shots);
+    shot.simulations += shots;
+  };
+  for (Candidate& c : candidates) {
+    estimate(c.shot, noisy_outcome(s, q.shot, cue_id, c.shot, screen_shots, kScreenFirstShot).successes, screen_shots);
+    c.leave.screened_probability = c.shot.success_probability;
+    simulations += screen_shots;
+    if (!has_ball(c.left, result.next_target)) {
+      c.leave.score = c.leave.screened_probability;
+      continue;
+    }
+    try {
+      const ShotPlanResult n = plan_shot(c.left, next);
       simulations += n.simulations;
       c.leave.next_feasible = true;
       c.leave.next_success_probability = n.shot.success_probability;
       c.leave.next_kind = to_string(n.shot.kind);
       c.leave.next_pocket = n.shot.pocket_name;
     } catch (const NoFeasibleShot&) {
-      simulations += q.next_simulations;  // counted at its budget (the error does not say what it spent)
+      simulations += q.next_simulations;
     }
-    c.leave.score = c.shot.success_probability * c.leave.next_success_probability;
+    c.leave.score = c.leave.screened_probability * c.leave.next_success_probability;
   }
   std::stable_sort(candidates.begin(), candidates.end(),
                    [](const Candidate& a, const Candidate& b) { return a.leave.score > b.leave.score; });
 
-  result.plan.shot = std::move(candidates.front().shot);
+  // 4. The one played measured on fresh draws (those plan_shot()'s final
+  // estimate takes), so its estimate carries no selection bias.
+  PlannedShot& played = candidates.front().shot;
+  const int final_shots = std::max(1, q.shot.simulations / kPositionEstimateFraction);
+  estimate(played, noisy_outcome(s, q.shot, cue_id, played, final_shots, 0).successes, final_shots);
+  simulations += final_shots;
+
+  result.plan.shot = std::move(played);
   result.leave = candidates.front().leave;
   for (std::size_t k = 1; k < candidates.size(); ++k) {
     result.plan.alternatives.push_back(std::move(candidates[k].shot));

@@ -19,6 +19,7 @@
 
 #include "cueball/errors.hpp"
 #include "enum_names.hpp"
+#include "shot_search.hpp"
 
 namespace cueball {
 
@@ -33,14 +34,13 @@ constexpr int kBaseScreenShots = 16;
 constexpr std::size_t kMaxScreened = 12;
 // Spin and speed variants (step 4 of the header): of the kVariantCandidates
 // best feasible shots by window probability, each tip height of
-// kVariantHeights (ball radii: draw, centre, follow) at each cue-speed factor
-// of kVariantSpeeds on the shot's own speed, one more step along the speed
+// ShotSearch::variant_heights (ball radii: draw, centre, follow) at each
+// cue-speed factor of its variant_speeds on the shot's own speed, one more step along the speed
 // where the best was at an end, and side kVariantSide either way at the best;
 // a variant's search may take kVariantRuns runs or so. A shot whose window
 // probability is kNothingToGain or more is not varied.
+// (ShotSearch's defaults: shot_search.hpp).
 constexpr std::size_t kVariantCandidates = 3;
-constexpr std::array<double, 3> kVariantHeights{-0.3, 0.0, 0.3};
-constexpr std::array<double, 3> kVariantSpeeds{0.7, 1.0, 1.8};
 constexpr double kVariantSide = 0.2;
 constexpr double kNothingToGain = 0.999;
 // Window probabilities in one step of this rank by the brief noisy screen.
@@ -57,10 +57,9 @@ constexpr int kFinalistShots = 200;
 constexpr int kVariantRuns = 60;
 // Engine runs one candidate's noise-free search may take.
 constexpr int kCandidateRuns = 120;
-// Where the screen's noise stream starts (the final estimate's starts at 0,
-// so `cueball batch` of the written scenario with the same seed draws the
-// final estimate's noise).
-constexpr std::uint64_t kScreenFirstShot = std::uint64_t{1} << 40;
+// The screen's noise stream starts at kScreenFirstShot (shot_search.hpp);
+// the final estimate's at 0, so `cueball batch` of the written scenario
+// with the same seed draws the final estimate's noise.
 // Arrival speed of the object ball at the pocket that the first speed aims at, m/s.
 constexpr double kArrivalSpeed = 1.0;
 // The largest step of the aim window's search outwards, degrees: a hole in
@@ -161,8 +160,8 @@ class Planner {
   int runs() const { return runs_; }
   // Counts n runs made elsewhere (the aim scan's batch).
   void count(int n) { runs_ += n; }
-  // Lowers the most runs play() may take (in all).
-  void limit(int most_runs) { most_runs_ = std::min(most_runs_, most_runs); }
+  // Sets the most runs play() may take (in all).
+  void limit(int most_runs) { most_runs_ = most_runs; }
 
   Trial play(const ShotAction& a, const Candidate& c) {
     const std::size_t pocket = c.pocket;
@@ -826,7 +825,37 @@ Scenario scenario_with_shot(const Scenario& table_state, int cue_ball, const Pla
   return s;
 }
 
+NoisyOutcome noisy_outcome(const Scenario& table_state, const PlanRequest& q, int cue_ball, const PlannedShot& shot,
+                           int shots, std::uint64_t first_shot) {
+  Scenario noisy = table_state;
+  noisy.cue = ShotStrike{};  // simulate_many strikes cue.ball with each action
+  noisy.cue->ball = cue_ball;
+  noisy.noise = q.noise;
+  const std::size_t cue = index_of(noisy.balls, cue_ball), target = index_of(noisy.balls, q.target);
+  const int first_contact = shot.intermediate_ball >= 0 ? shot.intermediate_ball : q.target;
+  const std::vector<ShotAction> actions(static_cast<std::size_t>(shots), shot.strike);
+  ManyOptions options;
+  options.seed = q.seed;
+  options.noise = true;
+  options.first_shot = first_shot;
+  const ManyResult m = simulate_many(noisy, actions, {}, options);
+  const auto n = static_cast<std::size_t>(m.balls);
+  NoisyOutcome out;
+  for (std::size_t k = 0; k < static_cast<std::size_t>(m.shots); ++k)
+    if (!m.miscue[k] && !m.failure[k] && m.first_contact[k] == first_contact &&
+        (q.pocket ? m.pocket[k * n + target] == shot.pocket : m.pocketed[k * n + target] != 0) &&
+        !m.pocketed[k * n + cue]) {
+      ++out.successes;
+      out.cue_ball_ends.push_back({m.final_position[(k * n + cue) * 2], m.final_position[(k * n + cue) * 2 + 1]});
+    }
+  return out;
+}
+
 ShotPlanResult plan_shot(const Scenario& table_state, const PlanRequest& q) {
+  return search_shots(table_state, q, ShotSearch{}).plan;
+}
+
+SearchedShots search_shots(const Scenario& table_state, const PlanRequest& q, const ShotSearch& o) {
   const auto start = std::chrono::steady_clock::now();
   const Scenario& s = table_state;
   validate_simulation_input(s.table, s.balls, s.settings);
@@ -1103,27 +1132,8 @@ ShotPlanResult plan_shot(const Scenario& table_state, const PlanRequest& q) {
 
   // 4. Noise: every feasible candidate screened (common noise draws), the
   // best measured again on fresh draws.
-  Scenario noisy = s;
-  noisy.cue = ShotStrike{};  // simulate_many strikes cue.ball with each action
-  noisy.cue->ball = cue_id;
-  noisy.noise = q.noise;
   const auto successes = [&](const PlannedShot& shot, int shots, std::uint64_t first_shot) {
-    const int first_contact = shot.intermediate_ball >= 0 ? shot.intermediate_ball : q.target;
-    const std::vector<ShotAction> actions(static_cast<std::size_t>(shots), shot.strike);
-    ManyOptions options;
-    options.seed = q.seed;
-    options.noise = true;
-    options.first_shot = first_shot;
-    const ManyResult m = simulate_many(noisy, actions, {}, options);
-    const auto n = static_cast<std::size_t>(m.balls);
-    int hits = 0;
-    for (std::size_t k = 0; k < static_cast<std::size_t>(m.shots); ++k)
-      hits += !m.miscue[k] && !m.failure[k] && m.first_contact[k] == first_contact &&
-                      (q.pocket ? m.pocket[k * n + target] == shot.pocket : m.pocketed[k * n + target] != 0) &&
-                      !m.pocketed[k * n + cue]
-                  ? 1
-                  : 0;
-    return hits;
+    return noisy_outcome(s, q, cue_id, shot, shots, first_shot).successes;
   };
   const auto estimate = [](PlannedShot& shot, int hits, int shots) {
     shot.noisy_shots = shots;
@@ -1145,6 +1155,20 @@ ShotPlanResult plan_shot(const Scenario& table_state, const PlanRequest& q) {
   // kFinalists best of all by window probability (and the best by the brief
   // screen) are screened on the same draws, the best of them measured on
   // fresh draws.
+  SearchedShots out;
+  if (!o.noisy) {  // ranked by window probability, no noisy shot
+    std::vector<std::size_t> order(feasible.size());
+    for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
+    std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+      return feasible[a].window_probability > feasible[b].window_probability;
+    });
+    out.every = feasible;
+    result.shot = feasible[order.front()];
+    for (std::size_t k = 1; k < order.size(); ++k) result.alternatives.push_back(feasible[order[k]]);
+    result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    out.plan = std::move(result);
+    return out;
+  }
   const int budget = q.simulations;
   const int finalist_shots = std::min(kFinalistShots, budget / 15);
   const int final_reserve = budget / 5;
@@ -1175,7 +1199,8 @@ ShotPlanResult plan_shot(const Scenario& table_state, const PlanRequest& q) {
     const std::size_t variant_candidates = std::min(kVariantCandidates, order.size());
     // What the variants may spend: the finalists' screen and the final
     // estimate's reserve stay free.
-    const int variant_cap = budget - final_reserve - static_cast<int>(kFinalists) * finalist_shots - screened_shots;
+    const int variant_cap =
+        budget + o.variant_runs - final_reserve - static_cast<int>(kFinalists) * finalist_shots - screened_shots;
     bool spent = false;
     // One variant of feasible[base]: nullopt when it does not pot (or spent).
     const auto vary = [&](std::size_t base, double side, double height, double speed) -> std::optional<std::size_t> {
@@ -1216,12 +1241,12 @@ ShotPlanResult plan_shot(const Scenario& table_state, const PlanRequest& q) {
     };
     for (std::size_t r = 0; r < variant_candidates && !spent; ++r) {
       const std::size_t base = order[r];
-      if (feasible[base].window_probability >= kNothingToGain) continue;
+      if (!o.vary_easy && feasible[base].window_probability >= kNothingToGain) continue;
       // Tip heights x speeds about the base.
       std::size_t best = base;
       double best_factor = 1.0;
-      for (double height : kVariantHeights)
-        for (double factor : kVariantSpeeds) {
+      for (double height : o.variant_heights)
+        for (double factor : o.variant_speeds) {
           if (height == feasible[base].strike.height && factor == 1.0) continue;
           const std::optional<double> speed = variant_speed(feasible[base], factor);
           if (!speed) continue;
@@ -1231,7 +1256,7 @@ ShotPlanResult plan_shot(const Scenario& table_state, const PlanRequest& q) {
         }
       // Further along the speed of the best, when it was at an end.
       if (best_factor != 1.0) {
-        const double factor = best_factor < 1.0 ? kVariantSpeeds.front() : kVariantSpeeds.back();
+        const double factor = best_factor < 1.0 ? o.variant_speeds.front() : o.variant_speeds.back();
         if (const std::optional<double> speed = variant_speed(feasible[best], factor))
           if (const std::optional<std::size_t> v = vary(best, feasible[best].strike.side, feasible[best].strike.height, *speed);
               v && feasible[*v].window_probability > feasible[best].window_probability)
@@ -1272,6 +1297,7 @@ ShotPlanResult plan_shot(const Scenario& table_state, const PlanRequest& q) {
   }
   result.simulations = planner.runs() + screened_shots;
   const int final_shots = std::max(1, budget - result.simulations);
+  out.every = feasible;
   PlannedShot& best = feasible[chosen];
   estimate(best, successes(best, final_shots, 0), final_shots);
   best.simulations += final_shots;
@@ -1299,7 +1325,8 @@ ShotPlanResult plan_shot(const Scenario& table_state, const PlanRequest& q) {
     if (!shown) result.alternatives.push_back(std::move(feasible[i]));
   }
   result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  return result;
+  out.plan = std::move(result);
+  return out;
 }
 
 }  // namespace cueball

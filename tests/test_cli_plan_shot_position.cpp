@@ -40,11 +40,12 @@ TEST(CliPlanShotPosition, JsonGivesEveryShotsLeaveAndPlaysTheBestScore) {
   ASSERT_TRUE(j.contains("position"));
   const nlohmann::json& p = j["position"];
   for (const char* key :
-       {"next", "cue_ball", "next_feasible", "next_success_probability", "next_kind", "next_pocket", "score"})
+       {"next", "cue_ball", "next_feasible", "next_success_probability", "next_kind", "next_pocket",
+        "screened_probability", "score"})
     EXPECT_TRUE(p.contains(key)) << key;
   EXPECT_EQ(p["next"], 2);  // the lowest id left
   EXPECT_DOUBLE_EQ(p["score"].get<double>(),
-                   j["success_probability"].get<double>() * p["next_success_probability"].get<double>());
+                   p["screened_probability"].get<double>() * p["next_success_probability"].get<double>());
   // The cue ball's leave is where the noise-free shot's prediction puts it.
   for (const nlohmann::json& b : j["predicted"]) {
     if (b["id"] == 0) {

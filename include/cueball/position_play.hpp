@@ -2,25 +2,38 @@
 // prefer the one that leaves the cue ball where the next target has the
 // highest success probability. A one-shot lookahead over plan_shot():
 //
-//   1. The shot is planned freely (plan_shot()'s own spin, speed and side
-//      variants) and at each tip height (centre ball, draw -0.3, follow +0.3
-//      ball radii); only at the request's when it gives one: each plan_shot()
-//      call returns its best shot and its ranked alternatives, every one with
-//      the noise-free end of every ball (PlannedShot::predicted).
-//   2. For each of those candidates (those whose success probability is at
-//      least kPositionKeepFraction of the best's, at most kMaxPositionCandidates,
-//      best first), the table it leaves is built: the balls not pocketed, at
-//      rest where the noise-free shot leaves them, and the next target's
-//      shot is planned on it with plan_shot() (the same kinds and noise,
-//      `next_simulations` engine runs). A next shot with no feasible candidate
-//      scores 0.
-//   3. The candidate played maximises P(this pot) x P(next pot), the
+//   1. The shot is planned with a wide variant search: plan_shot()'s step 4
+//      (shot_planner.hpp) with the tip heights kPositionHeights at the cue
+//      speeds kPositionSpeedFactors x the shot's own (kept inside its speed
+//      window), side +-0.2 at the best, for the three best shots even when
+//      they leave nothing to gain in potting; kPositionVariantBudgets x the
+//      request's budget more engine runs for these. Every shot and variant
+//      found, with the noise-free end of every ball (PlannedShot::predicted),
+//      is a candidate; those whose window probability is at least
+//      kPositionKeepFraction of the best's are kept, at most kPositionLeaves,
+//      best first.
+//   2. Each candidate's leave is scored without a noisy shot: its window
+//      probability times the best window probability of the next target's
+//      shots on the table it leaves (the balls not pocketed, at rest where
+//      the noise-free shot leaves them; plan_shot()'s geometry, aim solve and
+//      windows, `next_simulations` runs at most). The window probability is
+//      the planner's prediction of a shot's success (0.98 correlated with
+//      measured success on the planner benchmark).
+//   3. The kMaxPositionCandidates best by that score are the finalists: each
+//      is screened on the same noisy draws (a kPositionScreenFraction-th of
+//      the request's budget: common random numbers, a paired comparison),
+//      and the next target's shot planned in full with plan_shot() on the
+//      table it leaves (the same kinds and noise, `next_simulations` runs). A
+//      next shot with no feasible candidate scores 0.
+//   4. The finalist played maximises P(this pot) x P(next pot), the
 //      probability of potting both under the noise (each estimated from
 //      noisy simulations; the product treats them as independent and takes
 //      the next shot from the noise-free leave: a one-shot lookahead, as in
 //      the computational-pool tournament programs' first level of search:
 //      M. Smith, "PickPocket: A computer billiards shark", Artificial
-//      Intelligence 171 (2007) 1069-1091).
+//      Intelligence 171 (2007) 1069-1091). Its success probability is then
+//      measured on fresh draws (a kPositionEstimateFraction-th of the
+//      budget), so it carries no selection bias.
 //
 // The leave's quality is measured on the exact simulation and the real
 // planner, so it includes what the next shot needs (its cut, distance,
@@ -30,6 +43,7 @@
 // the leave is read from the simulation instead.
 #pragma once
 
+#include <array>
 #include <optional>
 #include <string>
 #include <vector>
@@ -38,10 +52,22 @@
 
 namespace cueball {
 
-/// Candidates weaker than this fraction of the best success probability are not played for position.
+/// Tip heights of the wide variant search, ball radii.
+inline constexpr std::array<double, 5> kPositionHeights{-0.4, -0.2, 0.0, 0.2, 0.4};
+/// Cue-speed factors of the wide variant search, on each shot's own speed.
+inline constexpr std::array<double, 6> kPositionSpeedFactors{0.6, 0.8, 1.0, 1.3, 1.8, 2.5};
+/// Engine runs of the wide variant search, in budgets of the request's.
+inline constexpr int kPositionVariantBudgets = 3;
+/// Candidates whose window probability is under this fraction of the best's are not played for position.
 inline constexpr double kPositionKeepFraction = 0.5;
-/// Most candidates whose leave is evaluated.
-inline constexpr std::size_t kMaxPositionCandidates = 8;
+/// Most candidates whose leave is scored by window probabilities.
+inline constexpr std::size_t kPositionLeaves = 16;
+/// Most candidates whose leave is evaluated in full (the finalists).
+inline constexpr std::size_t kMaxPositionCandidates = 3;
+/// The finalists' common screen takes the request's budget over this; the
+/// final estimate of the one played, the budget over kPositionEstimateFraction.
+inline constexpr int kPositionScreenFraction = 5;
+inline constexpr int kPositionEstimateFraction = 4;
 
 struct PositionRequest {
   PlanRequest shot;  ///< the shot that pots shot.target; its `simulations` is each plan's budget
@@ -58,9 +84,13 @@ struct Leave {
   Vec2 cue_ball;                           ///< where the noise-free shot leaves the cue ball, m
   bool next_feasible = false;              ///< the next shot has a feasible candidate
   double next_success_probability = 0.0;   ///< of the next shot's plan from there (0 when infeasible)
+  /// This shot's success probability on the finalists' common noisy draws.
+  double screened_probability = 0.0;
   std::string next_kind;                   ///< the next shot's kind ("direct", ...); empty when infeasible
   std::string next_pocket;                 ///< the next shot's pocket name; empty when infeasible
-  double score = 0.0;                      ///< success_probability x next_success_probability
+  /// screened_probability x next_success_probability (the next ball potted
+  /// too by the noise-free shot, or no next ball: screened_probability).
+  double score = 0.0;
 };
 
 struct PositionPlanResult {

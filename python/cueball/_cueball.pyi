@@ -1083,7 +1083,7 @@ def plan_shot(
     as the scenario's "noise" (speed m/s, aim_deg, elevation_deg, side, height ball radii); raises
     NoFeasibleShot when nothing pots. position=True plays for position (plan-shot --position):
     each shot's dict gains `position` (next, cue_ball, next_feasible, next_success_probability,
-    next_kind, next_pocket, score). Releases the GIL."""
+    next_kind, next_pocket, screened_probability, score). Releases the GIL."""
 
 def _time_run_scenario(scenario: _Scenario = None, repetitions: _Int = 100) -> float:
     """Benchmark hook: seconds per run of the library's run_scenario(), timed in C++."""

@@ -120,6 +120,7 @@ py::dict leave_dict(const cueball::Leave& l, int next) {
   d["next_success_probability"] = l.next_success_probability;
   d["next_kind"] = l.next_kind.empty() ? py::object(py::none()) : py::object(py::str(l.next_kind));
   d["next_pocket"] = l.next_pocket.empty() ? py::object(py::none()) : py::object(py::str(l.next_pocket));
+  d["screened_probability"] = l.screened_probability;
   d["score"] = l.score;
   return d;
 }
@@ -207,11 +208,13 @@ void bind_shot_planner(py::module_& m) {
       "speed_window (m/s),\n"
       "robot {tip_height m, cue_speed m/s}, predicted, simulations, seconds, alternatives, rejected)\n"
       "and `scenario`, the Scenario with the planned cue (simulate() replays the plan). position=True\n"
-      "plays for position (position_play.hpp; cueball plan-shot --position): the shots planned freely\n"
-      "and at centre ball, draw and follow, the one played maximising P(pot) x P(next ball's pot) on the table it leaves;\n"
+      "plays for position (position_play.hpp; cueball plan-shot --position): every shot and its\n"
+      "variants at five tip heights and six speeds, the leaves scored by window probabilities, the three\n"
+      "best screened and the next ball planned on the table each leaves; the one played maximises\n"
+      "P(pot, screened) x P(next ball's pot), its success_probability then measured on fresh draws;\n"
       "next: the next ball's id (None: the lowest id left); next_simulations: each next plan's budget;\n"
       "each shot's dict then has `position` (next, cue_ball, next_feasible, next_success_probability,\n"
-      "next_kind, next_pocket, score). Raises\n"
+      "next_kind, next_pocket, screened_probability, score). Raises\n"
       "NoFeasibleShot when no candidate pots. Releases the GIL while planning.");
 }
 

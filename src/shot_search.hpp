@@ -1,0 +1,50 @@
+// Inside the library: plan_shot() with a wider or a cheaper search, for its
+// callers here (position play). The public entry is shot_planner.hpp.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "cueball/shot_planner.hpp"
+
+namespace cueball {
+
+/// What plan_shot()'s step 4 tries (shot_planner.hpp); the defaults are plan_shot()'s own.
+struct ShotSearch {
+  std::vector<double> variant_heights{-0.3, 0.0, 0.3};  ///< tip heights of the variants, ball radii
+  std::vector<double> variant_speeds{0.7, 1.0, 1.8};    ///< cue-speed factors of the variants
+  /// Vary a shot even when its window probability leaves nothing to gain
+  /// (position play wants the spin and speed that leave the cue ball well).
+  bool vary_easy = false;
+  /// Engine runs the variants may take beyond the request's budget.
+  int variant_runs = 0;
+  /// False: no noisy shot at all (no screen, no variants, no estimate): the
+  /// feasible shots ranked by window probability, success_probability 0.
+  bool noisy = true;
+};
+
+struct SearchedShots {
+  ShotPlanResult plan;
+  /// Every feasible shot and variant found, the chosen one among them (its
+  /// success probability as screened, not as finally estimated).
+  std::vector<PlannedShot> every;
+};
+
+/// plan_shot() with `search` (plan_shot(s, q) is search_shots(s, q, {}).plan).
+SearchedShots search_shots(const Scenario& table_state, const PlanRequest& q, const ShotSearch& search);
+
+/// Noisy repeats of a planned shot under q.noise and q.seed, counted by the
+/// planner's rule of success (shot_planner.hpp), shots first_shot,
+/// first_shot + 1, ... of the seed's stream.
+struct NoisyOutcome {
+  int successes = 0;
+  std::vector<Vec2> cue_ball_ends;  ///< where the cue ball stops after each success
+};
+NoisyOutcome noisy_outcome(const Scenario& table_state, const PlanRequest& q, int cue_ball, const PlannedShot& shot,
+                           int shots, std::uint64_t first_shot);
+
+/// Where plan_shot()'s noisy screen starts in the seed's stream (its final
+/// estimate starts at 0).
+inline constexpr std::uint64_t kScreenFirstShot = std::uint64_t{1} << 40;
+
+}  // namespace cueball

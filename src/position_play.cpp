@@ -31,7 +31,8 @@ struct Candidate {
   PlannedShot shot;
   Leave leave;
   Scenario left;
-  double next_window = 0.0;  // the best next shot's window probability (1: the next ball went down too)
+  int next_id = -1;          // the ball planned next on the table it leaves; -1: none left
+  double next_window = 0.0;  // the best next shot's window probability (1: no ball left)
 };
 
 }  // namespace
@@ -109,7 +110,7 @@ PositionPlanResult plan_shot_for_position(const Scenario& table_state, const Pos
   double best_window = 0.0;
   for (const PlannedShot& shot : found.every) best_window = std::max(best_window, shot.window_probability);
   for (PlannedShot& shot : found.every)
-    if (shot.window_probability >= kPositionKeepFraction * best_window) candidates.push_back({std::move(shot), {}, {}, 0.0});
+    if (shot.window_probability >= kPositionKeepFraction * best_window) candidates.push_back({std::move(shot), {}, {}, -1, 0.0});
   std::stable_sort(candidates.begin(), candidates.end(), [](const Candidate& a, const Candidate& b) {
     return a.shot.window_probability > b.shot.window_probability;
   });
@@ -121,13 +122,18 @@ PositionPlanResult plan_shot_for_position(const Scenario& table_state, const Pos
                                       [&](const PredictedBall& p) { return p.id == cue_id; });
     c.leave.cue_ball = cue_end->position;
     c.left = table_left_by(s, c.shot);
-    c.next_window = 1.0;  // the next ball went down too: scored as if there were none
-    if (!has_ball(c.left, result.next_target)) continue;
+    // The next target, or when the shot pots it too, the lowest ball left
+    // (9-ball's rule); none left: nothing to score.
+    PlanRequest n = next;
+    n.target = has_ball(c.left, result.next_target) ? result.next_target : default_next_target(c.left, cue_id, cue_id);
+    c.next_id = n.target;
+    c.next_window = 1.0;
+    if (n.target < 0) continue;
     c.next_window = 0.0;
     try {
-      const SearchedShots n = search_shots(c.left, next, windows_only);
-      simulations += n.plan.simulations;
-      c.next_window = n.plan.shot.window_probability;
+      const SearchedShots w = search_shots(c.left, n, windows_only);
+      simulations += w.plan.simulations;
+      c.next_window = w.plan.shot.window_probability;
     } catch (const NoFeasibleShot&) {
       simulations += q.next_simulations;  // counted at its budget (the error does not say what it spent)
     }
@@ -150,12 +156,14 @@ PositionPlanResult plan_shot_for_position(const Scenario& table_state, const Pos
     estimate(c.shot, noisy_outcome(s, q.shot, cue_id, c.shot, screen_shots, kScreenFirstShot).successes, screen_shots);
     c.leave.screened_probability = c.shot.success_probability;
     simulations += screen_shots;
-    if (!has_ball(c.left, result.next_target)) {
+    if (c.next_id < 0) {
       c.leave.score = c.leave.screened_probability;
       continue;
     }
     try {
-      const ShotPlanResult n = plan_shot(c.left, next);
+      PlanRequest after = next;
+      after.target = c.next_id;
+      const ShotPlanResult n = plan_shot(c.left, after);
       simulations += n.simulations;
       c.leave.next_feasible = true;
       c.leave.next_success_probability = n.shot.success_probability;

@@ -54,13 +54,18 @@ PositionRequest request_for(int target) {
 }
 
 // The next ball's success probability from an independent plan on the
-// table `shot` leaves: 0 when it has no feasible shot, nullopt when the
-// noise-free shot pots the next ball too.
+// table `shot` leaves (when the noise-free shot pots the next ball too, of
+// the lowest id left): 0 when it has no feasible shot, nullopt when no ball
+// is left.
 std::optional<double> next_probability(const Scenario& s, const PlannedShot& shot, int cue_ball, int next,
                                        int next_simulations) {
   const Scenario left = table_left_by(s, shot);
-  if (std::none_of(left.balls.begin(), left.balls.end(), [&](const SimulationBall& b) { return b.id == next; }))
-    return std::nullopt;
+  if (std::none_of(left.balls.begin(), left.balls.end(), [&](const SimulationBall& b) { return b.id == next; })) {
+    next = -1;
+    for (const SimulationBall& b : left.balls)
+      if (b.id != cue_ball && (next < 0 || b.id < next)) next = b.id;
+    if (next < 0) return std::nullopt;
+  }
   PlanRequest q;
   q.cue_ball = cue_ball;
   q.target = next;
@@ -73,7 +78,7 @@ std::optional<double> next_probability(const Scenario& s, const PlannedShot& sho
 }
 
 // The two-ball score of a shot: `p` times the next ball's probability (p
-// alone when the shot pots the next ball too).
+// alone when no ball is left).
 double two_ball_score(const Scenario& s, const PlannedShot& shot, double p, int cue_ball, int next,
                       int next_simulations) {
   return p * next_probability(s, shot, cue_ball, next, next_simulations).value_or(1.0);

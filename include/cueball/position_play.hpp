@@ -18,7 +18,9 @@
 //      the noise-free shot leaves them; plan_shot()'s geometry, aim solve and
 //      windows, `next_simulations` runs at most). The window probability is
 //      the planner's prediction of a shot's success (0.98 correlated with
-//      measured success on the planner benchmark).
+//      measured success on the planner benchmark). A shot that pots the
+//      next target too is scored on the ball after it (the lowest id left,
+//      9-ball's rule), and with no ball left on its window probability alone.
 //   3. The kMaxPositionCandidates best by that score are the finalists: each
 //      is screened on the same noisy draws (a kPositionScreenFraction-th of
 //      the request's budget: common random numbers, a paired comparison),
@@ -88,8 +90,9 @@ struct Leave {
   double screened_probability = 0.0;
   std::string next_kind;                   ///< the next shot's kind ("direct", ...); empty when infeasible
   std::string next_pocket;                 ///< the next shot's pocket name; empty when infeasible
-  /// screened_probability x next_success_probability (the next ball potted
-  /// too by the noise-free shot, or no next ball: screened_probability).
+  /// screened_probability x next_success_probability. When the noise-free
+  /// shot pots the next target too, next_* are of the ball after it (the
+  /// lowest id left); with no ball left, score = screened_probability.
   double score = 0.0;
 };
 
@@ -105,9 +108,7 @@ struct PositionPlanResult {
 /// the table or is the cue ball or the target, InvalidArgument
 /// ("next_simulations") out of range. plan.simulations and plan.seconds
 /// count every plan made (a next plan that finds no feasible shot counted at
-/// its whole budget, so plan.simulations is an upper bound). A leave whose
-/// noise-free shot pots the next target too scores as if there were no next
-/// target (its success probability alone).
+/// its whole budget, so plan.simulations is an upper bound).
 PositionPlanResult plan_shot_for_position(const Scenario& table_state, const PositionRequest& request);
 
 /// The table a planned shot leaves: its balls not pocketed, at rest where

@@ -67,6 +67,7 @@
 
 #include "cueball/batch.hpp"
 #include "cueball/errors.hpp"
+#include "cueball/ball_in_hand.hpp"
 #include "cueball/position_play.hpp"
 #include "cueball/rack.hpp"
 #include "cueball/scenario.hpp"
@@ -304,6 +305,39 @@ Choice planner_choice(const Scenario& s, int target, std::uint64_t seed, int sim
   } catch (const NoFeasibleShot& e) {
     c.simulations = simulations;  // the API does not report them: its budget is the upper bound
     c.what = std::string(e.what()).substr(0, 2000);  // "no feasible shot pots ball 1 (12 candidates: ...)"
+  }
+  c.seconds = seconds_since(start);
+  c.cpu_seconds = thread_cpu_seconds() - cpu_start;
+  return c;
+}
+
+// The cue ball in hand placed by plan_ball_in_hand (ball_in_hand.hpp), then
+// the shot played for position from there; `s` gets the cue ball's spot.
+Choice in_hand_choice(Scenario& s, int target, std::uint64_t seed, int simulations, int position_simulations,
+                      const std::vector<ShotKind>& kinds) {
+  Choice c;
+  const auto start = std::chrono::steady_clock::now();
+  const double cpu_start = thread_cpu_seconds();
+  BallInHandRequest q;
+  q.position.shot.target = target;
+  q.position.shot.seed = seed;
+  q.position.shot.simulations = simulations;
+  q.position.shot.kinds = kinds;
+  q.position.next_simulations = position_simulations > 0 ? position_simulations : 1000;
+  try {
+    BallInHandResult r = plan_ball_in_hand(s, q);
+    s = r.table;
+    const PlannedShot& shot = r.plan.plan.shot;
+    c.found = true;
+    c.action = shot.strike;
+    c.simulations = r.plan.plan.simulations;
+    c.success_probability = shot.success_probability;
+    c.next_success_probability = r.plan.leave.next_feasible ? r.plan.leave.next_success_probability : 0.0;
+    c.what = fmt("in hand at (%.3f, %.3f): %s %s (window %.3f, screen %.3f)", r.cue_ball.x, r.cue_ball.y,
+                 to_string(shot.kind), shot.pocket_name.c_str(), shot.window_probability, shot.success_probability);
+  } catch (const NoFeasibleShot& e) {
+    c.simulations = simulations;
+    c.what = std::string(e.what()).substr(0, 2000);
   }
   c.seconds = seconds_since(start);
   c.cpu_seconds = thread_cpu_seconds() - cpu_start;
@@ -610,7 +644,7 @@ Scenario broken_rack(const Setup& st, std::uint64_t seed, int& on_break) {
 }
 
 RackRecord run_rack(const Setup& st, std::uint64_t seed, int planner_simulations, int position_simulations,
-                    const std::vector<ShotKind>& kinds) {
+                    const std::vector<ShotKind>& kinds, bool in_hand_planner) {
   RackRecord rec;
   rec.seed = seed;
   Scenario s = broken_rack(st, seed, rec.on_break);
@@ -620,8 +654,11 @@ RackRecord run_rack(const Setup& st, std::uint64_t seed, int planner_simulations
       if (b.id != 0) target = std::min(target, b.id);
     Choice c;
     try {
-      c = planner_choice(s, target, stream_seed(seed, 100 + static_cast<std::uint64_t>(rec.shots)), planner_simulations,
-                         position_simulations, kinds);
+      const std::uint64_t shot_seed = stream_seed(seed, 100 + static_cast<std::uint64_t>(rec.shots));
+      if (in_hand_planner && rec.shots == 0)
+        c = in_hand_choice(s, target, shot_seed, planner_simulations, position_simulations, kinds);
+      else
+        c = planner_choice(s, target, shot_seed, planner_simulations, position_simulations, kinds);
     } catch (const std::exception& e) {  // the layout the engine left (never seen)
       rec.stop = Stop::rejected;
       rec.detail = e.what();
@@ -741,6 +778,7 @@ struct Options {
   int threads = 1;
   int planner_simulations = 4000;
   int position_simulations = 0;  // 0: run-outs without position play
+  bool in_hand_planner = false;  // the run-outs' first cue ball placed by plan_ball_in_hand, not by the rule
   std::vector<ShotKind> kinds = PlanRequest{}.kinds;  // the run-outs' shot kinds
   std::string json;
   std::string layouts_out;  // a folder: each single-pot layout written there as a scenario
@@ -751,7 +789,7 @@ void usage() {
   std::printf(
       "usage: cueball-planner-benchmark [--suite single|runout|all] [--layouts N] [--racks N] [--repeats N]\n"
       "                                 [--seed S] [--planner-simulations N] [--position N] [--threads T]\n"
-      "                                 [--json FILE] [--layouts-out DIR]\n"
+      "                                 [--in-hand rule|planner] [--json FILE] [--layouts-out DIR]\n"
       "The shot planner against a ghost-ball baseline and an exhaustive grid search (docs/planner-benchmark.md).\n"
       "  --suite S                single, runout or all (default all)\n"
       "  --layouts N              single-pot layouts, [1, 1000000] (default 1000); layout k from seed S + k\n"
@@ -761,6 +799,9 @@ void usage() {
       "  --planner-simulations N  plan_shot's budget, [%d, %d] (default 4000, the planner's default)\n"
       "  --position N             run-outs played for position (plan_shot_for_position), N engine runs per\n"
       "                           next-shot plan, [%d, %d] (default: no position play)\n"
+      "  --in-hand H              the run-outs' cue ball in hand after the break: rule (a straight-in on the\n"
+      "                           lowest ball, the default) or planner (plan_ball_in_hand, with --position's\n"
+      "                           budget, 1000 without it)\n"
       "  --kinds LIST             the run-outs' shot kinds, comma-separated: direct, bank, kick, combination\n"
       "                           (default direct,bank, the planner's default)\n"
       "  --threads T              layouts in parallel, [1, 256] (default 1); results do not depend on it, timings do\n"
@@ -780,11 +821,11 @@ Options parse(int argc, char** argv) {
       std::exit(0);
     }
     static const char* const known[] = {"--suite",  "--layouts", "--racks", "--repeats", "--seed", "--planner-simulations",
-                                        "--position", "--kinds", "--threads", "--json", "--layouts-out"};
+                                        "--position", "--kinds", "--threads", "--json", "--layouts-out", "--in-hand"};
     if (std::find_if(std::begin(known), std::end(known), [&](const char* k) { return flag == k; }) == std::end(known))
       bad_flag("flag", flag,
                "--suite, --layouts, --racks, --repeats, --seed, --planner-simulations, --position, --kinds, --threads, "
-               "--json, --layouts-out, --help");
+               "--json, --layouts-out, --in-hand, --help");
     if (i + 1 >= argc) bad_flag(flag, "", "a value after the flag");
     const std::string value = argv[++i];
     if (flag == "--suite") {
@@ -810,6 +851,9 @@ Options parse(int argc, char** argv) {
         o.kinds.push_back(*kind);
         from = comma + 1;
       }
+    } else if (flag == "--in-hand") {
+      if (value != "rule" && value != "planner") bad_flag(flag, value, "rule, planner");
+      o.in_hand_planner = value == "planner";
     } else if (flag == "--position") {
       o.position_simulations = static_cast<int>(integer_flag(flag, value, kMinPlanSimulations, kMaxPlanSimulations));
     } else if (flag == "--planner-simulations") {
@@ -863,9 +907,10 @@ int run(const Options& o) {
   const Setup st = make_setup();
   std::string json = "{\n \"tool\": \"cueball-planner-benchmark\",\n";
   json += fmt(" \"options\": {\"suite\": \"%s\", \"layouts\": %d, \"racks\": %d, \"repeats\": %d, \"seed\": %llu, "
-              "\"planner_simulations\": %d, \"position_simulations\": %d, \"kinds\": \"%s\", \"threads\": %d},\n",
+              "\"planner_simulations\": %d, \"position_simulations\": %d, \"in_hand\": \"%s\", \"kinds\": \"%s\", "
+              "\"threads\": %d},\n",
               o.suite.c_str(), o.layouts, o.racks, o.repeats, static_cast<unsigned long long>(o.seed), o.planner_simulations,
-              o.position_simulations, kinds_text(o.kinds).c_str(), o.threads);
+              o.position_simulations, o.in_hand_planner ? "planner" : "rule", kinds_text(o.kinds).c_str(), o.threads);
   const CueStrikeNoise& n = st.base.noise;
   json += fmt(" \"noise\": {\"speed\": %g, \"aim_deg\": %g, \"elevation_deg\": %g, \"side\": %g, \"height\": %g},\n", n.speed,
               n.aim / kDeg, n.elevation / kDeg, n.side_offset / st.radius, n.height_offset / st.radius);
@@ -973,7 +1018,8 @@ int run(const Options& o) {
     std::vector<RackRecord> recs(static_cast<std::size_t>(o.racks));
     parallel_for(o.racks, o.threads, [&](int k) {
       recs[static_cast<std::size_t>(k)] =
-          run_rack(st, o.seed + static_cast<std::uint64_t>(k), o.planner_simulations, o.position_simulations, o.kinds);
+          run_rack(st, o.seed + static_cast<std::uint64_t>(k), o.planner_simulations, o.position_simulations, o.kinds,
+                   o.in_hand_planner);
     });
     const double wall = seconds_since(start);
     int stops[kStops] = {};

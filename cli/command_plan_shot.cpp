@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "common.hpp"
+#include "cueball/ball_in_hand.hpp"
 #include "cueball/errors.hpp"
 #include "cueball/position_play.hpp"
 #include "cueball/scenario.hpp"
@@ -32,6 +33,8 @@ struct PlanShotFlags {
   SigmaFlags sigma;
   bool json = false;
   bool position = false;
+  bool in_hand = false;
+  std::string region;             // "x_min,x_max,y_min,y_max", m; empty: anywhere
   std::optional<int> next;        // none: the lowest id left
   double next_simulations = kMinPlanSimulations;
 };
@@ -144,20 +147,52 @@ void run_plan_shot(const PlanShotFlags& f, std::ostream& out, std::ostream& err)
     throw UsageError("--kinds = " + quote_input(f.kinds) + " names no kind; allowed: a comma-separated list of " +
                      shot_kind_names());
 
-  if (!f.position && f.next) throw UsageError("--next = " + std::to_string(*f.next) + " needs --position");
+  const bool position_play = f.position || f.in_hand;
+  if (!position_play && f.next) throw UsageError("--next = " + std::to_string(*f.next) + " needs --position");
+  if (!f.in_hand && !f.region.empty()) throw UsageError("--region = " + quote_input(f.region) + " needs --in-hand");
+  std::optional<InHandRegion> region;
+  if (!f.region.empty()) {
+    std::vector<double> v;
+    std::stringstream parts(f.region);
+    for (std::string part; std::getline(parts, part, ',');) {
+      std::size_t used = 0;
+      double x = 0.0;
+      try {
+        x = std::stod(part, &used);
+      } catch (const std::exception&) {
+        used = 0;
+      }
+      if (used == 0 || used != part.size() || !std::isfinite(x))
+        throw UsageError("--region = " + quote_input(f.region) + ": " + quote_input(part) +
+                         " is not a finite number; allowed: x_min,x_max,y_min,y_max in m");
+      v.push_back(x);
+    }
+    if (v.size() != 4)
+      throw UsageError("--region = " + quote_input(f.region) + " has " + std::to_string(v.size()) +
+                       " numbers; allowed: 4, x_min,x_max,y_min,y_max in m");
+    region = InHandRegion{v[0], v[1], v[2], v[3]};
+  }
   check_flag("--next-simulations", f.next_simulations, kMinPlanSimulations, kMaxPlanSimulations,
              "engine runs of each next-shot plan");
   if (f.next_simulations != std::floor(f.next_simulations))
     throw UsageError("--next-simulations = " + format_number(f.next_simulations) + " is not a whole number");
   ShotPlanResult plan;
   PositionPlanResult position;
+  Scenario on = s;  // the table planned on (with --in-hand, the cue ball at its spot)
+  std::optional<BallInHandResult> in_hand;
   try {
-    if (f.position) {
+    if (position_play) {
       PositionRequest p;
       p.shot = q;
       p.next_target = f.next;
       p.next_simulations = static_cast<int>(f.next_simulations);
-      position = plan_shot_for_position(s, p);
+      if (f.in_hand) {
+        in_hand = plan_ball_in_hand(s, BallInHandRequest{p, region});
+        position = in_hand->plan;
+        on = in_hand->table;
+      } else {
+        position = plan_shot_for_position(s, p);
+      }
       plan = position.plan;
     } else {
       plan = plan_shot(s, q);
@@ -167,21 +202,25 @@ void run_plan_shot(const PlanShotFlags& f, std::ostream& out, std::ostream& err)
     const std::string message = e.what();
     if (e.field() == "target" && message.rfind("target", 0) == 0) throw UsageError("--ball" + message.substr(6));
     if (e.field() == "next" && message.rfind("next", 0) == 0) throw UsageError("--next" + message.substr(4));
+    if (e.field() == "region") throw UsageError("--region = " + quote_input(f.region) + ": " + message);
     throw;
   }
   if (!f.scenario_out.empty())
-    write_text_file(f.scenario_out, scenario_to_json(scenario_with_shot(s, plan.cue_ball, plan.shot, q.noise)) + '\n',
+    write_text_file(f.scenario_out, scenario_to_json(scenario_with_shot(on, plan.cue_ball, plan.shot, q.noise)) + '\n',
                     "--scenario-out", "the scenario file");
-  if (!f.html.empty()) write_plan_page(f.html, scenario_with_shot(s, plan.cue_ball, plan.shot, q.noise), plan.cue_ball);
+  if (!f.html.empty()) write_plan_page(f.html, scenario_with_shot(on, plan.cue_ball, plan.shot, q.noise), plan.cue_ball);
   if (f.json) {
-    nlohmann::ordered_json j = shot_json(s, plan.cue_ball, plan.shot, q.noise);
-    if (f.position) j["position"] = leave_json(position.leave, position.next_target);
+    nlohmann::ordered_json j = shot_json(on, plan.cue_ball, plan.shot, q.noise);
+    if (in_hand) j["in_hand"] = {{"cue_ball", {in_hand->cue_ball.x, in_hand->cue_ball.y}},
+                                 {"spots", in_hand->spots},
+                                 {"spots_played", in_hand->spots_played}};
+    if (position_play) j["position"] = leave_json(position.leave, position.next_target);
     j["simulations"] = plan.simulations;
     j["seconds"] = plan.seconds;
     nlohmann::ordered_json alternatives = nlohmann::ordered_json::array();
     for (std::size_t k = 0; k < plan.alternatives.size(); ++k) {
-      alternatives.push_back(shot_json(s, plan.cue_ball, plan.alternatives[k], q.noise));
-      if (f.position) alternatives.back()["position"] = leave_json(position.alternative_leaves[k], position.next_target);
+      alternatives.push_back(shot_json(on, plan.cue_ball, plan.alternatives[k], q.noise));
+      if (position_play) alternatives.back()["position"] = leave_json(position.alternative_leaves[k], position.next_target);
     }
     j["alternatives"] = alternatives;
     j["rejected"] = plan.rejected;
@@ -211,8 +250,12 @@ void run_plan_shot(const PlanShotFlags& f, std::ostream& out, std::ostream& err)
                             : "no feasible shot";
     return line + "; P(both) = " + fixed(l.score, 3) + " (this pot screened at " + fixed(l.screened_probability, 3) + ")";
   };
-  if (f.position) out << "  position   " << leave_line(position.leave) << "\n";
-  out << "  cost       " << plan.simulations << (f.position ? " simulations at most, " : " simulations, ")
+  if (in_hand)
+    out << "  in hand    the cue ball placed at (" << fixed(in_hand->cue_ball.x, 3) << ", " << fixed(in_hand->cue_ball.y, 3)
+        << "): the best of " << in_hand->spots_played << " spots played for position (" << in_hand->spots
+        << " behind ghost balls)\n";
+  if (position_play) out << "  position   " << leave_line(position.leave) << "\n";
+  out << "  cost       " << plan.simulations << (position_play ? " simulations at most, " : " simulations, ")
       << fixed(plan.seconds, 3) << " s\n";
   for (std::size_t k = 0; k < plan.alternatives.size(); ++k) {
     const PlannedShot& alt = plan.alternatives[k];
@@ -220,7 +263,7 @@ void run_plan_shot(const PlanShotFlags& f, std::ostream& out, std::ostream& err)
         << fixed(alt.success_standard_error, 3) << " (" << alt.noisy_shots << " shots), aim "
         << fixed(alt.strike.aim_deg, 3) << " deg, speed " << fixed(alt.strike.speed, 3) << " m/s, height "
         << fixed(alt.strike.height, 2) << "\n";
-    if (f.position) out << "             " << leave_line(position.alternative_leaves[k]) << "\n";
+    if (position_play) out << "             " << leave_line(position.alternative_leaves[k]) << "\n";
   }
   if (!f.scenario_out.empty()) out << "  scenario written to " << f.scenario_out << " (cueball simulate replays it)\n";
   if (!f.html.empty()) out << "  viewer written to " << f.html << " (the shot with its aim line and ghost ball)\n";
@@ -244,7 +287,8 @@ Command add_plan_shot_command(CLI::App& app) {
       "combination: the intermediate ball) and not pocketed. The scenario's own cue strike is\n"
       "ignored. --scenario-out writes the scenario with the planned cue (cueball simulate\n"
       "replays it); --html the viewer page of the planned shot with its aim line and ghost ball. The\n"
-      "--sigma-* flags replace single sigmas of the --noise model; --position plays for position.\n"
+      "--sigma-* flags replace single sigmas of the --noise model; --position plays for position;\n"
+      "--in-hand places the cue ball too (ball in hand), played for position.\n"
       "Exit status 3 when no shot is feasible.");
   sub->add_option("scenario", flags->scenario, "Scenario JSON file (default: the built-in 9-ball break)");
   sub->add_option("--ball", flags->ball, "Id of the ball to pot")->required();
@@ -266,6 +310,11 @@ Command add_plan_shot_command(CLI::App& app) {
   sub->add_flag("--position", flags->position,
                 "Play for position: among the shots that pot and their spin and speed variants, the one\n"
                 "that leaves the best next shot, scored P(this pot) x P(next pot) on the table each leaves");
+  sub->add_flag("--in-hand", flags->in_hand,
+                "Ball in hand: place the cue ball (its place in the scenario ignored) where the shot, played for\n"
+                "position, scores best; spots behind the target's ghost ball for each clear pocket");
+  sub->add_option("--region", flags->region,
+                  "With --in-hand: where the cue ball may go, x_min,x_max,y_min,y_max in m (default: anywhere)");
   sub->add_option("--next", flags->next, "With --position: id of the next ball (default: the lowest id left)");
   sub->add_option("--next-simulations", flags->next_simulations,
                   "With --position: engine runs of each next-shot plan, [500, 1e6]")

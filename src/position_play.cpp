@@ -109,8 +109,16 @@ PositionPlanResult plan_shot_for_position(const Scenario& table_state, const Pos
   std::vector<Candidate> candidates;
   double best_window = 0.0;
   for (const PlannedShot& shot : found.every) best_window = std::max(best_window, shot.window_probability);
-  for (PlannedShot& shot : found.every)
-    if (shot.window_probability >= kPositionKeepFraction * best_window) candidates.push_back({std::move(shot), {}, {}, -1, 0.0});
+  const auto same_strike = [](const ShotAction& a, const ShotAction& b) {
+    return a.speed == b.speed && a.aim_deg == b.aim_deg && a.elevation_deg == b.elevation_deg && a.side == b.side &&
+           a.height == b.height;
+  };
+  for (PlannedShot& shot : found.every) {
+    const bool known = std::any_of(candidates.begin(), candidates.end(),
+                                   [&](const Candidate& c) { return same_strike(c.shot.strike, shot.strike); });
+    if (!known && shot.window_probability >= kPositionKeepFraction * best_window)
+      candidates.push_back({std::move(shot), {}, {}, -1, 0.0});
+  }
   std::stable_sort(candidates.begin(), candidates.end(), [](const Candidate& a, const Candidate& b) {
     return a.shot.window_probability > b.shot.window_probability;
   });

@@ -74,13 +74,6 @@ constexpr double kLateralTol = 0.5e-3;
 constexpr double kOffsetFraction = 0.3;
 constexpr int kOffsetSteps = 3;
 
-double distance_to_path(Vec2 p, Vec2 a, Vec2 b) {
-  const Vec2 ab = b - a;
-  const double len2 = dot(ab, ab);
-  const double t = len2 > 0.0 ? std::clamp(dot(p - a, ab) / len2, 0.0, 1.0) : 0.0;
-  return norm(p - (a + t * ab));
-}
-
 double distance_to_path(Vec3 p, Vec3 a, Vec3 b) {
   const Vec3 ab = b - a;
   const double len2 = dot(ab, ab);

@@ -2,6 +2,7 @@
 // callers here (position play). The public entry is shot_planner.hpp.
 #pragma once
 
+#include <algorithm>
 #include <cstdint>
 #include <vector>
 
@@ -42,6 +43,15 @@ struct NoisyOutcome {
 };
 NoisyOutcome noisy_outcome(const Scenario& table_state, const PlanRequest& q, int cue_ball, const PlannedShot& shot,
                            int shots, std::uint64_t first_shot);
+
+/// Distance from p to the segment a-b (the swept-circle test of a straight
+/// path: another ball's centre within 2R of it blocks it), m.
+inline double distance_to_path(Vec2 p, Vec2 a, Vec2 b) {
+  const Vec2 ab = b - a;
+  const double len2 = dot(ab, ab);
+  const double t = len2 > 0.0 ? std::clamp(dot(p - a, ab) / len2, 0.0, 1.0) : 0.0;
+  return norm(p - (a + t * ab));
+}
 
 /// Where plan_shot()'s noisy screen starts in the seed's stream (its final
 /// estimate starts at 0).

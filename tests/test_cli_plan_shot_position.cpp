@@ -1,7 +1,8 @@
-// Tests of `cueball plan-shot --position` (cli/command_plan_shot.cpp over
-// position_play.hpp): the JSON's "position" objects, the choice by score,
-// the text's position lines, and bad input naming --next and
-// --next-simulations.
+// Tests of `cueball plan-shot --position` and `--in-hand`
+// (cli/command_plan_shot.cpp over position_play.hpp and ball_in_hand.hpp):
+// the JSON's "position" and "in_hand" objects, the choice by score, the
+// text's position lines, the written scenario's cue ball at its spot, and
+// bad input naming --next, --next-simulations and --region.
 #include <gtest/gtest.h>
 
 #include <nlohmann/json.hpp>
@@ -71,6 +72,51 @@ TEST(CliPlanShotPosition, NextBallIsTheOneGivenAndTheTextSaysTheLeave) {
   const CliRun plain = run_cli({"plan-shot", scenario, "--ball", "1", "--simulations", "1000"});
   ASSERT_EQ(plain.status, 0) << plain.err;
   EXPECT_EQ(plain.out.find("  position   "), std::string::npos);
+}
+
+TEST(CliPlanShotPosition, InHandPlacesTheCueBallAndTheWrittenScenarioReplaysFromThere) {
+  const TempDir dir;
+  const std::string scenario = dir.write("three.json", kThreeBalls);
+  const std::string out = dir.path("planned.json");
+  const CliRun r = run_cli({"plan-shot", scenario, "--ball", "1", "--in-hand", "--region", "0.3,1.27,0.0,1.27",
+                            "--simulations", "1000", "--json", "--scenario-out", out});
+  ASSERT_EQ(r.status, 0) << r.err;
+  const nlohmann::json j = nlohmann::json::parse(r.out);
+  ASSERT_TRUE(j.contains("in_hand"));
+  ASSERT_TRUE(j.contains("position"));  // --in-hand plays for position
+  const nlohmann::json& spot = j["in_hand"]["cue_ball"];
+  EXPECT_GE(spot[0].get<double>(), 0.3);
+  EXPECT_LE(spot[0].get<double>(), 1.27);
+  EXPECT_GE(j["in_hand"]["spots_played"].get<int>(), 1);
+  EXPECT_EQ(j["position"]["next"], 2);
+  // The written scenario has the cue ball at the spot, the others where they were.
+  const nlohmann::json written = nlohmann::json::parse(test::read_text(out));
+  for (const nlohmann::json& b : written["balls"]) {
+    if (b["id"] == 0) {
+      EXPECT_EQ(b["position"], spot);
+    } else if (b["id"] == 2) {
+      EXPECT_EQ(b["position"], nlohmann::json::array({0.5, 0.3}));
+    }
+  }
+  // The replay pots the 1.
+  const CliRun replay = run_cli({"simulate", out, "--json"});
+  ASSERT_EQ(replay.status, 0) << replay.err;
+  const nlohmann::json played = nlohmann::json::parse(replay.out);
+  for (const nlohmann::json& b : played["balls"]) {
+    if (b["id"] == 1) {
+      EXPECT_TRUE(b["pocketed"].get<bool>());
+    }
+  }
+}
+
+TEST(CliPlanShotPosition, BadRegionIsAUsageErrorNamingTheFlag) {
+  const TempDir dir;
+  const std::string scenario = dir.write("three.json", kThreeBalls);
+  expect_usage_error({"plan-shot", scenario, "--ball", "1", "--region", "0,1,0,1"}, "--region");  // needs --in-hand
+  expect_usage_error({"plan-shot", scenario, "--ball", "1", "--in-hand", "--region", "0,1,0"}, "--region");
+  expect_usage_error({"plan-shot", scenario, "--ball", "1", "--in-hand", "--region", "0,1,0,x"}, "--region");
+  expect_usage_error({"plan-shot", scenario, "--ball", "1", "--in-hand", "--region", "1,0,0,1"}, "--region");
+  expect_usage_error({"plan-shot", scenario, "--ball", "1", "--in-hand", "--region", "0,1,0,nan"}, "--region");
 }
 
 TEST(CliPlanShotPosition, BadNextIsAUsageErrorNamingTheFlag) {

@@ -1074,6 +1074,8 @@ def plan_shot(
     position: bool = False,
     next: _Int | None = None,
     next_simulations: _Int = 500,
+    in_hand: bool = False,
+    region: tuple[_Float, _Float, _Float, _Float] | None = None,
 ) -> dict[str, Any]:
     """The strike that pots ball `target` (cueball plan-shot): the dict of `plan-shot --json`
     (cue in degrees and ball radii, kind ('direct', 'bank' off one or two cushions, 'kick',
@@ -1083,7 +1085,9 @@ def plan_shot(
     as the scenario's "noise" (speed m/s, aim_deg, elevation_deg, side, height ball radii); raises
     NoFeasibleShot when nothing pots. position=True plays for position (plan-shot --position):
     each shot's dict gains `position` (next, cue_ball, next_feasible, next_success_probability,
-    next_kind, next_pocket, screened_probability, score). Releases the GIL."""
+    next_kind, next_pocket, screened_probability, score). in_hand=True places the cue ball too
+    (plan-shot --in-hand; inside region=(x_min, x_max, y_min, y_max) m when given): the dict gains
+    `in_hand` (cue_ball, spots, spots_played). Releases the GIL."""
 
 def _time_run_scenario(scenario: _Scenario = None, repetitions: _Int = 100) -> float:
     """Benchmark hook: seconds per run of the library's run_scenario(), timed in C++."""

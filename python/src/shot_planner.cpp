@@ -2,11 +2,13 @@
 // (include/cueball/shot_planner.hpp). The plan comes back as the dict of
 // `cueball plan-shot --json` (the same keys and units), plus the scenario
 // with the planned cue as a Scenario object.
+#include <array>
 #include <memory>
 #include <string>
 #include <vector>
 
 #include "bindings.hpp"
+#include "cueball/ball_in_hand.hpp"
 #include "cueball/errors.hpp"
 #include "cueball/position_play.hpp"
 #include "cueball/shot_planner.hpp"
@@ -133,7 +135,7 @@ void bind_shot_planner(py::module_& m) {
       [](const py::object& scenario, int target, std::optional<int> cue_ball, const py::object& pocket,
          const std::vector<std::string>& kinds, const py::object& noise, std::uint64_t seed, long long simulations,
          double side, std::optional<double> height, bool position, std::optional<int> next,
-         long long next_simulations) {
+         long long next_simulations, bool in_hand, std::optional<std::array<double, 4>> region) {
         if (simulations < cueball::kMinPlanSimulations || simulations > cueball::kMaxPlanSimulations)
           throw cueball::InvalidArgument("simulations", static_cast<double>(simulations),
                                          "[" + std::to_string(cueball::kMinPlanSimulations) + ", " +
@@ -151,8 +153,10 @@ void bind_shot_planner(py::module_& m) {
         q.simulations = static_cast<int>(simulations);
         q.side = side;
         q.height = height;
-        if (!position && next)
+        const bool position_play = position || in_hand;
+        if (!position_play && next)
           throw cueball::InvalidArgument("next", "next = " + std::to_string(*next) + " needs position=True");
+        if (!in_hand && region) throw cueball::InvalidArgument("region", "region needs in_hand=True");
         if (next_simulations < cueball::kMinPlanSimulations || next_simulations > cueball::kMaxPlanSimulations)
           throw cueball::InvalidArgument("next_simulations", static_cast<double>(next_simulations),
                                          "[" + std::to_string(cueball::kMinPlanSimulations) + ", " +
@@ -160,27 +164,43 @@ void bind_shot_planner(py::module_& m) {
                                          "engine runs of each next-shot plan");
         cueball::ShotPlanResult plan;
         cueball::PositionPlanResult played;
+        std::optional<cueball::BallInHandResult> placed;
         {
           py::gil_scoped_release release;
-          if (position) {
+          if (position_play) {
             cueball::PositionRequest p;
             p.shot = q;
             p.next_target = next;
             p.next_simulations = static_cast<int>(next_simulations);
-            played = cueball::plan_shot_for_position(*s, p);
+            if (in_hand) {
+              cueball::BallInHandRequest h{p, std::nullopt};
+              if (region) h.region = cueball::InHandRegion{(*region)[0], (*region)[1], (*region)[2], (*region)[3]};
+              placed = cueball::plan_ball_in_hand(*s, h);
+              played = placed->plan;
+            } else {
+              played = cueball::plan_shot_for_position(*s, p);
+            }
             plan = played.plan;
           } else {
             plan = cueball::plan_shot(*s, q);
           }
         }
-        py::dict out = shot_dict(*s, plan.cue_ball, plan.shot, q.noise);
-        if (position) out["position"] = leave_dict(played.leave, played.next_target);
+        const Scenario& on = placed ? placed->table : *s;
+        py::dict out = shot_dict(on, plan.cue_ball, plan.shot, q.noise);
+        if (placed) {
+          py::dict h;
+          h["cue_ball"] = to_tuple(placed->cue_ball);
+          h["spots"] = placed->spots;
+          h["spots_played"] = placed->spots_played;
+          out["in_hand"] = h;
+        }
+        if (position_play) out["position"] = leave_dict(played.leave, played.next_target);
         out["simulations"] = plan.simulations;
         out["seconds"] = plan.seconds;
         py::list alternatives;
         for (std::size_t k = 0; k < plan.alternatives.size(); ++k) {
-          py::dict a = shot_dict(*s, plan.cue_ball, plan.alternatives[k], q.noise);
-          if (position) a["position"] = leave_dict(played.alternative_leaves[k], played.next_target);
+          py::dict a = shot_dict(on, plan.cue_ball, plan.alternatives[k], q.noise);
+          if (position_play) a["position"] = leave_dict(played.alternative_leaves[k], played.next_target);
           alternatives.append(a);
         }
         out["alternatives"] = alternatives;
@@ -190,7 +210,7 @@ void bind_shot_planner(py::module_& m) {
       "scenario"_a, "target"_a, py::kw_only(), "cue_ball"_a = py::none(), "pocket"_a = "any",
       "kinds"_a = std::vector<std::string>{"direct", "bank"}, "noise"_a = "tournament", "seed"_a = 0,
       "simulations"_a = 4000, "side"_a = 0.0, "height"_a = py::none(), "position"_a = false, "next"_a = py::none(),
-      "next_simulations"_a = cueball::kMinPlanSimulations,
+      "next_simulations"_a = cueball::kMinPlanSimulations, "in_hand"_a = false, "region"_a = py::none(),
       "Plans the strike that pots ball `target` (cueball plan-shot, shot_planner.hpp): ghost-ball\n"
       "(direct, combination) and mirror-point (bank off one or two cushions, kick) geometry for a\n"
       "first aim, blocked paths and an obstructed cue skipped, the aim then solved on the exact simulation (throw, the cloth, the\n"
@@ -214,7 +234,10 @@ void bind_shot_planner(py::module_& m) {
       "P(pot, screened) x P(next ball's pot), its success_probability then measured on fresh draws;\n"
       "next: the next ball's id (None: the lowest id left); next_simulations: each next plan's budget;\n"
       "each shot's dict then has `position` (next, cue_ball, next_feasible, next_success_probability,\n"
-      "next_kind, next_pocket, screened_probability, score). Raises\n"
+      "next_kind, next_pocket, screened_probability, score). in_hand=True: ball in hand (ball_in_hand.hpp;\n"
+      "plan-shot --in-hand), the cue ball placed (its place in the scenario ignored) where the shot, played for\n"
+      "position, scores best, inside region=(x_min, x_max, y_min, y_max) m when given; the dict then has\n"
+      "`in_hand` (cue_ball, spots, spots_played) and `scenario` has the cue ball at its spot. Raises\n"
       "NoFeasibleShot when no candidate pots. Releases the GIL while planning.");
 }
 

@@ -1,4 +1,5 @@
-"""plan_shot(position=True) from Python: each shot's leave, the choice by score, the CLI's plan, errors."""
+"""plan_shot(position=True) and plan_shot(in_hand=True) from Python: each shot's leave, the choice by
+score, the placed cue ball, the CLI's plan, errors."""
 
 import json
 import os
@@ -46,11 +47,33 @@ class PositionPlayTest(unittest.TestCase):
             self.assertEqual(cli[key], self.plan[key], key)
         self.assertEqual(cli["position"]["score"], self.plan["position"]["score"])
 
+    def test_in_hand_places_the_cue_ball_inside_the_region_and_the_scenario_replays_from_there(self) -> None:
+        plan = cueball.plan_shot(CUT, 1, simulations=1000, in_hand=True, region=(0.0, 1.27, 0.0, 1.27))
+        x, y = plan["in_hand"]["cue_ball"]
+        self.assertLessEqual(x, 1.27)
+        self.assertGreaterEqual(plan["in_hand"]["spots_played"], 1)
+        self.assertIn("position", plan)  # in_hand plays for position
+        r = cueball.simulate(plan["scenario"])
+        ids = list(r.balls["id"])
+        cue = [b for b in plan["scenario"].balls if b.id == 0][0]
+        self.assertEqual(tuple(cue.state.position), (x, y))
+        self.assertTrue(r.balls["pocketed"][ids.index(1)])  # the planned shot pots the 1 from the spot
+        binary = os.environ.get("CUEBALL_BIN")
+        if binary:
+            out = subprocess.run([binary, "plan-shot", str(CUT), "--ball", "1", "--simulations", "1000", "--in-hand",
+                                  "--region", "0,1.27,0,1.27", "--json"], check=True, capture_output=True,
+                                 text=True).stdout
+            cli = json.loads(out)
+            self.assertEqual(tuple(cli["in_hand"]["cue_ball"]), (x, y))
+            self.assertEqual(cli["cue"], plan["cue"])
+
     def test_bad_input_names_the_argument(self) -> None:
         for kwargs, field in (({"position": True, "next": 7}, "next"),
                               ({"position": True, "next": 1}, "next"),
                               ({"next": 9}, "next"),
-                              ({"position": True, "next_simulations": 10}, "next_simulations")):
+                              ({"position": True, "next_simulations": 10}, "next_simulations"),
+                              ({"region": (0.0, 1.0, 0.0, 1.0)}, "region"),
+                              ({"in_hand": True, "region": (1.0, 0.0, 0.0, 1.0)}, "region")):
             with self.assertRaises(ValueError) as e:
                 cueball.plan_shot(CUT, 1, simulations=1000, **kwargs)
             self.assertIn(field, str(e.exception))

@@ -1,0 +1,139 @@
+// Tests of ball in hand (src/ball_in_hand.cpp): the spot is a legal place
+// with the shot planned from it potting the target, it scores at least as
+// well as a straight-in placed by hand, it stays in the region given, it is
+// deterministic, and bad input and layouts with no spot say why.
+#include "cueball/ball_in_hand.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include "ball_layout.hpp"
+#include "cueball/errors.hpp"
+#include "cueball/scenario.hpp"
+#include "cueball/simulator.hpp"
+
+namespace cueball {
+namespace {
+
+using test::layout;
+
+BallInHandRequest request_for(int target) {
+  BallInHandRequest q;
+  q.position.shot.target = target;
+  q.position.shot.simulations = 1000;
+  q.position.next_simulations = 500;
+  return q;
+}
+
+// The 1 near the foot spot, the 2 on the far side of the table, the cue
+// ball wherever the last shot left it (in a corner, to be moved).
+Scenario two_balls() { return layout({{0, {0.2, 0.2}}, {1, {1.9, 0.7}}, {2, {0.9, 0.35}}}); }
+
+TEST(BallInHand, PlacesTheCueBallOnAFreeSpotAndTheShotFromThereDropsTheTarget) {
+  const Scenario s = two_balls();
+  const BallInHandRequest q = request_for(1);
+  const BallInHandResult r = plan_ball_in_hand(s, q);
+  const double R = s.settings.parameters.ball.radius;
+  EXPECT_GT(r.spots, 0);
+  EXPECT_GE(r.spots_played, 1);
+  EXPECT_LE(static_cast<std::size_t>(r.spots_played), kInHandSpots);
+  EXPECT_TRUE(ball_on_table(s.table, r.cue_ball, R));
+  // The table: the cue ball at the spot, every other ball where it was.
+  ASSERT_EQ(r.table.balls.size(), s.balls.size());
+  for (const SimulationBall& b : r.table.balls) {
+    if (b.id == 0) {
+      EXPECT_EQ(b.state.position.x, r.cue_ball.x);
+      EXPECT_EQ(b.state.position.y, r.cue_ball.y);
+      continue;
+    }
+    for (const SimulationBall& o : s.balls)
+      if (o.id == b.id) {
+        EXPECT_EQ(b.state.position.x, o.state.position.x);
+        EXPECT_GE(norm(o.state.position - r.cue_ball), 2.0 * R + kInHandGap);
+      }
+  }
+  // The planned shot, replayed noise-free from the spot, drops the 1 and not the cue ball.
+  const SimulationResult played = run_scenario(scenario_with_shot(r.table, 0, r.plan.plan.shot, q.position.shot.noise));
+  for (const BallTrajectory& b : played.balls) EXPECT_EQ(b.pocketed, b.id == 1) << "ball " << b.id;
+  EXPECT_EQ(r.plan.next_target, 2);
+  EXPECT_GT(r.plan.plan.shot.success_probability, 0.5);
+}
+
+TEST(BallInHand, ScoresAtLeastAsWellAsAStraightInPlacedByHand) {
+  const Scenario s = two_balls();
+  const BallInHandRequest q = request_for(1);
+  const BallInHandResult r = plan_ball_in_hand(s, q);
+  // By hand: a straight-in into the nearest pocket, 0.3 m behind the ghost ball.
+  const double R = s.settings.parameters.ball.radius;
+  const Vec2 O{1.9, 0.7};
+  const Pocket* nearest = &s.table.pockets.front();
+  for (const Pocket& p : s.table.pockets)
+    if (norm(p.centre - O) < norm(nearest->centre - O)) nearest = &p;
+  const Vec2 u = (nearest->centre - O) / norm(nearest->centre - O);
+  Scenario by_hand = s;
+  by_hand.balls[0].state.position = O - (2.0 * R + 0.3) * u;
+  const PositionPlanResult h = plan_shot_for_position(by_hand, q.position);
+  // Both scores are estimates (the pot screened on 200 shots): not worse by
+  // more than three of the screen's standard errors.
+  const double se = std::sqrt(0.25 / (q.position.shot.simulations / kPositionScreenFraction));
+  EXPECT_GE(r.plan.leave.score, h.leave.score - 3.0 * se);
+}
+
+TEST(BallInHand, StaysInTheRegionAndIsDeterministic) {
+  const Scenario s = two_balls();
+  BallInHandRequest q = request_for(1);
+  q.region = InHandRegion{0.0, 1.3, 0.0, 1.3};  // the half of the table away from the 1
+  const BallInHandResult a = plan_ball_in_hand(s, q);
+  EXPECT_LE(a.cue_ball.x, 1.3);
+  const BallInHandResult b = plan_ball_in_hand(s, q);
+  EXPECT_EQ(a.cue_ball.x, b.cue_ball.x);
+  EXPECT_EQ(a.cue_ball.y, b.cue_ball.y);
+  EXPECT_EQ(a.plan.plan.shot.strike.aim_deg, b.plan.plan.shot.strike.aim_deg);
+  EXPECT_EQ(a.plan.plan.shot.strike.speed, b.plan.plan.shot.strike.speed);
+  EXPECT_EQ(a.plan.plan.simulations, b.plan.plan.simulations);
+}
+
+TEST(BallInHand, ATargetWithEveryPocketBlockedHasNoSpot) {
+  // The 1 ringed by six balls at 2R + 1 mm: no straight path to any pocket.
+  const double R = layout({}).settings.parameters.ball.radius;
+  const Vec2 O{1.27, 0.635};
+  std::vector<test::Placed> balls{{0, {0.3, 0.3}}, {1, O}};
+  for (int k = 0; k < 6; ++k) {
+    const double a = k * std::acos(-1.0) / 3.0 + 0.3;
+    balls.push_back({2 + k, O + (2.0 * R + 1e-3) * Vec2{std::cos(a), std::sin(a)}});
+  }
+  try {
+    plan_ball_in_hand(layout(balls), request_for(1));
+    FAIL() << "expected NoFeasibleShot";
+  } catch (const NoFeasibleShot& e) {
+    EXPECT_NE(std::string(e.what()).find("no spot for the cue ball"), std::string::npos) << e.what();
+  }
+}
+
+TEST(BallInHand, BadInputNamesTheField) {
+  const Scenario s = two_balls();
+  const auto field = [&](const BallInHandRequest& q) -> std::string {
+    try {
+      plan_ball_in_hand(s, q);
+    } catch (const InvalidArgument& e) {
+      return e.field();
+    }
+    return "(none)";
+  };
+  BallInHandRequest q = request_for(1);
+  q.region = InHandRegion{1.0, 0.5, 0.0, 1.0};
+  EXPECT_EQ(field(q), "region");
+  q.region = InHandRegion{0.0, 1.0, 0.0, std::nan("")};
+  EXPECT_EQ(field(q), "region");
+  EXPECT_EQ(field(request_for(0)), "target");  // the cue ball
+  EXPECT_EQ(field(request_for(7)), "target");
+  q = request_for(1);
+  q.position.next_target = 1;
+  EXPECT_EQ(field(q), "next");
+}
+
+}  // namespace
+}  // namespace cueball

@@ -84,6 +84,18 @@ BallInHandResult plan_ball_in_hand(const Scenario& table_state, const BallInHand
 
   // 1. Spots behind the ghost ball of each clear pocket.
   std::vector<Spot> spots;
+  const auto add_spot = [&](Vec2 C, int pocket, double paths) {
+    Spot spot;
+    spot.cue_ball = C;
+    spot.pocket = pocket;
+    spot.paths = paths;
+    spot.table = without;
+    SimulationBall placed = cue;
+    placed.state = BallState{};
+    placed.state.position = C;
+    spot.table.balls.insert(spot.table.balls.begin(), placed);
+    spots.push_back(std::move(spot));
+  };
   for (std::size_t k = 0; k < s.table.pockets.size(); ++k) {
     if (q.position.shot.pocket && static_cast<std::size_t>(*q.position.shot.pocket) != k) continue;
     const Vec2 P = s.table.pockets[k].centre;
@@ -113,36 +125,40 @@ BallInHandResult plan_ball_in_hand(const Scenario& table_state, const BallInHand
       }
       for (const double d : distances) {
         const Vec2 C = G - d * w;
-        if (!placeable(C) || !clear(C, G)) continue;
-        Spot spot;
-        spot.cue_ball = C;
-        spot.pocket = static_cast<int>(k);
-        spot.paths = d + op;
-        spot.table = without;
-        SimulationBall placed = cue;
-        placed.state = BallState{};
-        placed.state.position = C;
-        spot.table.balls.insert(spot.table.balls.begin(), placed);
-        spots.push_back(std::move(spot));
+        if (placeable(C) && clear(C, G)) add_spot(C, static_cast<int>(k), d + op);
       }
     }
+  }
+  // No straight pot from behind a ghost ball: the centres of a grid over
+  // the bed (or the region), each free place a spot for any shot asked for.
+  const bool grid = spots.empty();
+  if (grid) {
+    const double x0 = q.region ? q.region->x_min : 0.0, x1 = q.region ? q.region->x_max : s.table.length;
+    const double y0 = q.region ? q.region->y_min : 0.0, y1 = q.region ? q.region->y_max : s.table.width;
+    for (int i = 0; i < kInHandGrid[0]; ++i)
+      for (int j = 0; j < kInHandGrid[1]; ++j) {
+        const Vec2 C{x0 + (x1 - x0) * (i + 0.5) / kInHandGrid[0], y0 + (y1 - y0) * (j + 0.5) / kInHandGrid[1]};
+        if (placeable(C)) add_spot(C, -1, norm(C - O));
+      }
   }
   BallInHandResult result;
   result.spots = static_cast<int>(spots.size());
   if (spots.empty())
-    throw NoFeasibleShot("no spot for the cue ball: no pocket has a clear straight path from ball " +
-                         std::to_string(target_id) + " with a free place behind its ghost ball" +
-                         (q.region ? " inside the region" : ""));
+    throw NoFeasibleShot(std::string("no spot for the cue ball: no free place") + (q.region ? " inside the region" : "") +
+                         " on a grid of " + std::to_string(kInHandGrid[0] * kInHandGrid[1]) + " places");
 
-  // 2. Each spot's direct shot into its pocket, noise-free.
+  // 2. Each spot's direct shot into its pocket (a grid spot's: every shot
+  // asked for), noise-free.
   int simulations = 0;
   ShotSearch windows_only;
   windows_only.noisy = false;
   for (Spot& spot : spots) {
     PlanRequest direct = q.position.shot;
     direct.cue_ball = cue_id;
-    direct.pocket = spot.pocket;
-    direct.kinds = {ShotKind::direct};
+    if (!grid) {
+      direct.pocket = spot.pocket;
+      direct.kinds = {ShotKind::direct};
+    }
     direct.simulations = kMinPlanSimulations;
     try {
       const SearchedShots w = search_shots(spot.table, direct, windows_only);
@@ -161,11 +177,12 @@ BallInHandResult plan_ball_in_hand(const Scenario& table_state, const BallInHand
   for (const Spot& spot : spots) {
     if (kept.size() == kInHandSpots || spot.window <= 0.0) break;
     const auto same_pocket = std::count_if(kept.begin(), kept.end(), [&](const Spot* k) { return k->pocket == spot.pocket; });
-    if (same_pocket < 2) kept.push_back(&spot);
+    if (grid || same_pocket < 2) kept.push_back(&spot);
   }
   if (kept.empty())
     throw NoFeasibleShot("no spot for the cue ball pots ball " + std::to_string(target_id) + " (" +
-                         std::to_string(spots.size()) + " spots behind ghost balls tried)");
+                         std::to_string(spots.size()) + (grid ? " places on a grid" : " spots behind ghost balls") +
+                         " tried)");
 
   // 3. Each kept spot played for position; the best leave chosen.
   PositionRequest p = q.position;

@@ -14,13 +14,17 @@
 //      inside (up to kInHandFarthest behind G). A spot must be a place for
 //      the cue ball (ball_on_table(), at least 2R + kInHandGap from every
 //      other ball), inside the request's region when it gives one, with the
-//      cue ball's straight path to G clear (no other ball within 2R).
+//      cue ball's straight path to G clear (no other ball within 2R). When
+//      no pocket gives a spot (every straight path of the target blocked),
+//      the spots are the centres of a kInHandGrid grid over the bed (or the
+//      region) where the cue ball can be placed, for any shot the request
+//      asks for (a bank, ...).
 //   2. Each spot is scored without a noisy shot: the best window
 //      probability (PlannedShot::window_probability) of a direct shot into
-//      its pocket, plan_shot()'s noise-free search with kMinPlanSimulations
-//      runs. The kInHandSpots best are kept (window probabilities in steps of
-//      0.02, then the shorter cue ball and object ball paths first), at most
-//      two a pocket.
+//      its pocket (a grid spot: of any shot asked for), plan_shot()'s
+//      noise-free search with kMinPlanSimulations runs. The kInHandSpots
+//      best are kept (window probabilities in steps of 0.02, then the shorter
+//      cue ball and object ball paths first), at most two a pocket.
 //   3. On each kept spot the shot is played for position
 //      (plan_shot_for_position(), the request's budgets, any pocket the
 //      request allows); the spot whose leave scores best (P(this pot) x
@@ -38,6 +42,8 @@ namespace cueball {
 inline constexpr std::array<double, 3> kInHandDistances{0.15, 0.3, 0.6};
 /// Cut angles the spots give, degrees.
 inline constexpr std::array<double, 3> kInHandCutsDeg{0.0, 15.0, -15.0};
+/// The fallback grid of spots, along x and along y.
+inline constexpr std::array<int, 2> kInHandGrid{8, 4};
 /// Farthest spot behind the ghost ball that a region adds, m.
 inline constexpr double kInHandFarthest = 3.0;
 /// Most spots played for position.

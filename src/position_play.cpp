@@ -91,8 +91,6 @@ PositionPlanResult plan_shot_for_position(const Scenario& table_state, const Pos
   if (result.next_target < 0) wide = ShotSearch{};  // no lookahead: plan_shot()'s own plan
   SearchedShots found = search_shots(s, q.shot, wide);
   int simulations = found.plan.simulations;
-  result.plan.rejected = std::move(found.plan.rejected);
-  result.plan.cue_ball = cue_id;
   if (result.next_target < 0) {
     result.plan = std::move(found.plan);
     const auto cue_end = std::find_if(result.plan.shot.predicted.begin(), result.plan.shot.predicted.end(),
@@ -103,6 +101,8 @@ PositionPlanResult plan_shot_for_position(const Scenario& table_state, const Pos
     result.plan.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     return result;
   }
+  result.plan.rejected = std::move(found.plan.rejected);
+  result.plan.cue_ball = cue_id;
 
   // 2. The leaves scored by window probabilities alone (no noisy shot): this
   // shot's, times the best next shot's on the table it leaves.

@@ -186,6 +186,13 @@ TEST(PositionPlay, WithNoBallLeftAfterTheTargetThereIsNoLookahead) {
   EXPECT_EQ(r.next_target, -1);
   EXPECT_EQ(r.leave.score, r.plan.shot.success_probability);
   EXPECT_FALSE(r.leave.next_feasible);
+  // plan_shot()'s own plan, bit for bit, its rejected candidates included.
+  const ShotPlanResult plain = plan_shot(s, request_for(1).shot);
+  EXPECT_EQ(r.plan.shot.strike.aim_deg, plain.shot.strike.aim_deg);
+  EXPECT_EQ(r.plan.shot.strike.speed, plain.shot.strike.speed);
+  EXPECT_EQ(r.plan.shot.success_probability, plain.shot.success_probability);
+  EXPECT_EQ(r.plan.rejected, plain.rejected);
+  EXPECT_EQ(r.plan.simulations, plain.simulations);
 }
 
 TEST(PositionPlay, BadInputNamesTheField) {

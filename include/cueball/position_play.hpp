@@ -63,7 +63,7 @@ inline constexpr int kPositionVariantBudgets = 3;
 /// Candidates whose window probability is under this fraction of the best's are not played for position.
 inline constexpr double kPositionKeepFraction = 0.5;
 /// Most candidates whose leave is scored by window probabilities.
-inline constexpr std::size_t kPositionLeaves = 16;
+inline constexpr std::size_t kPositionLeaves = 24;
 /// Most candidates whose leave is evaluated in full (the finalists).
 inline constexpr std::size_t kMaxPositionCandidates = 3;
 /// The finalists' common screen takes the request's budget over this; the
@@ -72,7 +72,9 @@ inline constexpr int kPositionScreenFraction = 5;
 inline constexpr int kPositionEstimateFraction = 4;
 
 struct PositionRequest {
-  PlanRequest shot;  ///< the shot that pots shot.target; its `simulations` is each plan's budget
+  /// The shot that pots shot.target; its `simulations` is the budget of its
+  /// plan, and kPositionVariantBudgets times it more go to the wide variant search.
+  PlanRequest shot;
   /// Id of the next target. None: the lowest id on the table other than the
   /// cue ball and the target (9-ball's rule); with no such ball there is no
   /// lookahead and the shot is plan_shot()'s.

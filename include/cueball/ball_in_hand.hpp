@@ -24,7 +24,8 @@
 //      its pocket (a grid spot: of any shot asked for), plan_shot()'s
 //      noise-free search with kMinPlanSimulations runs. The kInHandSpots
 //      best are kept (window probabilities in steps of 0.02, then the shorter
-//      cue ball and object ball paths first), at most two a pocket.
+//      cue ball and object ball paths first), at most two a pocket (grid
+//      spots: no such limit).
 //   3. On each kept spot the shot is played for position
 //      (plan_shot_for_position(), the request's budgets, any pocket the
 //      request allows); the spot whose leave scores best (P(this pot) x

@@ -274,8 +274,12 @@ struct Choice {
 
 // position_simulations > 0: plan_shot_for_position (position_play.hpp) with
 // that budget for each next-shot plan, the next target 9-ball's lowest ball.
+// placed: the cue ball in hand placed first by plan_ball_in_hand
+// (ball_in_hand.hpp), played for position (1,000 runs a next-shot plan
+// without position_simulations), the table with the cue ball at its spot
+// written to *placed.
 Choice planner_choice(const Scenario& s, int target, std::uint64_t seed, int simulations, int position_simulations = 0,
-                      const std::vector<ShotKind>& kinds = PlanRequest{}.kinds) {
+                      const std::vector<ShotKind>& kinds = PlanRequest{}.kinds, Scenario* placed = nullptr) {
   Choice c;
   const auto start = std::chrono::steady_clock::now();
   const double cpu_start = thread_cpu_seconds();
@@ -286,11 +290,20 @@ Choice planner_choice(const Scenario& s, int target, std::uint64_t seed, int sim
   q.kinds = kinds;
   try {
     ShotPlanResult r;
-    if (position_simulations > 0) {
+    std::string where;
+    if (placed || position_simulations > 0) {
       PositionRequest p;
       p.shot = q;
-      p.next_simulations = position_simulations;
-      PositionPlanResult pr = plan_shot_for_position(s, p);
+      p.next_simulations = position_simulations > 0 ? position_simulations : 1000;
+      PositionPlanResult pr;
+      if (placed) {
+        BallInHandResult h = plan_ball_in_hand(s, BallInHandRequest{p, std::nullopt});
+        where = fmt("in hand at (%.3f, %.3f): ", h.cue_ball.x, h.cue_ball.y);
+        *placed = std::move(h.table);
+        pr = std::move(h.plan);
+      } else {
+        pr = plan_shot_for_position(s, p);
+      }
       c.next_success_probability = pr.leave.next_feasible ? pr.leave.next_success_probability : 0.0;
       r = std::move(pr.plan);
     } else {
@@ -300,44 +313,12 @@ Choice planner_choice(const Scenario& s, int target, std::uint64_t seed, int sim
     c.action = r.shot.strike;
     c.simulations = r.simulations;
     c.success_probability = r.shot.success_probability;
-    c.what = fmt("%s %s%s%s (window %.3f, screen %.3f)", to_string(r.shot.kind), r.shot.pocket_name.c_str(), r.shot.cushion.empty() ? "" : " off ",
-                 r.shot.cushion.c_str(), r.shot.window_probability, r.shot.success_probability);
+    c.what = where + fmt("%s %s%s%s (window %.3f, screen %.3f)", to_string(r.shot.kind), r.shot.pocket_name.c_str(),
+                         r.shot.cushion.empty() ? "" : " off ", r.shot.cushion.c_str(), r.shot.window_probability,
+                         r.shot.success_probability);
   } catch (const NoFeasibleShot& e) {
     c.simulations = simulations;  // the API does not report them: its budget is the upper bound
     c.what = std::string(e.what()).substr(0, 2000);  // "no feasible shot pots ball 1 (12 candidates: ...)"
-  }
-  c.seconds = seconds_since(start);
-  c.cpu_seconds = thread_cpu_seconds() - cpu_start;
-  return c;
-}
-
-// The cue ball in hand placed by plan_ball_in_hand (ball_in_hand.hpp), then
-// the shot played for position from there; `s` gets the cue ball's spot.
-Choice in_hand_choice(Scenario& s, int target, std::uint64_t seed, int simulations, int position_simulations,
-                      const std::vector<ShotKind>& kinds) {
-  Choice c;
-  const auto start = std::chrono::steady_clock::now();
-  const double cpu_start = thread_cpu_seconds();
-  BallInHandRequest q;
-  q.position.shot.target = target;
-  q.position.shot.seed = seed;
-  q.position.shot.simulations = simulations;
-  q.position.shot.kinds = kinds;
-  q.position.next_simulations = position_simulations > 0 ? position_simulations : 1000;
-  try {
-    BallInHandResult r = plan_ball_in_hand(s, q);
-    s = r.table;
-    const PlannedShot& shot = r.plan.plan.shot;
-    c.found = true;
-    c.action = shot.strike;
-    c.simulations = r.plan.plan.simulations;
-    c.success_probability = shot.success_probability;
-    c.next_success_probability = r.plan.leave.next_feasible ? r.plan.leave.next_success_probability : 0.0;
-    c.what = fmt("in hand at (%.3f, %.3f): %s %s (window %.3f, screen %.3f)", r.cue_ball.x, r.cue_ball.y,
-                 to_string(shot.kind), shot.pocket_name.c_str(), shot.window_probability, shot.success_probability);
-  } catch (const NoFeasibleShot& e) {
-    c.simulations = simulations;
-    c.what = std::string(e.what()).substr(0, 2000);
   }
   c.seconds = seconds_since(start);
   c.cpu_seconds = thread_cpu_seconds() - cpu_start;
@@ -654,11 +635,11 @@ RackRecord run_rack(const Setup& st, std::uint64_t seed, int planner_simulations
       if (b.id != 0) target = std::min(target, b.id);
     Choice c;
     try {
-      const std::uint64_t shot_seed = stream_seed(seed, 100 + static_cast<std::uint64_t>(rec.shots));
-      if (in_hand_planner && rec.shots == 0)
-        c = in_hand_choice(s, target, shot_seed, planner_simulations, position_simulations, kinds);
-      else
-        c = planner_choice(s, target, shot_seed, planner_simulations, position_simulations, kinds);
+      Scenario placed;
+      const bool in_hand = in_hand_planner && rec.shots == 0;
+      c = planner_choice(s, target, stream_seed(seed, 100 + static_cast<std::uint64_t>(rec.shots)), planner_simulations,
+                         position_simulations, kinds, in_hand ? &placed : nullptr);
+      if (in_hand && c.found) s = std::move(placed);
     } catch (const std::exception& e) {  // the layout the engine left (never seen)
       rec.stop = Stop::rejected;
       rec.detail = e.what();

@@ -3,7 +3,7 @@
 
 #include <algorithm>
 #include <chrono>
-#include <cmath>
+#include <initializer_list>
 #include <string>
 #include <utility>
 
@@ -18,11 +18,12 @@ bool has_ball(const Scenario& s, int id) {
   return std::any_of(s.balls.begin(), s.balls.end(), [&](const SimulationBall& b) { return b.id == id; });
 }
 
-// The next target when none is given: the lowest id other than the cue ball and the target; -1 when none.
-int default_next_target(const Scenario& s, int cue_ball, int target) {
+// The lowest id on the table other than those of `except` (9-ball's next
+// ball); -1 when none.
+int lowest_ball(const Scenario& s, std::initializer_list<int> except) {
   int next = -1;
   for (const SimulationBall& b : s.balls)
-    if (b.id != cue_ball && b.id != target && (next < 0 || b.id < next)) next = b.id;
+    if (std::find(except.begin(), except.end(), b.id) == except.end() && (next < 0 || b.id < next)) next = b.id;
   return next;
 }
 
@@ -72,7 +73,7 @@ PositionPlanResult plan_shot_for_position(const Scenario& table_state, const Pos
                                         (next == cue_id ? "cue ball" : "target") + "; choose another ball");
     result.next_target = next;
   } else {
-    result.next_target = default_next_target(s, cue_id, q.shot.target);
+    result.next_target = lowest_ball(s, {cue_id, q.shot.target});
   }
 
   PlanRequest next = q.shot;
@@ -87,6 +88,7 @@ PositionPlanResult plan_shot_for_position(const Scenario& table_state, const Pos
   wide.variant_heights = {kPositionHeights.begin(), kPositionHeights.end()};
   wide.variant_speeds = {kPositionSpeedFactors.begin(), kPositionSpeedFactors.end()};
   wide.vary_easy = true;
+  wide.keep_every = true;
   wide.variant_runs = kPositionVariantBudgets * q.shot.simulations;
   if (result.next_target < 0) wide = ShotSearch{};  // no lookahead: plan_shot()'s own plan
   SearchedShots found = search_shots(s, q.shot, wide);
@@ -109,13 +111,9 @@ PositionPlanResult plan_shot_for_position(const Scenario& table_state, const Pos
   std::vector<Candidate> candidates;
   double best_window = 0.0;
   for (const PlannedShot& shot : found.every) best_window = std::max(best_window, shot.window_probability);
-  const auto same_strike = [](const ShotAction& a, const ShotAction& b) {
-    return a.speed == b.speed && a.aim_deg == b.aim_deg && a.elevation_deg == b.elevation_deg && a.side == b.side &&
-           a.height == b.height;
-  };
   for (PlannedShot& shot : found.every) {
     const bool known = std::any_of(candidates.begin(), candidates.end(),
-                                   [&](const Candidate& c) { return same_strike(c.shot.strike, shot.strike); });
+                                   [&](const Candidate& c) { return c.shot.strike == shot.strike; });
     if (!known && shot.window_probability >= kPositionKeepFraction * best_window)
       candidates.push_back({std::move(shot), {}, {}, -1, 0.0});
   }
@@ -133,7 +131,7 @@ PositionPlanResult plan_shot_for_position(const Scenario& table_state, const Pos
     // The next target, or when the shot pots it too, the lowest ball left
     // (9-ball's rule); none left: nothing to score.
     PlanRequest n = next;
-    n.target = has_ball(c.left, result.next_target) ? result.next_target : default_next_target(c.left, cue_id, cue_id);
+    n.target = has_ball(c.left, result.next_target) ? result.next_target : lowest_ball(c.left, {cue_id});
     c.next_id = n.target;
     c.next_window = 1.0;
     if (n.target < 0) continue;
@@ -154,14 +152,9 @@ PositionPlanResult plan_shot_for_position(const Scenario& table_state, const Pos
   // 3. The finalists: each shot screened on the same noisy draws, the next
   // shot planned in full on the table it leaves.
   const int screen_shots = std::max(1, q.shot.simulations / kPositionScreenFraction);
-  const auto estimate = [](PlannedShot& shot, int hits, int shots) {
-    shot.noisy_shots = shots;
-    shot.success_probability = static_cast<double>(hits) / shots;
-    shot.success_standard_error = std::sqrt(shot.success_probability * (1.0 - shot.success_probability) / shots);
-    shot.simulations += shots;
-  };
   for (Candidate& c : candidates) {
-    estimate(c.shot, noisy_outcome(s, q.shot, cue_id, c.shot, screen_shots, kScreenFirstShot).successes, screen_shots);
+    set_estimate(c.shot, noisy_successes(s, q.shot, cue_id, c.shot, screen_shots, kScreenFirstShot), screen_shots);
+    c.shot.simulations += screen_shots;
     c.leave.screened_probability = c.shot.success_probability;
     simulations += screen_shots;
     if (c.next_id < 0) {
@@ -189,7 +182,8 @@ PositionPlanResult plan_shot_for_position(const Scenario& table_state, const Pos
   // estimate takes), so its estimate carries no selection bias.
   PlannedShot& played = candidates.front().shot;
   const int final_shots = std::max(1, q.shot.simulations / kPositionEstimateFraction);
-  estimate(played, noisy_outcome(s, q.shot, cue_id, played, final_shots, 0).successes, final_shots);
+  set_estimate(played, noisy_successes(s, q.shot, cue_id, played, final_shots, 0), final_shots);
+  played.simulations += final_shots;
   simulations += final_shots;
 
   result.plan.shot = std::move(played);

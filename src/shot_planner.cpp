@@ -818,8 +818,8 @@ Scenario scenario_with_shot(const Scenario& table_state, int cue_ball, const Pla
   return s;
 }
 
-NoisyOutcome noisy_outcome(const Scenario& table_state, const PlanRequest& q, int cue_ball, const PlannedShot& shot,
-                           int shots, std::uint64_t first_shot) {
+int noisy_successes(const Scenario& table_state, const PlanRequest& q, int cue_ball, const PlannedShot& shot, int shots,
+                    std::uint64_t first_shot) {
   Scenario noisy = table_state;
   noisy.cue = ShotStrike{};  // simulate_many strikes cue.ball with each action
   noisy.cue->ball = cue_ball;
@@ -833,15 +833,21 @@ NoisyOutcome noisy_outcome(const Scenario& table_state, const PlanRequest& q, in
   options.first_shot = first_shot;
   const ManyResult m = simulate_many(noisy, actions, {}, options);
   const auto n = static_cast<std::size_t>(m.balls);
-  NoisyOutcome out;
+  int hits = 0;
   for (std::size_t k = 0; k < static_cast<std::size_t>(m.shots); ++k)
-    if (!m.miscue[k] && !m.failure[k] && m.first_contact[k] == first_contact &&
-        (q.pocket ? m.pocket[k * n + target] == shot.pocket : m.pocketed[k * n + target] != 0) &&
-        !m.pocketed[k * n + cue]) {
-      ++out.successes;
-      out.cue_ball_ends.push_back({m.final_position[(k * n + cue) * 2], m.final_position[(k * n + cue) * 2 + 1]});
-    }
-  return out;
+    hits += !m.miscue[k] && !m.failure[k] && m.first_contact[k] == first_contact &&
+                    (q.pocket ? m.pocket[k * n + target] == shot.pocket : m.pocketed[k * n + target] != 0) &&
+                    !m.pocketed[k * n + cue]
+                ? 1
+                : 0;
+  return hits;
+}
+
+void set_estimate(PlannedShot& shot, int hits, int shots) {
+  shot.noisy_shots = shots;
+  shot.success_probability = static_cast<double>(hits) / shots;
+  const double p = shot.success_probability;
+  shot.success_standard_error = std::sqrt(p * (1.0 - p) / shots);
 }
 
 ShotPlanResult plan_shot(const Scenario& table_state, const PlanRequest& q) {
@@ -1126,13 +1132,7 @@ SearchedShots search_shots(const Scenario& table_state, const PlanRequest& q, co
   // 4. Noise: every feasible candidate screened (common noise draws), the
   // best measured again on fresh draws.
   const auto successes = [&](const PlannedShot& shot, int shots, std::uint64_t first_shot) {
-    return noisy_outcome(s, q, cue_id, shot, shots, first_shot).successes;
-  };
-  const auto estimate = [](PlannedShot& shot, int hits, int shots) {
-    shot.noisy_shots = shots;
-    shot.success_probability = static_cast<double>(hits) / shots;
-    const double p = shot.success_probability;
-    shot.success_standard_error = std::sqrt(p * (1.0 - p) / shots);
+    return noisy_successes(s, q, cue_id, shot, shots, first_shot);
   };
   if (feasible.size() > kMaxScreened) {
     for (std::size_t i = kMaxScreened; i < feasible.size(); ++i)
@@ -1155,7 +1155,6 @@ SearchedShots search_shots(const Scenario& table_state, const PlanRequest& q, co
     std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
       return feasible[a].window_probability > feasible[b].window_probability;
     });
-    out.every = feasible;
     result.shot = feasible[order.front()];
     for (std::size_t k = 1; k < order.size(); ++k) result.alternatives.push_back(feasible[order[k]]);
     result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -1169,7 +1168,7 @@ SearchedShots search_shots(const Scenario& table_state, const PlanRequest& q, co
       feasible.size() > 1 ? std::min(kBaseScreenShots, budget / (10 * static_cast<int>(feasible.size()))) : 0;
   int screened_shots = 0;
   const auto screen = [&](PlannedShot& shot, int shots) {
-    estimate(shot, successes(shot, shots, kScreenFirstShot), shots);
+    set_estimate(shot, successes(shot, shots, kScreenFirstShot), shots);
     shot.simulations += shots;
     screened_shots += shots;
   };
@@ -1290,9 +1289,9 @@ SearchedShots search_shots(const Scenario& table_state, const PlanRequest& q, co
   }
   result.simulations = planner.runs() + screened_shots;
   const int final_shots = std::max(1, budget - result.simulations);
-  out.every = feasible;
+  if (o.keep_every) out.every = feasible;
   PlannedShot& best = feasible[chosen];
-  estimate(best, successes(best, final_shots, 0), final_shots);
+  set_estimate(best, successes(best, final_shots, 0), final_shots);
   best.simulations += final_shots;
   result.simulations += final_shots;
   result.shot = std::move(best);

@@ -22,27 +22,30 @@ struct ShotSearch {
   /// False: no noisy shot at all (no screen, no variants, no estimate): the
   /// feasible shots ranked by window probability, success_probability 0.
   bool noisy = true;
+  /// Fill SearchedShots::every (a copy of every shot found).
+  bool keep_every = false;
 };
 
 struct SearchedShots {
   ShotPlanResult plan;
-  /// Every feasible shot and variant found, the chosen one among them (its
-  /// success probability as screened, not as finally estimated).
+  /// With ShotSearch::keep_every and noise: every feasible shot and variant
+  /// found, the chosen one among them (its success probability as screened,
+  /// not as finally estimated). Empty otherwise.
   std::vector<PlannedShot> every;
 };
 
 /// plan_shot() with `search` (plan_shot(s, q) is search_shots(s, q, {}).plan).
 SearchedShots search_shots(const Scenario& table_state, const PlanRequest& q, const ShotSearch& search);
 
-/// Noisy repeats of a planned shot under q.noise and q.seed, counted by the
-/// planner's rule of success (shot_planner.hpp), shots first_shot,
-/// first_shot + 1, ... of the seed's stream.
-struct NoisyOutcome {
-  int successes = 0;
-  std::vector<Vec2> cue_ball_ends;  ///< where the cue ball stops after each success
-};
-NoisyOutcome noisy_outcome(const Scenario& table_state, const PlanRequest& q, int cue_ball, const PlannedShot& shot,
-                           int shots, std::uint64_t first_shot);
+/// The successes among `shots` noisy repeats of a planned shot under q.noise
+/// and q.seed, counted by the planner's rule of success (shot_planner.hpp):
+/// shots first_shot, first_shot + 1, ... of the seed's stream.
+int noisy_successes(const Scenario& table_state, const PlanRequest& q, int cue_ball, const PlannedShot& shot, int shots,
+                    std::uint64_t first_shot);
+
+/// Sets the shot's success probability to hits / shots, its standard error
+/// sqrt(p (1 - p) / shots) and noisy_shots to shots.
+void set_estimate(PlannedShot& shot, int hits, int shots);
 
 /// Distance from p to the segment a-b (the swept-circle test of a straight
 /// path: another ball's centre within 2R of it blocks it), m.

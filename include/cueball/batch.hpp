@@ -169,6 +169,8 @@ struct ShotAction {
   double elevation_deg = 0.0;  ///< butt raised, degrees, [0, 89]
   double side = 0.0;           ///< tip offset to the right, ball radii, [-0.5, 0.5]
   double height = 0.0;         ///< tip offset above the centre, ball radii, [-0.5, 0.5]; sqrt(side^2 + height^2) <= 0.5
+
+  friend bool operator==(const ShotAction&, const ShotAction&) = default;
 };
 static_assert(sizeof(ShotAction) == 5 * sizeof(double), "ShotAction must be five packed doubles");
 

@@ -37,10 +37,11 @@ foreach(key racks run_out_fraction mean_balls_potted mean_potted_on_break median
     message(FATAL_ERROR "JSON lacks runout.${key}: ${e}")
   endif()
 endforeach()
-# The run-outs played for position (--position), the cue ball in hand placed by the planner.
+# The run-outs played for position (--position), the cue ball in hand placed by the planner, kicks
+# when nothing else pots.
 execute_process(
   COMMAND ${TOOL} --suite runout --racks 1 --planner-simulations 500 --position 500 --in-hand planner --seed 1 --threads 1
-          --json ${JSON}
+          --fallback-kinds kick --json ${JSON}
   RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
 if(NOT rc EQUAL 0)
   message(FATAL_ERROR "cueball-planner-benchmark --position exited ${rc}:\n${out}\n${err}")
@@ -49,9 +50,16 @@ file(READ ${JSON} text)
 string(JSON position GET "${text}" options position_simulations)
 string(JSON racks GET "${text}" runout racks)
 string(JSON in_hand GET "${text}" options in_hand)
+string(JSON fallback GET "${text}" options fallback_kinds)
 string(JSON planned GET "${text}" runout per_rack 0 planned)
-if(NOT position EQUAL 500 OR NOT racks EQUAL 1 OR NOT in_hand STREQUAL "planner")
-  message(FATAL_ERROR "--position 500 --racks 1 --in-hand planner gave options.position_simulations ${position}, "
-                      "runout.racks ${racks}, options.in_hand ${in_hand}")
+if(NOT position EQUAL 500 OR NOT racks EQUAL 1 OR NOT in_hand STREQUAL "planner" OR NOT fallback STREQUAL "kick")
+  message(FATAL_ERROR "--position 500 --racks 1 --in-hand planner --fallback-kinds kick gave options.position_simulations "
+                      "${position}, runout.racks ${racks}, options.in_hand ${in_hand}, options.fallback_kinds ${fallback}")
+endif()
+# A bad kind exits 2 naming the flag.
+execute_process(COMMAND ${TOOL} --suite runout --racks 1 --fallback-kinds kik
+  RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+if(NOT rc EQUAL 2 OR NOT err MATCHES "--fallback-kinds")
+  message(FATAL_ERROR "--fallback-kinds kik: exit ${rc}, stderr: ${err}")
 endif()
 message(STATUS "cueball-planner-benchmark: exit 0, JSON keys present")

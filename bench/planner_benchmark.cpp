@@ -40,7 +40,9 @@
 // clear pocket). The planner then shoots the lowest-numbered ball, the
 // planned strike played once with tournament noise, until the 9 drops
 // (a run-out), or a shot is a foul (wrong first contact, scratch), pots
-// nothing, or no feasible shot exists. A 9 potted on the break is spotted.
+// nothing, or no feasible shot exists (with --fallback-kinds, after the
+// planner was asked again for those kinds: a kick when nothing else pots).
+// A 9 potted on the break is spotted.
 //
 // Everything is seeded: the same flags give the same choices and
 // probabilities whatever --threads (the timings of course vary).
@@ -625,7 +627,8 @@ Scenario broken_rack(const Setup& st, std::uint64_t seed, int& on_break) {
 }
 
 RackRecord run_rack(const Setup& st, std::uint64_t seed, int planner_simulations, int position_simulations,
-                    const std::vector<ShotKind>& kinds, bool in_hand_planner) {
+                    const std::vector<ShotKind>& kinds, const std::vector<ShotKind>& fallback_kinds,
+                    bool in_hand_planner) {
   RackRecord rec;
   rec.seed = seed;
   Scenario s = broken_rack(st, seed, rec.on_break);
@@ -639,6 +642,21 @@ RackRecord run_rack(const Setup& st, std::uint64_t seed, int planner_simulations
       const bool in_hand = in_hand_planner && rec.shots == 0;
       c = planner_choice(s, target, stream_seed(seed, 100 + static_cast<std::uint64_t>(rec.shots)), planner_simulations,
                          position_simulations, kinds, in_hand ? &placed : nullptr);
+      if (!c.found && !fallback_kinds.empty()) {
+        const Choice fallback =
+            planner_choice(s, target, stream_seed(seed, 100 + static_cast<std::uint64_t>(rec.shots)), planner_simulations,
+                           position_simulations, fallback_kinds, in_hand ? &placed : nullptr);
+        if (fallback.found) {
+          c.found = true;
+          c.action = fallback.action;
+          c.success_probability = fallback.success_probability;
+          c.next_success_probability = fallback.next_success_probability;
+          c.what = "fallback: " + fallback.what;
+        }
+        c.simulations += fallback.simulations;
+        c.seconds += fallback.seconds;
+        c.cpu_seconds += fallback.cpu_seconds;
+      }
       if (in_hand && c.found) s = std::move(placed);
     } catch (const std::exception& e) {  // the layout the engine left (never seen)
       rec.stop = Stop::rejected;
@@ -761,6 +779,7 @@ struct Options {
   int position_simulations = 0;  // 0: run-outs without position play
   bool in_hand_planner = false;  // the run-outs' first cue ball placed by plan_ball_in_hand, not by the rule
   std::vector<ShotKind> kinds = PlanRequest{}.kinds;  // the run-outs' shot kinds
+  std::vector<ShotKind> fallback_kinds;  // asked for when no shot of `kinds` is feasible; empty: none
   std::string json;
   std::string layouts_out;  // a folder: each single-pot layout written there as a scenario
   std::string suite = "all";
@@ -770,7 +789,8 @@ void usage() {
   std::printf(
       "usage: cueball-planner-benchmark [--suite single|runout|all] [--layouts N] [--racks N] [--repeats N]\n"
       "                                 [--seed S] [--planner-simulations N] [--position N] [--threads T]\n"
-      "                                 [--in-hand rule|planner] [--json FILE] [--layouts-out DIR]\n"
+      "                                 [--in-hand rule|planner] [--kinds LIST] [--fallback-kinds LIST]\n"
+      "                                 [--json FILE] [--layouts-out DIR]\n"
       "The shot planner against a ghost-ball baseline and an exhaustive grid search (docs/planner-benchmark.md).\n"
       "  --suite S                single, runout or all (default all)\n"
       "  --layouts N              single-pot layouts, [1, 1000000] (default 1000); layout k from seed S + k\n"
@@ -785,12 +805,27 @@ void usage() {
       "                           budget, 1000 without it)\n"
       "  --kinds LIST             the run-outs' shot kinds, comma-separated: direct, bank, kick, combination\n"
       "                           (default direct,bank, the planner's default)\n"
+      "  --fallback-kinds LIST    the kinds asked for when no shot of --kinds pots the run-outs' ball, e.g. kick\n"
+      "                           (default: none, the inning ends)\n"
       "  --threads T              layouts in parallel, [1, 256] (default 1); results do not depend on it, timings do\n"
       "  --json FILE              also write the results as JSON\n"
       "  --layouts-out DIR        write each single-pot layout as DIR/layout-<seed>.json (a scenario without a\n"
       "                           cue: the balls at rest, tournament noise), for cueball plan-shot --ball 1\n"
       "Exit status: 0 done, 1 an engine error, 2 bad flags.\n",
       kMinPlanSimulations, kMaxPlanSimulations, kMinPlanSimulations, kMaxPlanSimulations);
+}
+
+std::vector<ShotKind> kinds_flag(const std::string& flag, const std::string& value) {
+  std::vector<ShotKind> kinds;
+  std::size_t from = 0;
+  while (from <= value.size()) {
+    const std::size_t comma = std::min(value.find(',', from), value.size());
+    const std::optional<ShotKind> kind = shot_kind_from_string(value.substr(from, comma - from));
+    if (!kind) bad_flag(flag, value, "a comma-separated list of " + shot_kind_names(""));
+    kinds.push_back(*kind);
+    from = comma + 1;
+  }
+  return kinds;
 }
 
 Options parse(int argc, char** argv) {
@@ -802,10 +837,12 @@ Options parse(int argc, char** argv) {
       std::exit(0);
     }
     static const char* const known[] = {"--suite",  "--layouts", "--racks", "--repeats", "--seed", "--planner-simulations",
-                                        "--position", "--kinds", "--threads", "--json", "--layouts-out", "--in-hand"};
+                                        "--position", "--kinds", "--fallback-kinds", "--threads", "--json", "--layouts-out",
+                                        "--in-hand"};
     if (std::find_if(std::begin(known), std::end(known), [&](const char* k) { return flag == k; }) == std::end(known))
       bad_flag("flag", flag,
-               "--suite, --layouts, --racks, --repeats, --seed, --planner-simulations, --position, --kinds, --threads, "
+               "--suite, --layouts, --racks, --repeats, --seed, --planner-simulations, --position, --kinds, "
+               "--fallback-kinds, --threads, "
                "--json, --layouts-out, --in-hand, --help");
     if (i + 1 >= argc) bad_flag(flag, "", "a value after the flag");
     const std::string value = argv[++i];
@@ -823,15 +860,9 @@ Options parse(int argc, char** argv) {
     } else if (flag == "--seed") {
       o.seed = static_cast<std::uint64_t>(integer_flag(flag, value, 0, 1000000000000000000LL));
     } else if (flag == "--kinds") {
-      o.kinds.clear();
-      std::size_t from = 0;
-      while (from <= value.size()) {
-        const std::size_t comma = std::min(value.find(',', from), value.size());
-        const std::optional<ShotKind> kind = shot_kind_from_string(value.substr(from, comma - from));
-        if (!kind) bad_flag(flag, value, "a comma-separated list of " + shot_kind_names(""));
-        o.kinds.push_back(*kind);
-        from = comma + 1;
-      }
+      o.kinds = kinds_flag(flag, value);
+    } else if (flag == "--fallback-kinds") {
+      o.fallback_kinds = kinds_flag(flag, value);
     } else if (flag == "--in-hand") {
       if (value != "rule" && value != "planner") bad_flag(flag, value, "rule, planner");
       o.in_hand_planner = value == "planner";
@@ -889,9 +920,10 @@ int run(const Options& o) {
   std::string json = "{\n \"tool\": \"cueball-planner-benchmark\",\n";
   json += fmt(" \"options\": {\"suite\": \"%s\", \"layouts\": %d, \"racks\": %d, \"repeats\": %d, \"seed\": %llu, "
               "\"planner_simulations\": %d, \"position_simulations\": %d, \"in_hand\": \"%s\", \"kinds\": \"%s\", "
-              "\"threads\": %d},\n",
+              "\"fallback_kinds\": \"%s\", \"threads\": %d},\n",
               o.suite.c_str(), o.layouts, o.racks, o.repeats, static_cast<unsigned long long>(o.seed), o.planner_simulations,
-              o.position_simulations, o.in_hand_planner ? "planner" : "rule", kinds_text(o.kinds).c_str(), o.threads);
+              o.position_simulations, o.in_hand_planner ? "planner" : "rule", kinds_text(o.kinds).c_str(),
+              kinds_text(o.fallback_kinds).c_str(), o.threads);
   const CueStrikeNoise& n = st.base.noise;
   json += fmt(" \"noise\": {\"speed\": %g, \"aim_deg\": %g, \"elevation_deg\": %g, \"side\": %g, \"height\": %g},\n", n.speed,
               n.aim / kDeg, n.elevation / kDeg, n.side_offset / st.radius, n.height_offset / st.radius);
@@ -1000,7 +1032,7 @@ int run(const Options& o) {
     parallel_for(o.racks, o.threads, [&](int k) {
       recs[static_cast<std::size_t>(k)] =
           run_rack(st, o.seed + static_cast<std::uint64_t>(k), o.planner_simulations, o.position_simulations, o.kinds,
-                   o.in_hand_planner);
+                   o.fallback_kinds, o.in_hand_planner);
     });
     const double wall = seconds_since(start);
     int stops[kStops] = {};

@@ -640,22 +640,17 @@ RackRecord run_rack(const Setup& st, std::uint64_t seed, int planner_simulations
     try {
       Scenario placed;
       const bool in_hand = in_hand_planner && rec.shots == 0;
-      c = planner_choice(s, target, stream_seed(seed, 100 + static_cast<std::uint64_t>(rec.shots)), planner_simulations,
-                         position_simulations, kinds, in_hand ? &placed : nullptr);
-      if (!c.found && !fallback_kinds.empty()) {
-        const Choice fallback =
-            planner_choice(s, target, stream_seed(seed, 100 + static_cast<std::uint64_t>(rec.shots)), planner_simulations,
-                           position_simulations, fallback_kinds, in_hand ? &placed : nullptr);
-        if (fallback.found) {
-          c.found = true;
-          c.action = fallback.action;
-          c.success_probability = fallback.success_probability;
-          c.next_success_probability = fallback.next_success_probability;
-          c.what = "fallback: " + fallback.what;
-        }
-        c.simulations += fallback.simulations;
-        c.seconds += fallback.seconds;
-        c.cpu_seconds += fallback.cpu_seconds;
+      const std::uint64_t shot_seed = stream_seed(seed, 100 + static_cast<std::uint64_t>(rec.shots));
+      c = planner_choice(s, target, shot_seed, planner_simulations, position_simulations, kinds,
+                         in_hand ? &placed : nullptr);
+      if (!c.found && !fallback_kinds.empty()) {  // the same decision, asked again for the fallback kinds
+        Choice f = planner_choice(s, target, shot_seed, planner_simulations, position_simulations, fallback_kinds,
+                                  in_hand ? &placed : nullptr);
+        f.simulations += c.simulations;
+        f.seconds += c.seconds;
+        f.cpu_seconds += c.cpu_seconds;
+        f.what = f.found ? "fallback: " + f.what : c.what + "; fallback: " + f.what;
+        c = std::move(f);
       }
       if (in_hand && c.found) s = std::move(placed);
     } catch (const std::exception& e) {  // the layout the engine left (never seen)

@@ -54,6 +54,26 @@ void BM_NineBallBreakUnchecked(benchmark::State& st) {
 }
 BENCHMARK(BM_NineBallBreakUnchecked)->Unit(benchmark::kMicrosecond);
 
+// The same break under each cushion model (ball-ball model coulomb_impulse):
+// what the exact cushion costs a break, against the closed forms of Han 2005
+// and Stronge (issue 14's in-process proxy for a simulator with a simple
+// cushion).
+void BM_NineBallBreakCushion(benchmark::State& st, CushionModel model, double exact_tolerance = 1e-8) {
+  Scenario s = default_scenario();
+  s.settings.cushion = default_cushion_settings(model);
+  s.settings.cushion.exact_tolerance = exact_tolerance;
+  const SimulationResult r = run_scenario(s);
+  st.counters["cushion_hits"] = static_cast<double>(std::count_if(
+      r.events.begin(), r.events.end(), [](const Event& e) { return e.type == EventType::ball_cushion; }));
+  run_shot(st, s);
+}
+BENCHMARK_CAPTURE(BM_NineBallBreakCushion, mathavan_2010, CushionModel::mathavan_2010)->Unit(benchmark::kMicrosecond);
+BENCHMARK_CAPTURE(BM_NineBallBreakCushion, mathavan_2010_tolerance_1e-7, CushionModel::mathavan_2010, 1e-7)
+    ->Unit(benchmark::kMicrosecond);
+BENCHMARK_CAPTURE(BM_NineBallBreakCushion, han_2005, CushionModel::han_2005)->Unit(benchmark::kMicrosecond);
+BENCHMARK_CAPTURE(BM_NineBallBreakCushion, stronge_compliant, CushionModel::stronge_compliant)
+    ->Unit(benchmark::kMicrosecond);
+
 // One ball around the (pocketless) carom table with running side: five
 // rails under each cushion model (cushion_model.hpp), 13 events. The shot's
 // time is mostly its cushion impacts: the ratios between the models are
@@ -68,6 +88,11 @@ void BM_OneBallCushions(benchmark::State& st, CushionSettings cushion) {
       std::count_if(r.events.begin(), r.events.end(), [](const Event& e) { return e.type == EventType::ball_cushion; }));
   run_shot(st, s);
 }
+CushionSettings mathavan_tolerance(double exact_tolerance) {
+  CushionSettings c;
+  c.exact_tolerance = exact_tolerance;
+  return c;
+}
 CushionSettings mathavan_paper(int steps) {
   CushionSettings c;
   c.solver = CushionSolver::paper;
@@ -75,6 +100,8 @@ CushionSettings mathavan_paper(int steps) {
   return c;
 }
 BENCHMARK_CAPTURE(BM_OneBallCushions, mathavan_2010, default_cushion_settings(CushionModel::mathavan_2010))
+    ->Unit(benchmark::kMicrosecond);
+BENCHMARK_CAPTURE(BM_OneBallCushions, mathavan_2010_tolerance_1e-7, mathavan_tolerance(1e-7))
     ->Unit(benchmark::kMicrosecond);
 BENCHMARK_CAPTURE(BM_OneBallCushions, mathavan_2010_paper_N1000, mathavan_paper(1000))->Unit(benchmark::kMicrosecond);
 BENCHMARK_CAPTURE(BM_OneBallCushions, han_2005, default_cushion_settings(CushionModel::han_2005))

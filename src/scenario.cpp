@@ -132,7 +132,7 @@ Parameters read_parameters(const Reader& r, const Table& table) {
 // "cushion": the model by name, then its constants (each model's own
 // defaults, cushion_model.hpp).
 CushionSettings read_cushion(const Reader& r) {
-  r.allow_only({"model", "restitution", "friction", "solver", "paper_steps", "frequency_ratio"});
+  r.allow_only({"model", "restitution", "friction", "solver", "paper_steps", "exact_tolerance", "frequency_ratio"});
   const std::string name = r.text("model", to_string(CushionModel::mathavan_2010));
   const std::optional<CushionModel> model = cushion_model_from_string(name);
   if (!model)
@@ -149,6 +149,8 @@ CushionSettings read_cushion(const Reader& r) {
                                                    " is not known; allowed: exact, paper");
     c.solver = *chosen;
     c.paper_steps = r.integer("paper_steps", c.paper_steps, 1, kMaxCushionPaperSteps, "Euler steps per impact");
+    c.exact_tolerance =
+        r.number("exact_tolerance", c.exact_tolerance, 1e-11, 1e-7, "the exact solver's local error per step");
   }
   const auto only_for = [&](const char* key, CushionModel owner) {
     if (*model != owner && r.has(key))
@@ -157,6 +159,7 @@ CushionSettings read_cushion(const Reader& r) {
   };
   only_for("solver", CushionModel::mathavan_2010);
   only_for("paper_steps", CushionModel::mathavan_2010);
+  only_for("exact_tolerance", CushionModel::mathavan_2010);
   only_for("frequency_ratio", CushionModel::stronge_compliant);
   if (*model == CushionModel::han_2005) {
     c.restitution = r.number("restitution", c.restitution, 0.0, 1.0, "Han 2005 e");
@@ -287,6 +290,7 @@ InvalidArgument relabelled(const InvalidArgument& e, const Json& j, const std::v
   }
   if (f == "cushion_restitution" || f == "e_e") return at("scenario.cushion.restitution");
   if (f == "cushion_paper_steps") return at("scenario.cushion.paper_steps");
+  if (f == "cushion_exact_tolerance") return at("scenario.cushion.exact_tolerance");
   if (f == "cushion_frequency_ratio") return at("scenario.cushion.frequency_ratio");
   if (f == "cushion_friction" || f == "mu_w") {
     // mu_w's bounds depend on the contact angle (radius, cushion height) and on mu_s.
@@ -385,6 +389,9 @@ Json scenario_json(const Scenario& s) {
   if (cushion.model == CushionModel::mathavan_2010) {
     j["cushion"]["solver"] = to_string(cushion.solver);
     if (cushion.solver == CushionSolver::paper) j["cushion"]["paper_steps"] = cushion.paper_steps;
+    if (cushion.exact_tolerance != CushionSettings{}.exact_tolerance) {
+      j["cushion"]["exact_tolerance"] = cushion.exact_tolerance;
+    }
   }
   if (cushion.model == CushionModel::stronge_compliant) j["cushion"]["frequency_ratio"] = cushion.frequency_ratio;
   const BallCollisionParameters& b = s.settings.ball_collision;

@@ -1219,7 +1219,7 @@ std::string class_list() {
 void usage() {
   std::printf(
       "usage: cueball-stress [--class NAME] [--shots N] [--seed S] [--threads T] [--report-worst K] [--dump-worst DIR]\n"
-      "                      [--cushion-model NAME] [--ball-collision-model NAME]\n"
+      "                      [--cushion-model NAME] [--ball-collision-model NAME] [--cushion-exact-tolerance T]\n"
       "       cueball-stress --scenario FILE [--scenario FILE ...]\n"
       "Random seeded shots of each class, simulated and checked for overlaps, cushion and jaw\n"
       "penetration, balls off the table, NaN, energy gain, runaway event counts, errors, crashes\n"
@@ -1232,6 +1232,7 @@ void usage() {
       "  --dump-worst DIR    write each class's worst shot of each kind as DIR/CLASS-KIND.json (cueball simulate FILE)\n"
       "  --cushion-model M   the cushion model of every generated shot, with its own constants: %s\n"
       "                      (default mathavan_2010)\n"
+      "  --cushion-exact-tolerance T  mathavan_2010's exact solver: local error per step, [1e-11, 1e-7] (default 1e-8)\n"
       "  --ball-collision-model M  the ball-ball model of every generated shot, with its own constants: %s\n"
       "                      (default coulomb_impulse)\n"
       "  --scenario FILE     check one scenario file (cueball's scenario JSON) instead; its event limit is raised to %d\n"
@@ -1239,8 +1240,22 @@ void usage() {
       class_list().c_str(), cushion_model_names("").c_str(), ball_collision_model_names("").c_str(), kMaxEvents);
 }
 
+// A number in [lo, hi] written in full ("1e-7", "0.5"), else exit 2.
+double number_flag(const std::string& flag, const std::string& value, double lo, double hi, const std::string& allowed) {
+  std::size_t used = 0;
+  double x = 0.0;
+  try {
+    x = std::stod(value, &used);
+  } catch (const std::exception&) {
+    bad_flag(flag, value, allowed);
+  }
+  if (used != value.size() || !(x >= lo && x <= hi)) bad_flag(flag, value, allowed);
+  return x;
+}
+
 Options parse(int argc, char** argv) {
   Options o;
+  double exact_tolerance = CushionSettings{}.exact_tolerance;
   for (int i = 1; i < argc; ++i) {
     const std::string flag = argv[i];
     if (flag == "--help" || flag == "-h") {
@@ -1249,11 +1264,11 @@ Options parse(int argc, char** argv) {
     }
     static const char* const known[] = {"--class",      "--shots",      "--seed",          "--threads",
                                         "--report-worst", "--dump-worst", "--cushion-model", "--ball-collision-model",
-                                        "--scenario"};
+                                        "--cushion-exact-tolerance", "--scenario"};
     if (std::find_if(std::begin(known), std::end(known), [&](const char* k) { return flag == k; }) == std::end(known))
       bad_flag("flag", flag,
                "--class, --shots, --seed, --threads, --report-worst, --dump-worst, --cushion-model, "
-               "--ball-collision-model, --scenario, --help");
+               "--ball-collision-model, --cushion-exact-tolerance, --scenario, --help");
     if (i + 1 >= argc) bad_flag(flag, "", "a value after the flag");
     const std::string value = argv[++i];
     if (flag == "--class") {
@@ -1285,6 +1300,8 @@ Options parse(int argc, char** argv) {
       const std::optional<CushionModel> model = cushion_model_from_string(value);
       if (!model) bad_flag(flag, value, cushion_model_names(""));
       g_cushion = default_cushion_settings(*model);
+    } else if (flag == "--cushion-exact-tolerance") {
+      exact_tolerance = number_flag(flag, value, 1e-11, 1e-7, "a number in [1e-11, 1e-7]");
     } else if (flag == "--ball-collision-model") {
       const std::optional<BallCollisionModel> model = ball_collision_model_from_string(value);
       if (!model) bad_flag(flag, value, ball_collision_model_names(""));
@@ -1295,6 +1312,7 @@ Options parse(int argc, char** argv) {
   }
   if (o.classes.empty())
     for (const ShotClass& c : kClasses) o.classes.push_back(&c);
+  g_cushion.exact_tolerance = exact_tolerance;
   return o;
 }
 

@@ -68,6 +68,9 @@ TEST(CushionModel, ValidationNamesTheSimulationField) {
   s.paper_steps = 0;
   EXPECT_EQ(field_of([&] { (void)cushion_contact(p, s, h); }).rfind("cushion_paper_steps: ", 0), 0u);
   s = default_cushion_settings(CushionModel::mathavan_2010);
+  s.exact_tolerance = 1e-6;  // looser than the solver's range
+  EXPECT_EQ(field_of([&] { (void)cushion_contact(p, s, h); }).rfind("cushion_exact_tolerance: ", 0), 0u);
+  s = default_cushion_settings(CushionModel::mathavan_2010);
   s.friction = 0.9;  // above tan(theta)
   EXPECT_EQ(field_of([&] { (void)cushion_contact(p, s, h); }).rfind("mu_w: ", 0), 0u);
   s = default_cushion_settings(CushionModel::stronge_compliant);
@@ -94,6 +97,22 @@ TEST(CushionModel, DispatchGivesEachModelsOwnKernel) {
   o.paper_steps = 400;
   EXPECT_EQ(paper.velocity.y, cushion_impact(in, p, {0.98, 0.14, h}, o).velocity.y);
   EXPECT_NE(paper.velocity.y, exact.velocity.y);  // N = 400 is visibly coarse
+
+  // The exact solver at the planners' tolerance: the same answer as
+  // cushion_impact() at 1e-7, within its accuracy of the default's (the ball
+  // slides: topspin K = 0.8, so the Runge-Kutta solve, not the table).
+  s = default_cushion_settings(CushionModel::mathavan_2010);
+  s.exact_tolerance = 1e-7;
+  const CushionRebound loose = cushion_rebound(in, cushion_contact(p, s, h));
+  o = CushionImpactOptions{};
+  o.exact_tolerance = 1e-7;
+  const CushionImpactResult loose_direct = cushion_impact(in, p, {0.98, 0.14, h}, o);
+  EXPECT_EQ(loose.velocity.x, loose_direct.velocity.x);
+  EXPECT_EQ(loose.angular_velocity.z, loose_direct.angular_velocity.z);
+  EXPECT_NE(loose.velocity.x, exact.velocity.x);  // fewer steps: a different rounding
+  EXPECT_NEAR(loose.velocity.x, exact.velocity.x, 1e-6 * 1.2);
+  EXPECT_NEAR(loose.velocity.y, exact.velocity.y, 1e-6 * 1.2);
+  EXPECT_NEAR(p.ball.radius * loose.angular_velocity.z, p.ball.radius * exact.angular_velocity.z, 1e-6 * 1.2);
 
   s = default_cushion_settings(CushionModel::han_2005);
   const CushionRebound han = cushion_rebound(in, cushion_contact(p, s, h));
@@ -132,6 +151,12 @@ TEST(CushionModel, ScenarioChoosesTheModelByName) {
       R"({"cushion": {"model": "stronge_compliant", "frequency_ratio": 3}, "balls": [{"id": 0, "position": [1, 0.6]}]})");
   EXPECT_EQ(k.settings.cushion.frequency_ratio, 3.0);
   EXPECT_EQ(scenario_from_json(scenario_to_json(k)).settings.cushion.frequency_ratio, 3.0);
+  // The exact solver's tolerance: read, written back, and left out at its default.
+  const Scenario loose = scenario_from_json(
+      R"({"cushion": {"exact_tolerance": 1e-7}, "balls": [{"id": 0, "position": [1, 0.6]}]})");
+  EXPECT_EQ(loose.settings.cushion.exact_tolerance, 1e-7);
+  EXPECT_EQ(scenario_from_json(scenario_to_json(loose)).settings.cushion.exact_tolerance, 1e-7);
+  EXPECT_EQ(scenario_to_json(t).find("exact_tolerance"), std::string::npos);
 
   const auto error = [](const char* json) {
     return field_of([&] { (void)scenario_from_json(json); });
@@ -146,6 +171,12 @@ TEST(CushionModel, ScenarioChoosesTheModelByName) {
   const std::string steps = error(R"({"cushion": {"solver": "paper", "paper_steps": 100001}, "balls": [{"id": 0, "position": [1, 0.6]}]})");
   EXPECT_EQ(steps.rfind("scenario.cushion.paper_steps", 0), 0u) << steps;
   EXPECT_NE(steps.find("100000"), std::string::npos) << steps;
+  const std::string tolerance = error(R"({"cushion": {"exact_tolerance": 1e-6}, "balls": [{"id": 0, "position": [1, 0.6]}]})");
+  EXPECT_EQ(tolerance.rfind("scenario.cushion.exact_tolerance: ", 0), 0u) << tolerance;
+  EXPECT_NE(tolerance.find("1e-07"), std::string::npos) << tolerance;
+  const std::string not_han =
+      error(R"({"cushion": {"model": "han_2005", "exact_tolerance": 1e-7}, "balls": [{"id": 0, "position": [1, 0.6]}]})");
+  EXPECT_NE(not_han.find("applies to the model \"mathavan_2010\" only"), std::string::npos) << not_han;
   const std::string mu = error(R"({"cushion": {"model": "han_2005", "friction": 2}, "balls": [{"id": 0, "position": [1, 0.6]}]})");
   EXPECT_EQ(mu.rfind("scenario.cushion.friction: ", 0), 0u) << mu;
 }
@@ -175,6 +206,26 @@ TEST(CushionModel, SimulatorReboundsByTheChosenModel) {
     EXPECT_NEAR(after.angular_velocity.x, expected.angular_velocity.y, 1e-6);
     EXPECT_LT(after.velocity.x, 0.0);
   }
+}
+
+TEST(CushionModel, ExactToleranceReachesTheSimulation) {
+  // The benchmark's one-ball shot round the carom table (a corner double hit
+  // while the ball still slides, solved by Runge-Kutta): at the planners'
+  // tolerance the shot has the same events and ends within a micrometre.
+  const auto shot = [](const std::string& cushion) {
+    return R"({"table": "carom_10ft", "balls": [{"id": 0, "position": [0.7, 0.4]}],
+        "cue": {"ball": 0, "aim_deg": 27, "speed": 3.0, "side": 0.3, "height": 0.2})" + cushion + "}";
+  };
+  const std::string loose_json = shot(R"(, "cushion": {"exact_tolerance": 1e-7})");
+  const std::string default_json = shot("");
+  const SimulationResult loose = run_scenario(scenario_from_json(loose_json));
+  const SimulationResult exact = run_scenario(scenario_from_json(default_json));
+  ASSERT_EQ(loose.events.size(), exact.events.size());
+  for (std::size_t i = 0; i < exact.events.size(); ++i) EXPECT_EQ(loose.events[i].type, exact.events[i].type) << i;
+  const Vec2 a = loose.balls[0].final_state.position;
+  const Vec2 b = exact.balls[0].final_state.position;
+  EXPECT_NE(a.x, b.x);  // the setting reaches the solver
+  EXPECT_LT(std::hypot(a.x - b.x, a.y - b.y), 1e-6);
 }
 
 }  // namespace

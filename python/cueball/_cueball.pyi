@@ -809,6 +809,8 @@ class SimulationSettings:
     cushion_solver: str
     """mathavan_2010's solver: 'exact' or 'paper'"""
     cushion_paper_steps: int
+    cushion_exact_tolerance: float
+    """mathavan_2010's exact solver: local error per step, [1e-11, 1e-7]"""
     cushion_frequency_ratio: float
     """stronge_compliant's Omega"""
     ball_collision_model: str
@@ -827,6 +829,7 @@ class SimulationSettings:
         cushion_paper_steps: _Int = 5000,
         cushion_frequency_ratio: _Float | None = None,
         ball_collision_model: str = "coulomb_impulse",
+        cushion_exact_tolerance: _Float = 1e-8,
     ) -> None: ...
 
 class ShotStrike:

@@ -124,6 +124,7 @@ std::string scenario_json(const py::object& table, const py::iterable& balls, co
     if (k.model == cueball::CushionModel::mathavan_2010) {
       d["cushion"]["solver"] = cueball::to_string(k.solver);
       d["cushion"]["paper_steps"] = k.paper_steps;
+      if (k.exact_tolerance != cueball::CushionSettings{}.exact_tolerance) d["cushion"]["exact_tolerance"] = k.exact_tolerance;
     }
     if (k.model == cueball::CushionModel::stronge_compliant) d["cushion"]["frequency_ratio"] = k.frequency_ratio;
     const cueball::BallCollisionParameters& c = settings->ball_collision;
@@ -196,7 +197,9 @@ void bind_scenario(py::module_& m) {
       "The physics of a shot: parameters (ball and cloth); the cushion model by name (cushion_model:\n"
       "'mathavan_2010', the default, 'han_2005' or 'stronge_compliant') with its restitution and\n"
       "friction (each model's own defaults when not given); for mathavan_2010, cushion_solver 'exact'\n"
-      "or 'paper' (the Euler scheme, cushion_paper_steps steps); for stronge_compliant,\n"
+      "or 'paper' (the Euler scheme, cushion_paper_steps steps) and cushion_exact_tolerance (the exact\n"
+      "solver's local error per step, [1e-11, 1e-7]; 1e-8 keeps the accuracy goal, 1e-7 is ~30% cheaper\n"
+      "a sliding impact for planners' inner loops, its error in the README); for stronge_compliant,\n"
       "cushion_frequency_ratio (Omega, (1, 1000]); the ball-ball model by name\n"
       "(ball_collision_model: 'coulomb_impulse', the default, or 'mathavan_2014') with its constants\n"
       "ball_collision (the model's own when not given); and max_events (SimulationError beyond it,\n"
@@ -204,7 +207,8 @@ void bind_scenario(py::module_& m) {
   settings_cls
       .def(py::init([](const cueball::Parameters& p, const py::object& e, const py::object& mu,
                        const py::object& c, int max_events, const std::string& model, const std::string& solver,
-                       int paper_steps, const py::object& omega, const std::string& ball_model) {
+                       int paper_steps, const py::object& omega, const std::string& ball_model,
+                       double exact_tolerance) {
              SimulationSettings s;
              s.parameters = p;
              s.cushion = cueball::default_cushion_settings(cushion_model_named(model, "cushion_model"));
@@ -212,6 +216,7 @@ void bind_scenario(py::module_& m) {
              if (!mu.is_none()) s.cushion.friction = mu.cast<double>();
              s.cushion.solver = cushion_solver(solver, "cushion_solver");
              s.cushion.paper_steps = paper_steps;
+             s.cushion.exact_tolerance = exact_tolerance;
              if (!omega.is_none()) s.cushion.frequency_ratio = omega.cast<double>();
              s.ball_collision_model = ball_collision_model_named(ball_model, "ball_collision_model");
              s.ball_collision = c.is_none() ? cueball::default_ball_collision(s.ball_collision_model)
@@ -227,7 +232,8 @@ void bind_scenario(py::module_& m) {
            "cushion_solver"_a = cueball::to_string(defaults.cushion.solver),
            "cushion_paper_steps"_a = defaults.cushion.paper_steps,
            py::arg_v("cushion_frequency_ratio", py::none(), "the model's own (1.8 for stronge_compliant)"),
-           "ball_collision_model"_a = cueball::to_string(defaults.ball_collision_model))
+           "ball_collision_model"_a = cueball::to_string(defaults.ball_collision_model),
+           "cushion_exact_tolerance"_a = defaults.cushion.exact_tolerance)
       .def_readwrite("parameters", &SimulationSettings::parameters)
       .def_property(
           "cushion_model", [](const SimulationSettings& s) { return std::string(cueball::to_string(s.cushion.model)); },
@@ -247,6 +253,10 @@ void bind_scenario(py::module_& m) {
           "cushion_paper_steps", [](const SimulationSettings& s) { return s.cushion.paper_steps; },
           [](SimulationSettings& s, int n) { s.cushion.paper_steps = n; }, "the paper solver's Euler steps, [1, 1e5]")
       .def_property(
+          "cushion_exact_tolerance", [](const SimulationSettings& s) { return s.cushion.exact_tolerance; },
+          [](SimulationSettings& s, double v) { s.cushion.exact_tolerance = v; },
+          "the exact solver's local error per step, [1e-11, 1e-7] (1e-8 keeps the accuracy goal)")
+      .def_property(
           "cushion_frequency_ratio", [](const SimulationSettings& s) { return s.cushion.frequency_ratio; },
           [](SimulationSettings& s, double v) { s.cushion.frequency_ratio = v; },
           "stronge_compliant's Omega, tangential over normal natural frequency, (1, 1000]")
@@ -262,12 +272,12 @@ void bind_scenario(py::module_& m) {
   add_value_semantics(
       settings_cls, "SimulationSettings",
       {"parameters", "cushion_model", "cushion_restitution", "cushion_friction", "cushion_solver", "cushion_paper_steps",
-       "cushion_frequency_ratio", "ball_collision_model", "ball_collision", "max_events"},
+       "cushion_frequency_ratio", "ball_collision_model", "ball_collision", "max_events", "cushion_exact_tolerance"},
       [](const SimulationSettings& s) {
         return py::make_tuple(s.parameters, std::string(cueball::to_string(s.cushion.model)), s.cushion.restitution,
                               s.cushion.friction, std::string(cueball::to_string(s.cushion.solver)), s.cushion.paper_steps,
                               s.cushion.frequency_ratio, std::string(cueball::to_string(s.ball_collision_model)),
-                              s.ball_collision, s.max_events);
+                              s.ball_collision, s.max_events, s.cushion.exact_tolerance);
       },
       [](const py::tuple& t) {
         SimulationSettings s;
@@ -281,6 +291,7 @@ void bind_scenario(py::module_& m) {
         s.ball_collision_model = ball_collision_model_named(t[7].cast<std::string>(), "ball_collision_model");
         s.ball_collision = t[8].cast<cueball::BallCollisionParameters>();
         s.max_events = t[9].cast<int>();
+        s.cushion.exact_tolerance = t[10].cast<double>();
         return s;
       });
 

@@ -41,6 +41,24 @@ class ModelsTest(unittest.TestCase):
                     outcomes.add(tuple(round(float(c), 9) for c in r.balls["position"][0]))
         self.assertEqual(len(outcomes), 6)  # every pair of models ends the shot elsewhere
 
+    def test_exact_tolerance_for_planners(self):
+        loose = cueball.SimulationSettings(cushion_exact_tolerance=1e-7)
+        self.assertEqual((cueball.SimulationSettings().cushion_exact_tolerance, loose.cushion_exact_tolerance), (1e-8, 1e-7))
+        self.assertEqual(pickle.loads(pickle.dumps(loose)), loose)
+        self.assertNotEqual(loose, cueball.SimulationSettings())
+        s = cut_scenario(loose)
+        self.assertEqual(json.loads(s.to_json())["cushion"]["exact_tolerance"], 1e-7)
+        self.assertEqual(cueball.Scenario.from_json(s.to_json()), s)
+        self.assertNotIn("exact_tolerance", json.loads(cut_scenario(cueball.SimulationSettings()).to_json())["cushion"])
+        # The shot ends within a micrometre of the default's.
+        a = cueball.simulate(s).balls["position"]
+        b = cueball.simulate(cut_scenario(cueball.SimulationSettings())).balls["position"]
+        self.assertLess(max(abs(float(x - y)) for x, y in zip(a.ravel(), b.ravel())), 1e-6)
+        loose.cushion_exact_tolerance = 1e-6
+        with self.assertRaises(cueball.InvalidArgument) as caught:
+            cueball.simulate(cut_scenario(loose))
+        self.assertEqual(caught.exception.field, "scenario.cushion.exact_tolerance")
+
     def test_single_impacts_by_model(self):
         import math
         snooker = cueball.snooker_parameters()

@@ -38,6 +38,7 @@
 #include <benchmark/benchmark.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <ctime>
 #include <random>
@@ -277,10 +278,6 @@ void BM_CushionTolerance(benchmark::State& state) {
   CushionImpactOptions reference;
   reference.rolling_table = false;
   reference.exact_tolerance = 1e-11;
-  CushionImpactOptions fine = reference;
-  fine.exact_tolerance = 1e-8;
-  CushionImpactOptions loose = reference;
-  loose.exact_tolerance = 1e-7;
   auto largest = [&](const IncomingBall& b) {
     return std::max({std::abs(b.velocity.x), std::abs(b.velocity.y), radius * norm(b.angular_velocity)});
   };
@@ -289,47 +286,45 @@ void BM_CushionTolerance(benchmark::State& state) {
   };
   std::vector<CushionImpactResult> ref;
   for (const IncomingBall& b : balls) ref.push_back(solve_cushion_impact(b, model, reference));
-  double fine_seconds = 0.0;
-  double loose_seconds = 0.0;
-  double fine_steps = 0.0;
-  double loose_steps = 0.0;
-  std::vector<double> fine_error;
-  std::vector<double> loose_error;
-  double fine_angle = 0.0;
-  double loose_angle = 0.0;
+  // One record per tolerance; the two are solved alternately in each iteration.
+  struct Run {
+    const char* name;
+    double tolerance;
+    double seconds = 0.0;
+    double steps = 0.0;  // of the last iteration
+    double worst_angle_deg = 0.0;
+    std::vector<double> errors;  // of the last iteration
+  };
+  std::array<Run, 2> runs{Run{"tol_1e-8", 1e-8, 0.0, 0.0, 0.0, {}}, Run{"tol_1e-7", 1e-7, 0.0, 0.0, 0.0, {}}};
   for (auto _ : state) {
-    fine_error.clear();
-    loose_error.clear();
-    fine_steps = loose_steps = 0.0;
-    for (int pass = 0; pass < 2; ++pass) {
-      const bool is_loose = pass == 1;
-      const CushionImpactOptions& o = is_loose ? loose : fine;
+    for (Run& run : runs) {
+      CushionImpactOptions o = reference;
+      o.exact_tolerance = run.tolerance;
+      run.errors.clear();
+      run.steps = 0.0;
       const std::clock_t start = std::clock();
       for (std::size_t i = 0; i < balls.size(); ++i) {
         const CushionImpactResult r = solve_cushion_impact(balls[i], model, o);
-        (is_loose ? loose_steps : fine_steps) += r.solver_steps;
-        (is_loose ? loose_error : fine_error).push_back(gap(r, ref[i]) / largest(balls[i]));
-        double& angle = is_loose ? loose_angle : fine_angle;
-        angle = std::max(angle, std::abs(r.rebound_angle - ref[i].rebound_angle) / kDegree);
+        run.steps += r.solver_steps;
+        run.errors.push_back(gap(r, ref[i]) / largest(balls[i]));
+        run.worst_angle_deg = std::max(run.worst_angle_deg, std::abs(r.rebound_angle - ref[i].rebound_angle) / kDegree);
       }
-      (is_loose ? loose_seconds : fine_seconds) += static_cast<double>(std::clock() - start) / CLOCKS_PER_SEC;
+      run.seconds += static_cast<double>(std::clock() - start) / CLOCKS_PER_SEC;
     }
   }
-  const double n = static_cast<double>(balls.size());
-  auto report_errors = [&](const char* name, std::vector<double>& e, double steps, double angle) {
+  for (Run& run : runs) {
+    std::vector<double>& e = run.errors;
     std::sort(e.begin(), e.end());
-    const std::string prefix = name;
-    state.counters[prefix + "_steps"] = steps / n;
+    const std::string prefix = run.name;
+    state.counters[prefix + "_steps"] = run.steps / static_cast<double>(balls.size());
     state.counters[prefix + "_median"] = e[e.size() / 2];
     state.counters[prefix + "_p999"] = e[e.size() * 999 / 1000];
     state.counters[prefix + "_worst"] = e.back();
     state.counters[prefix + "_beyond_1e-6"] =
         static_cast<double>(std::count_if(e.begin(), e.end(), [](double x) { return x > 1e-6; }));
-    state.counters[prefix + "_worst_angle_deg"] = angle;
-  };
-  report_errors("tol_1e-8", fine_error, fine_steps, fine_angle);
-  report_errors("tol_1e-7", loose_error, loose_steps, loose_angle);
-  state.counters["time_ratio"] = loose_seconds / fine_seconds;
+    state.counters[prefix + "_worst_angle_deg"] = run.worst_angle_deg;
+  }
+  state.counters["time_ratio"] = runs[1].seconds / runs[0].seconds;
 }
 BENCHMARK(BM_CushionTolerance)->Unit(benchmark::kSecond)->Iterations(3);
 

@@ -1,6 +1,7 @@
 // Benchmarks of whole shots (src/simulator.cpp): the built-in 9-ball break
-// under each ball-ball model,
-// a one-ball shot with five cushion hits under each cushion model, and batch throughput on one and
+// under each ball-ball model and under each cushion model, a one-ball shot
+// with five cushion hits under each cushion model (the exact one also at the
+// planners' tolerance 1e-7), and batch throughput on one and
 // two threads (their ratio is the parallel speed-up), and simulate_many of
 // the same noisy breaks against simulate_batch (their throughput ratio, the
 // two run alternately in one process). Counters report events and

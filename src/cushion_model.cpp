@@ -59,7 +59,7 @@ CushionContact cushion_contact(const Parameters& table, const CushionSettings& s
       if (settings.paper_steps < 1 || settings.paper_steps > kMaxCushionPaperSteps)
         throw InvalidArgument("cushion_paper_steps", settings.paper_steps, "[1, " + std::to_string(kMaxCushionPaperSteps) + "]",
                               "Euler steps per impact");
-      require_in_range("cushion_exact_tolerance", settings.exact_tolerance, 1e-11, 1e-7,
+      require_in_range("cushion_exact_tolerance", settings.exact_tolerance, kMinExactTolerance, kMaxExactTolerance,
                        "the exact solver's local error per step");
       c.mathavan = cushion_impact_model(table, {settings.restitution, settings.friction, contact_height});
       c.mathavan_options.solver = settings.solver;

@@ -150,7 +150,7 @@ CushionSettings read_cushion(const Reader& r) {
     c.solver = *chosen;
     c.paper_steps = r.integer("paper_steps", c.paper_steps, 1, kMaxCushionPaperSteps, "Euler steps per impact");
     c.exact_tolerance =
-        r.number("exact_tolerance", c.exact_tolerance, 1e-11, 1e-7, "the exact solver's local error per step");
+        r.number("exact_tolerance", c.exact_tolerance, kMinExactTolerance, kMaxExactTolerance, "the exact solver's local error per step");
   }
   const auto only_for = [&](const char* key, CushionModel owner) {
     if (*model != owner && r.has(key))

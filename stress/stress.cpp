@@ -1301,7 +1301,7 @@ Options parse(int argc, char** argv) {
       if (!model) bad_flag(flag, value, cushion_model_names(""));
       g_cushion = default_cushion_settings(*model);
     } else if (flag == "--cushion-exact-tolerance") {
-      exact_tolerance = number_flag(flag, value, 1e-11, 1e-7, "a number in [1e-11, 1e-7]");
+      exact_tolerance = number_flag(flag, value, kMinExactTolerance, kMaxExactTolerance, "a number in [1e-11, 1e-7]");
     } else if (flag == "--ball-collision-model") {
       const std::optional<BallCollisionModel> model = ball_collision_model_from_string(value);
       if (!model) bad_flag(flag, value, ball_collision_model_names(""));

@@ -144,6 +144,11 @@ enum class CushionSolver {
   paper,  ///< the authors' explicit Euler in P_I (section 3.4)
 };
 
+/// The range of CushionImpactOptions::exact_tolerance (and of the
+/// simulation's CushionSettings::exact_tolerance).
+inline constexpr double kMinExactTolerance = 1e-11;
+inline constexpr double kMaxExactTolerance = 1e-7;
+
 struct CushionImpactOptions {
   CushionSolver solver = CushionSolver::exact;
   /// N of the paper's step dP_I = (1 + e_e) M yG'(0) / N (section 3.4), >= 1.

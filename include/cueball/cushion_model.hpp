@@ -79,7 +79,7 @@ struct CushionSettings {
   /// is 1e-7 of that velocity from the reference at the median, 8e-7 at the
   /// 99.9th percentile, 6.8e-6 at worst (6 impacts beyond 1e-6, where a slip
   /// passes close to zero). Rolling balls are looked up in the same table.
-  double exact_tolerance = 1e-8;
+  double exact_tolerance = CushionImpactOptions{}.exact_tolerance;
 };
 
 /// Each model's own constants, as its source gives them: mathavan_2010 the

@@ -71,7 +71,7 @@ void validate_options(const CushionImpactOptions& options) {
     throw InvalidArgument("solver", "solver is not a CushionSolver value");
   }
   static_assert(CushionImpactOptions{}.exact_tolerance == mathavan_2010::kExactTolerance);
-  if (!(options.exact_tolerance >= 1e-11 && options.exact_tolerance <= 1e-7)) {
+  if (!(options.exact_tolerance >= kMinExactTolerance && options.exact_tolerance <= kMaxExactTolerance)) {
     reject("exact_tolerance", options.exact_tolerance, "[1e-11, 1e-7]",
            "local error per Runge-Kutta step of the exact solver, relative to the largest incoming velocity");
   }

@@ -13,7 +13,7 @@
 //   BM_CollideBalls/frictionless  normal impulse only
 //   BM_CollideBalls/constant      e = 0.89, constant mu = 0.05: the ball-ball part
 //                                 of Mathavan et al. (2014), for the two below
-//   BM_Mathavan2014/paper         src/ball_collision/mathavan_2014.cpp with the
+//   BM_Mathavan2014/paper         src/models/ball_collision/mathavan_2014.cpp with the
 //                                 paper's constants (e_b = 0.89, mu_b = 0.05,
 //                                 mu_s = 0.21): the cloth's friction during the
 //                                 impact, integrated by DOPRI5 in the slip age
@@ -26,9 +26,9 @@
 #include <random>
 #include <vector>
 
-#include "cueball/ball_collision.hpp"
-#include "cueball/ball_collision/mathavan_2014.hpp"
-#include "cueball/parameters.hpp"
+#include "cueball/models/ball_collision/coulomb_impulse.hpp"
+#include "cueball/models/ball_collision/mathavan_2014.hpp"
+#include "cueball/core/parameters.hpp"
 
 namespace {
 

@@ -9,7 +9,7 @@
 #include <random>
 #include <vector>
 
-#include "cueball/cloth_motion.hpp"
+#include "cueball/physics/cloth_motion.hpp"
 
 namespace {
 

@@ -1,4 +1,4 @@
-// Benchmarks of the cue strike (src/cue_strike.cpp), which the batch
+// Benchmarks of the cue strike (src/physics/cue_strike.cpp), which the batch
 // simulator calls once per simulated shot, after with_noise(). Each benchmark
 // runs over the same batch of random valid strikes so that branch prediction
 // cannot memorise one path.
@@ -10,7 +10,7 @@
 #include <random>
 #include <vector>
 
-#include "cueball/cue_strike.hpp"
+#include "cueball/physics/cue_strike.hpp"
 
 namespace {
 

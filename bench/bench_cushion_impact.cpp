@@ -45,8 +45,8 @@
 #include <string>
 #include <vector>
 
-#include "cueball/cushion_impact.hpp"
-#include "cueball/parameters.hpp"
+#include "cueball/models/cushion/impact.hpp"
+#include "cueball/core/parameters.hpp"
 
 namespace {
 

@@ -29,8 +29,8 @@
 #include <random>
 #include <vector>
 
-#include "cueball/polynomial_roots.hpp"
-#include "cueball/vec.hpp"
+#include "cueball/physics/polynomial_roots.hpp"
+#include "cueball/core/vec.hpp"
 
 namespace {
 

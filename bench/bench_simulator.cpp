@@ -1,4 +1,4 @@
-// Benchmarks of whole shots (src/simulator.cpp): the built-in 9-ball break
+// Benchmarks of whole shots (src/simulation/simulator.cpp): the built-in 9-ball break
 // under each ball-ball model and under each cushion model, a one-ball shot
 // with five cushion hits under each cushion model (the exact one also at the
 // planners' tolerance 1e-7), and batch throughput on one and
@@ -13,8 +13,8 @@
 #include <numbers>
 #include <vector>
 
-#include "cueball/batch.hpp"
-#include "cueball/scenario.hpp"
+#include "cueball/simulation/batch.hpp"
+#include "cueball/simulation/scenario.hpp"
 
 namespace {
 

@@ -67,15 +67,15 @@
 
 #include <time.h>  // clock_gettime(CLOCK_THREAD_CPUTIME_ID): the calling thread's CPU time
 
-#include "cueball/batch.hpp"
-#include "cueball/errors.hpp"
-#include "cueball/ball_in_hand.hpp"
-#include "cueball/position_play.hpp"
-#include "cueball/rack.hpp"
-#include "cueball/scenario.hpp"
-#include "cueball/shot_planner.hpp"
-#include "cueball/table.hpp"
-#include "cueball/vec.hpp"
+#include "cueball/simulation/batch.hpp"
+#include "cueball/core/errors.hpp"
+#include "cueball/planning/ball_in_hand.hpp"
+#include "cueball/planning/position_play.hpp"
+#include "cueball/table/rack.hpp"
+#include "cueball/simulation/scenario.hpp"
+#include "cueball/planning/shot_planner.hpp"
+#include "cueball/table/table.hpp"
+#include "cueball/core/vec.hpp"
 
 namespace {
 

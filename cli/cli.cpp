@@ -17,8 +17,8 @@
 #include <unistd.h>
 
 #include "common.hpp"
-#include "cueball/errors.hpp"
-#include "cueball/shot_planner.hpp"
+#include "cueball/core/errors.hpp"
+#include "cueball/planning/shot_planner.hpp"
 
 namespace cueball::cli {
 

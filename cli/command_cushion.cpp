@@ -20,10 +20,10 @@
 #include <unistd.h>
 
 #include "common.hpp"
-#include "cueball/cushion_fit.hpp"
-#include "cueball/cushion_impact.hpp"
-#include "cueball/cushion_model.hpp"
-#include "cueball/errors.hpp"
+#include "cueball/models/cushion/fit.hpp"
+#include "cueball/models/cushion/impact.hpp"
+#include "cueball/models/cushion/model.hpp"
+#include "cueball/core/errors.hpp"
 
 namespace cueball::cli {
 

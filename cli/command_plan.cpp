@@ -3,9 +3,9 @@
 #include <optional>
 
 #include "common.hpp"
-#include "cueball/cloth_motion.hpp"
-#include "cueball/cue_strike.hpp"
-#include "cueball/planner.hpp"
+#include "cueball/physics/cloth_motion.hpp"
+#include "cueball/physics/cue_strike.hpp"
+#include "cueball/physics/straight_shot_inverse.hpp"
 
 namespace cueball::cli {
 

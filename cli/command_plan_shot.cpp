@@ -9,11 +9,11 @@
 #include <vector>
 
 #include "common.hpp"
-#include "cueball/ball_in_hand.hpp"
-#include "cueball/errors.hpp"
-#include "cueball/position_play.hpp"
-#include "cueball/scenario.hpp"
-#include "cueball/shot_planner.hpp"
+#include "cueball/planning/ball_in_hand.hpp"
+#include "cueball/core/errors.hpp"
+#include "cueball/planning/position_play.hpp"
+#include "cueball/simulation/scenario.hpp"
+#include "cueball/planning/shot_planner.hpp"
 #include "viewer_page.hpp"
 
 namespace cueball::cli {

@@ -5,7 +5,7 @@
 #include <optional>
 
 #include "common.hpp"
-#include "cueball/cloth_motion.hpp"
+#include "cueball/physics/cloth_motion.hpp"
 
 namespace cueball::cli {
 

@@ -11,9 +11,9 @@
 #include <vector>
 
 #include "common.hpp"
-#include "cueball/batch.hpp"
-#include "cueball/errors.hpp"
-#include "cueball/scenario.hpp"
+#include "cueball/simulation/batch.hpp"
+#include "cueball/core/errors.hpp"
+#include "cueball/simulation/scenario.hpp"
 #include "viewer_page.hpp"
 
 namespace cueball::cli {

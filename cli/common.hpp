@@ -10,8 +10,8 @@
 
 #include <CLI/CLI.hpp>
 
-#include "cueball/cue_strike.hpp"
-#include "cueball/parameters.hpp"
+#include "cueball/physics/cue_strike.hpp"
+#include "cueball/core/parameters.hpp"
 #include "output.hpp"
 
 namespace cueball::cli {

@@ -8,7 +8,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "cueball/cloth_motion.hpp"
+#include "cueball/physics/cloth_motion.hpp"
 
 namespace cueball::cli {
 

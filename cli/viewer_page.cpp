@@ -9,7 +9,7 @@
 #include <nlohmann/json.hpp>
 
 #include "common.hpp"
-#include "json_input.hpp"  // src/: the library's JSON reader (depth limit, 1e999 by path)
+#include "io/json_input.hpp"  // src/: the library's JSON reader (depth limit, 1e999 by path)
 
 namespace cueball::cli {
 

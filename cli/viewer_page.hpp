@@ -6,7 +6,7 @@
 #include <string>
 #include <string_view>
 
-#include "cueball/simulator.hpp"
+#include "cueball/simulation/simulator.hpp"
 
 namespace cueball::cli {
 

@@ -16,7 +16,7 @@
 #include <memory>
 #include <typeinfo>
 
-#include "cueball/errors.hpp"
+#include "cueball/core/errors.hpp"
 
 namespace cueball_fuzz {
 

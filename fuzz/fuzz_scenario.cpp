@@ -21,10 +21,10 @@
 #include <string_view>
 #include <vector>
 
-#include "cueball/errors.hpp"
-#include "cueball/scenario.hpp"
-#include "cueball/simulator.hpp"
-#include "cueball/table.hpp"
+#include "cueball/core/errors.hpp"
+#include "cueball/simulation/scenario.hpp"
+#include "cueball/simulation/simulator.hpp"
+#include "cueball/table/table.hpp"
 #include "fuzz_common.hpp"
 
 namespace {

@@ -11,8 +11,8 @@
 #include <string>
 #include <string_view>
 
-#include "cueball/errors.hpp"
-#include "cueball/table.hpp"
+#include "cueball/core/errors.hpp"
+#include "cueball/table/table.hpp"
 #include "fuzz_common.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {

@@ -73,15 +73,15 @@
 #include <thread>
 #include <vector>
 
-#include "cueball/cloth_motion.hpp"
-#include "cueball/cue_strike.hpp"
-#include "cueball/errors.hpp"
-#include "cueball/parameters.hpp"
-#include "cueball/rack.hpp"
-#include "cueball/scenario.hpp"
-#include "cueball/simulator.hpp"
-#include "cueball/table.hpp"
-#include "cueball/vec.hpp"
+#include "cueball/physics/cloth_motion.hpp"
+#include "cueball/physics/cue_strike.hpp"
+#include "cueball/core/errors.hpp"
+#include "cueball/core/parameters.hpp"
+#include "cueball/table/rack.hpp"
+#include "cueball/simulation/scenario.hpp"
+#include "cueball/simulation/simulator.hpp"
+#include "cueball/table/table.hpp"
+#include "cueball/core/vec.hpp"
 
 namespace {
 

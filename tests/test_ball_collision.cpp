@@ -6,7 +6,7 @@
 // Alciatore's closed forms (TP 3.1, TP 3.3, TP A.14), and from a direct RK4
 // integration of Coulomb friction over the normal impulse that works on the
 // balls' velocities and spins (not on the kernel's "slip age" variable).
-#include "cueball/ball_collision.hpp"
+#include "cueball/models/ball_collision/coulomb_impulse.hpp"
 
 #include <gtest/gtest.h>
 
@@ -18,9 +18,9 @@
 #include <utility>
 #include <vector>
 
-#include "cueball/cloth_motion.hpp"
-#include "cueball/errors.hpp"
-#include "cueball/parameters.hpp"
+#include "cueball/physics/cloth_motion.hpp"
+#include "cueball/core/errors.hpp"
+#include "cueball/core/parameters.hpp"
 
 namespace cueball {
 namespace {

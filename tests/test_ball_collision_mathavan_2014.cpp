@@ -1,5 +1,5 @@
 // Tests of the Mathavan et al. (2014) ball-ball impact
-// (src/ball_collision/mathavan_2014.cpp).
+// (src/models/ball_collision/mathavan_2014.cpp).
 //
 // The references are built here without the kernel's slip-age variable: the
 // paper's own scheme (explicit Euler steps in the normal impulse, on the
@@ -7,7 +7,7 @@
 // v += J/m, w += r x J / I at each contact), the paper's Tables 1 and 2, the
 // existing resolve_ball_collision() (the same model without cloth friction),
 // and conservation laws.
-#include "cueball/ball_collision/mathavan_2014.hpp"
+#include "cueball/models/ball_collision/mathavan_2014.hpp"
 
 #include <gtest/gtest.h>
 
@@ -19,10 +19,10 @@
 #include <utility>
 #include <vector>
 
-#include "cueball/ball_collision.hpp"
-#include "cueball/cloth_motion.hpp"
-#include "cueball/errors.hpp"
-#include "cueball/parameters.hpp"
+#include "cueball/models/ball_collision/coulomb_impulse.hpp"
+#include "cueball/physics/cloth_motion.hpp"
+#include "cueball/core/errors.hpp"
+#include "cueball/core/parameters.hpp"
 #include "test_support.hpp"
 
 namespace cueball {

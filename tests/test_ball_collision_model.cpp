@@ -1,17 +1,17 @@
-// Tests of the ball-ball models by name (src/ball_collision_model.cpp):
+// Tests of the ball-ball models by name (src/models/ball_collision/model.cpp):
 // names, each model's own constants, validation under the simulation's field
 // names, the dispatch against each model's kernel, a scenario's
 // "ball_collision" object, and the simulator under each model.
-#include "cueball/ball_collision_model.hpp"
+#include "cueball/models/ball_collision/model.hpp"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <string>
 
-#include "cueball/errors.hpp"
-#include "cueball/scenario.hpp"
-#include "cueball/simulator.hpp"
+#include "cueball/core/errors.hpp"
+#include "cueball/simulation/scenario.hpp"
+#include "cueball/simulation/simulator.hpp"
 
 namespace cueball {
 namespace {

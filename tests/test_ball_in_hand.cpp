@@ -1,10 +1,10 @@
-// Tests of ball in hand (src/ball_in_hand.cpp): the spot is a legal place
+// Tests of ball in hand (src/planning/ball_in_hand.cpp): the spot is a legal place
 // with the shot planned from it potting the target, it scores at least as
 // well as a straight-in placed by hand, it stays in the region given, it is
 // deterministic, and bad input and layouts with no spot say why. The grid
 // of spots where no straight pot exists is exercised by the run-outs of
 // cueball-planner-benchmark --in-hand planner (docs/planner-benchmark.md).
-#include "cueball/ball_in_hand.hpp"
+#include "cueball/planning/ball_in_hand.hpp"
 
 #include <gtest/gtest.h>
 
@@ -13,9 +13,9 @@
 #include <vector>
 
 #include "ball_layout.hpp"
-#include "cueball/errors.hpp"
-#include "cueball/scenario.hpp"
-#include "cueball/simulator.hpp"
+#include "cueball/core/errors.hpp"
+#include "cueball/simulation/scenario.hpp"
+#include "cueball/simulation/simulator.hpp"
 
 namespace cueball {
 namespace {

@@ -1,9 +1,9 @@
-// Tests of noisy batches (src/batch.cpp): determinism across thread counts,
+// Tests of noisy batches (src/simulation/batch.cpp): determinism across thread counts,
 // the reduction against a plain two-pass computation, errors from the
 // workers, memory that does not grow with the number of shots, and the
 // reflection of noisy strikes at their limits. (The first batch tests live in
 // tests/test_simulator.cpp.)
-#include "cueball/batch.hpp"
+#include "cueball/simulation/batch.hpp"
 
 #include <gtest/gtest.h>
 
@@ -22,8 +22,8 @@
 #include <thread>
 #include <vector>
 
-#include "cueball/errors.hpp"
-#include "cueball/scenario.hpp"
+#include "cueball/core/errors.hpp"
+#include "cueball/simulation/scenario.hpp"
 
 // ------------------------------------------------------------------ heap accounting
 //

@@ -9,8 +9,8 @@
 #include <vector>
 
 #include "cli_runner.hpp"
-#include "cueball/cloth_motion.hpp"
-#include "cueball/planner.hpp"
+#include "cueball/physics/cloth_motion.hpp"
+#include "cueball/physics/straight_shot_inverse.hpp"
 
 namespace cueball {
 namespace {

@@ -16,9 +16,9 @@
 
 #include "cli_runner.hpp"
 #include "temp_dir.hpp"
-#include "cueball/batch.hpp"
-#include "cueball/scenario.hpp"
-#include "cueball/table.hpp"
+#include "cueball/simulation/batch.hpp"
+#include "cueball/simulation/scenario.hpp"
+#include "cueball/table/table.hpp"
 
 namespace cueball {
 namespace {

@@ -12,7 +12,7 @@
 #include <vector>
 
 #include "cli_runner.hpp"
-#include "cueball/cushion_impact.hpp"
+#include "cueball/models/cushion/impact.hpp"
 
 namespace cueball {
 namespace {

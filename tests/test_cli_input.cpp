@@ -14,8 +14,8 @@
 #include "cli_runner.hpp"
 #include <nlohmann/json.hpp>
 
-#include "cueball/scenario.hpp"
-#include "cueball/table.hpp"
+#include "cueball/simulation/scenario.hpp"
+#include "cueball/table/table.hpp"
 #include "temp_dir.hpp"
 
 namespace cueball {

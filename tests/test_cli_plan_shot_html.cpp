@@ -14,7 +14,7 @@
 #include <vector>
 
 #include "cli_runner.hpp"
-#include "cueball/scenario.hpp"
+#include "cueball/simulation/scenario.hpp"
 #include "plan_shot_scenarios.hpp"
 #include "temp_dir.hpp"
 #include "viewer_page.hpp"

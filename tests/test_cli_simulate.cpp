@@ -19,10 +19,10 @@
 
 #include "cli_runner.hpp"
 #include "temp_dir.hpp"
-#include "cueball/batch.hpp"
-#include "cueball/scenario.hpp"
-#include "cueball/simulator.hpp"
-#include "cueball/table.hpp"
+#include "cueball/simulation/batch.hpp"
+#include "cueball/simulation/scenario.hpp"
+#include "cueball/simulation/simulator.hpp"
+#include "cueball/table/table.hpp"
 
 namespace cueball {
 namespace {

@@ -1,7 +1,7 @@
-// Tests of the closed-form motion on the cloth (src/cloth_motion.cpp) against
+// Tests of the closed-form motion on the cloth (src/physics/cloth_motion.cpp) against
 // an independent numerical integration of the equations of motion, paper
 // 001's closed forms (eqs 8-10, 19-24), and conservation/symmetry laws.
-#include "cueball/cloth_motion.hpp"
+#include "cueball/physics/cloth_motion.hpp"
 
 #include <gtest/gtest.h>
 
@@ -10,7 +10,7 @@
 #include <random>
 #include <vector>
 
-#include "cueball/errors.hpp"
+#include "cueball/core/errors.hpp"
 #include "test_support.hpp"
 
 namespace cueball {

@@ -1,9 +1,9 @@
-// Tests of the cue strike (src/cue_strike.cpp): the level-cue relations and
+// Tests of the cue strike (src/physics/cue_strike.cpp): the level-cue relations and
 // the general strike against the impulse-momentum equations solved directly
 // (a linear system, not the closed form), against Leckie & Greenspan's printed
 // formulas after the change of parameters (C7), and against conservation and
 // symmetry laws; validation and execution noise.
-#include "cueball/cue_strike.hpp"
+#include "cueball/physics/cue_strike.hpp"
 
 #include <gtest/gtest.h>
 
@@ -16,8 +16,8 @@
 #include <utility>
 #include <vector>
 
-#include "cueball/cloth_motion.hpp"
-#include "cueball/errors.hpp"
+#include "cueball/physics/cloth_motion.hpp"
+#include "cueball/core/errors.hpp"
 
 namespace cueball {
 namespace {

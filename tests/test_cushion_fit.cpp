@@ -1,8 +1,8 @@
-// Tests of the cushion fit (src/cushion_fit.cpp, paper section 3.5): it
+// Tests of the cushion fit (src/models/cushion/fit.cpp, paper section 3.5): it
 // recovers known constants from synthetic rebounds with noise (fixed seed),
 // reports how well they are determined, and flags that head-on rolling data
 // alone fix only one combination of e_e and mu_w.
-#include "cueball/cushion_fit.hpp"
+#include "cueball/models/cushion/fit.hpp"
 
 #include <gtest/gtest.h>
 
@@ -13,7 +13,7 @@
 #include <string>
 #include <utility>
 
-#include "cueball/errors.hpp"
+#include "cueball/core/errors.hpp"
 
 namespace cueball {
 namespace {

@@ -1,18 +1,18 @@
 // Tests of the one-impulse cushion model of Han (2005),
-// src/cushion/han_2005.cpp (equations H1-H5): the frictionless limit in
+// src/models/cushion/han_2005.cpp (equations H1-H5): the frictionless limit in
 // closed form, a rolling head-on ball worked by hand, the stick and slip
 // regimes of Coulomb's law, the angular impulse consistent with the linear
 // one (R n x J / I), energy, mirror symmetry, the head-on plane, scale
 // invariance, and validation.
-#include "cueball/cushion/han_2005.hpp"
+#include "cueball/models/cushion/han_2005.hpp"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <random>
 
-#include "cueball/errors.hpp"
-#include "cueball/parameters.hpp"
+#include "cueball/core/errors.hpp"
+#include "cueball/core/parameters.hpp"
 
 namespace cueball {
 namespace {

@@ -9,7 +9,7 @@
 // (including sticking at the cushion); the conserved angular momentum about
 // the contact line; input validation and the unchecked entry point; no
 // allocation on the default path; the exact solver's step count.
-#include "cueball/cushion_impact.hpp"
+#include "cueball/models/cushion/impact.hpp"
 
 #include <gtest/gtest.h>
 
@@ -23,8 +23,8 @@
 #include <utility>
 #include <vector>
 
-#include "cueball/errors.hpp"
-#include "cueball/parameters.hpp"
+#include "cueball/core/errors.hpp"
+#include "cueball/core/parameters.hpp"
 #include "count_allocations.hpp"
 #include "expect_invalid.hpp"
 

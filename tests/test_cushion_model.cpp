@@ -1,8 +1,8 @@
-// Tests of the cushion models by name (src/cushion_model.cpp): names, each
+// Tests of the cushion models by name (src/models/cushion/model.cpp): names, each
 // model's own constants, validation under the simulation's field names, the
 // dispatch against each model's kernel, a scenario's "cushion" object, and
 // the simulator's rebound under each model.
-#include "cueball/cushion_model.hpp"
+#include "cueball/models/cushion/model.hpp"
 
 #include <gtest/gtest.h>
 
@@ -10,10 +10,10 @@
 #include <cmath>
 #include <string>
 
-#include "cueball/errors.hpp"
-#include "cueball/scenario.hpp"
-#include "cueball/simulator.hpp"
-#include "cueball/table.hpp"
+#include "cueball/core/errors.hpp"
+#include "cueball/simulation/scenario.hpp"
+#include "cueball/simulation/simulator.hpp"
+#include "cueball/table/table.hpp"
 
 namespace cueball {
 namespace {

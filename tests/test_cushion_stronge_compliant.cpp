@@ -1,5 +1,5 @@
 // Tests of the `stronge_compliant` ball-cushion model
-// (src/cushion/stronge_compliant.cpp): pooltool's reference values; the
+// (src/models/cushion/stronge_compliant.cpp): pooltool's reference values; the
 // closed forms of gross slip (S8), of the frictionless impact and of the
 // rigid Coulomb impulse (Omega -> infinity); laws of the model (energy never
 // increases, mirror symmetry, a head-on impact stays in its plane,
@@ -7,7 +7,7 @@
 // between slip and stick); the contact velocities after the impact; the
 // defaults, the Poisson's-ratio relation and validation; no allocation;
 // agreement with pooltool's three-case closed form where it applies.
-#include "cueball/cushion/stronge_compliant.hpp"
+#include "cueball/models/cushion/stronge_compliant.hpp"
 
 #include <gtest/gtest.h>
 
@@ -16,8 +16,8 @@
 #include <random>
 #include <string>
 
-#include "cueball/errors.hpp"
-#include "cueball/parameters.hpp"
+#include "cueball/core/errors.hpp"
+#include "cueball/core/parameters.hpp"
 #include "count_allocations.hpp"
 #include "expect_invalid.hpp"
 

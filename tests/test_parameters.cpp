@@ -1,5 +1,5 @@
-// Tests of the parameter presets and their validation (src/parameters.cpp).
-#include "cueball/parameters.hpp"
+// Tests of the parameter presets and their validation (src/core/parameters.cpp).
+#include "cueball/core/parameters.hpp"
 
 #include <gtest/gtest.h>
 
@@ -7,7 +7,7 @@
 #include <limits>
 #include <string>
 
-#include "cueball/errors.hpp"
+#include "cueball/core/errors.hpp"
 
 namespace cueball {
 namespace {

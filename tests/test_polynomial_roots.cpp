@@ -1,4 +1,4 @@
-// Tests for the real polynomial root solvers (src/polynomial_roots.cpp).
+// Tests for the real polynomial root solvers (src/physics/polynomial_roots.cpp).
 //
 // Every expected value is computed, never hard-coded: polynomials are built
 // from known roots, compared with an independent long-double reference
@@ -16,8 +16,8 @@
 #include <random>
 #include <vector>
 
-#include "cueball/polynomial_roots.hpp"
-#include "cueball/vec.hpp"
+#include "cueball/physics/polynomial_roots.hpp"
+#include "cueball/core/vec.hpp"
 
 namespace cueball {
 namespace {

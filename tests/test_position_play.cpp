@@ -1,9 +1,9 @@
-// Tests of position play (src/position_play.cpp): the table a shot leaves,
+// Tests of position play (src/planning/position_play.cpp): the table a shot leaves,
 // the choice maximising P(this pot) x P(next pot), each leave's next
 // probability reproduced by an independent plan on that table, the
 // lookahead doing at least as well as the shot planned without it (and
 // better somewhere), the default next ball, and bad input.
-#include "cueball/position_play.hpp"
+#include "cueball/planning/position_play.hpp"
 
 #include <gtest/gtest.h>
 
@@ -15,8 +15,8 @@
 #include <vector>
 
 #include "ball_layout.hpp"
-#include "cueball/errors.hpp"
-#include "cueball/scenario.hpp"
+#include "cueball/core/errors.hpp"
+#include "cueball/simulation/scenario.hpp"
 
 namespace cueball {
 namespace {

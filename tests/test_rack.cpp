@@ -1,6 +1,6 @@
-// Tests of the racks (src/rack.cpp). Spot positions are recomputed here from
+// Tests of the racks (src/table/rack.cpp). Spot positions are recomputed here from
 // the WPA and WPBSA numbers.
-#include "cueball/rack.hpp"
+#include "cueball/table/rack.hpp"
 
 #include <gtest/gtest.h>
 
@@ -12,8 +12,8 @@
 #include <string>
 #include <vector>
 
-#include "cueball/errors.hpp"
-#include "cueball/table.hpp"
+#include "cueball/core/errors.hpp"
+#include "cueball/table/table.hpp"
 
 namespace cueball {
 namespace {

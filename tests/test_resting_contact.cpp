@@ -1,9 +1,9 @@
-// Tests of resting contacts (src/resting_contact.cpp): the kernels' claims
+// Tests of resting contacts (src/physics/resting_contact.cpp): the kernels' claims
 // in resting_contact.hpp (nothing left moving or pressed into the contact,
 // energy never rises, the swerve along a rail kept), then the simulator on
 // the shots that used to pass into a cushion or another ball, or never end
 // (issue 11), checked densely between events.
-#include "cueball/resting_contact.hpp"
+#include "cueball/physics/resting_contact.hpp"
 
 #include <gtest/gtest.h>
 
@@ -12,10 +12,10 @@
 #include <random>
 #include <string>
 
-#include "cueball/errors.hpp"
-#include "cueball/events.hpp"
-#include "cueball/scenario.hpp"
-#include "cueball/simulator.hpp"
+#include "cueball/core/errors.hpp"
+#include "cueball/physics/contact_prediction.hpp"
+#include "cueball/simulation/scenario.hpp"
+#include "cueball/simulation/simulator.hpp"
 #include "test_support.hpp"
 
 namespace cueball {

@@ -1,4 +1,4 @@
-// Scenario JSON and result JSON (src/scenario.cpp): self-describing results.
+// Scenario JSON and result JSON (src/simulation/scenario.cpp): self-describing results.
 // A result's "scenario" read back and simulated reproduces the result bit for
 // bit; events name their cushion or jaw; "cue_strike" records the strike as
 // given and as resolved.
@@ -12,8 +12,8 @@
 #include <string>
 #include <vector>
 
-#include "cueball/errors.hpp"
-#include "cueball/scenario.hpp"
+#include "cueball/core/errors.hpp"
+#include "cueball/simulation/scenario.hpp"
 
 namespace cueball {
 namespace {

@@ -1,4 +1,4 @@
-// Tests of the shot planner (src/shot_planner.cpp): straight-in and cut
+// Tests of the shot planner (src/planning/shot_planner.cpp): straight-in and cut
 // shots found as direct pots with the aim corrected for throw, a bank when
 // the direct line is blocked, a two-cushion bank when every direct and
 // one-cushion line is, a kick when the cue ball's straight paths are, a
@@ -7,7 +7,7 @@
 // window probability as its formula and against noisy repeats, the aim scan
 // finding what geometry misses, a pot in any pocket counted when no pocket
 // is asked for, determinism, input validation and infeasible layouts.
-#include "cueball/shot_planner.hpp"
+#include "cueball/planning/shot_planner.hpp"
 
 #include <gtest/gtest.h>
 
@@ -18,9 +18,9 @@
 #include <vector>
 
 #include "ball_layout.hpp"
-#include "cueball/batch.hpp"
-#include "cueball/errors.hpp"
-#include "cueball/scenario.hpp"
+#include "cueball/simulation/batch.hpp"
+#include "cueball/core/errors.hpp"
+#include "cueball/simulation/scenario.hpp"
 
 namespace cueball {
 namespace {

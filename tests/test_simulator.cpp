@@ -1,7 +1,7 @@
-// Tests of the event-driven table simulator (src/simulator.cpp) and of
-// scenarios (src/scenario.cpp): the guarantees of issue 4, each checked on the
+// Tests of the event-driven table simulator (src/simulation/simulator.cpp) and of
+// scenarios (src/simulation/scenario.cpp): the guarantees of issue 4, each checked on the
 // exact trajectories the result carries.
-#include "cueball/simulator.hpp"
+#include "cueball/simulation/simulator.hpp"
 
 #include <gtest/gtest.h>
 
@@ -12,10 +12,10 @@
 #include <random>
 #include <string>
 
-#include "cueball/batch.hpp"
-#include "cueball/errors.hpp"
-#include "cueball/rack.hpp"
-#include "cueball/scenario.hpp"
+#include "cueball/simulation/batch.hpp"
+#include "cueball/core/errors.hpp"
+#include "cueball/table/rack.hpp"
+#include "cueball/simulation/scenario.hpp"
 
 namespace cueball {
 namespace {

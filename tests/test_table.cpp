@@ -1,9 +1,9 @@
-// Tests of table geometry, presets, validation and JSON (src/table.cpp).
+// Tests of table geometry, presets, validation and JSON (src/table/table.cpp).
 //
 // Expected values are computed here from the published numbers (inches,
-// millimetres), independently of the construction in src/table.cpp; the lips,
+// millimetres), independently of the construction in src/table/table.cpp; the lips,
 // cut angles and mouths are measured back from the built segments.
-#include "cueball/table.hpp"
+#include "cueball/table/table.hpp"
 
 #include <gtest/gtest.h>
 
@@ -16,7 +16,7 @@
 #include <utility>
 #include <vector>
 
-#include "cueball/errors.hpp"
+#include "cueball/core/errors.hpp"
 
 namespace cueball {
 namespace {

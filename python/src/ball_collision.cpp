@@ -1,13 +1,13 @@
-// include/cueball/ball_collision.hpp: the collision of two balls.
+// include/cueball/models/ball_collision/coulomb_impulse.hpp: the collision of two balls.
 #include "bindings.hpp"
 
 #include <optional>
 #include <string>
 #include <utility>
 
-#include "cueball/ball_collision.hpp"
-#include "cueball/ball_collision/mathavan_2014.hpp"
-#include "cueball/errors.hpp"
+#include "cueball/models/ball_collision/coulomb_impulse.hpp"
+#include "cueball/models/ball_collision/mathavan_2014.hpp"
+#include "cueball/core/errors.hpp"
 
 namespace cueball_python {
 

@@ -1,13 +1,13 @@
-// include/cueball/batch.hpp: noisy batches of one shot.
+// include/cueball/simulation/batch.hpp: noisy batches of one shot.
 #include "bindings.hpp"
 
 #include <cstdint>
 #include <memory>
 #include <optional>
 #include <string>
-#include "cueball/batch.hpp"
-#include "cueball/errors.hpp"
-#include "cueball/scenario.hpp"
+#include "cueball/simulation/batch.hpp"
+#include "cueball/core/errors.hpp"
+#include "cueball/simulation/scenario.hpp"
 
 namespace cueball_python {
 

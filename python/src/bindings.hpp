@@ -20,10 +20,10 @@
 
 #include <memory>
 
-#include "cueball/cushion_impact.hpp"
-#include "cueball/parameters.hpp"
-#include "cueball/scenario.hpp"
-#include "cueball/vec.hpp"
+#include "cueball/models/cushion/impact.hpp"
+#include "cueball/core/parameters.hpp"
+#include "cueball/simulation/scenario.hpp"
+#include "cueball/core/vec.hpp"
 
 namespace cueball_python {
 

@@ -1,11 +1,11 @@
-// include/cueball/cloth_motion.hpp: the ball on the cloth in closed form.
+// include/cueball/physics/cloth_motion.hpp: the ball on the cloth in closed form.
 #include "bindings.hpp"
 
 #include <cmath>
 #include <string>
-#include "cueball/cloth_motion.hpp"
-#include "cueball/errors.hpp"
-#include "cueball/parameters.hpp"
+#include "cueball/physics/cloth_motion.hpp"
+#include "cueball/core/errors.hpp"
+#include "cueball/core/parameters.hpp"
 
 namespace cueball_python {
 

@@ -1,16 +1,16 @@
-// include/cueball/cue_strike.hpp: the cue strike.
+// include/cueball/physics/cue_strike.hpp: the cue strike.
 #include "bindings.hpp"
 
 #include <limits>
 #include <numbers>
-#include "cueball/cue_strike.hpp"
-#include "cueball/errors.hpp"
+#include "cueball/physics/cue_strike.hpp"
+#include "cueball/core/errors.hpp"
 
 namespace cueball_python {
 
 namespace {
 
-// The scenario's degree (src/scenario.cpp): the same product converts alike.
+// The scenario's degree (src/simulation/scenario.cpp): the same product converts alike.
 constexpr double kDegree = std::numbers::pi / 180.0;
 
 }  // namespace

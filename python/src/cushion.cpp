@@ -1,13 +1,13 @@
-// include/cueball/cushion_impact.hpp: the Mathavan 2010 cushion impact.
+// include/cueball/models/cushion/impact.hpp: the Mathavan 2010 cushion impact.
 #include "bindings.hpp"
 
 #include <cmath>
 #include <numbers>
 #include <optional>
 #include <string>
-#include "cueball/cushion_impact.hpp"
-#include "cueball/cushion_model.hpp"
-#include "cueball/errors.hpp"
+#include "cueball/models/cushion/impact.hpp"
+#include "cueball/models/cushion/model.hpp"
+#include "cueball/core/errors.hpp"
 
 namespace cueball_python {
 

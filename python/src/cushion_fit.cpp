@@ -1,11 +1,11 @@
-// include/cueball/cushion_fit.hpp: fitting e_e and mu_w to measured rebounds.
+// include/cueball/models/cushion/fit.hpp: fitting e_e and mu_w to measured rebounds.
 #include "bindings.hpp"
 
-#include "cueball/cushion_model.hpp"
+#include "cueball/models/cushion/model.hpp"
 
 #include <string>
 #include <vector>
-#include "cueball/cushion_fit.hpp"
+#include "cueball/models/cushion/fit.hpp"
 
 namespace cueball_python {
 

@@ -3,9 +3,9 @@
 
 #include <exception>
 #include <string>
-#include "cueball/errors.hpp"
-#include "cueball/shot_planner.hpp"
-#include "cueball/simulator.hpp"
+#include "cueball/core/errors.hpp"
+#include "cueball/planning/shot_planner.hpp"
+#include "cueball/simulation/simulator.hpp"
 
 namespace cueball_python {
 

@@ -1,8 +1,8 @@
-// include/cueball/parameters.hpp: ball and cloth parameters, presets, ranges.
+// include/cueball/core/parameters.hpp: ball and cloth parameters, presets, ranges.
 #include "bindings.hpp"
 
-#include "cueball/errors.hpp"
-#include "cueball/parameters.hpp"
+#include "cueball/core/errors.hpp"
+#include "cueball/core/parameters.hpp"
 
 namespace cueball_python {
 

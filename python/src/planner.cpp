@@ -1,8 +1,8 @@
-// include/cueball/planner.hpp: the inverse problem (paper 001 eqs 17-28).
+// include/cueball/physics/straight_shot_inverse.hpp: the inverse problem (paper 001 eqs 17-28).
 #include "bindings.hpp"
 
 #include <string>
-#include "cueball/planner.hpp"
+#include "cueball/physics/straight_shot_inverse.hpp"
 
 namespace cueball_python {
 

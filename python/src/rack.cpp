@@ -1,9 +1,9 @@
-// include/cueball/rack.hpp: opening positions and table markings.
+// include/cueball/table/rack.hpp: opening positions and table markings.
 #include "bindings.hpp"
 
 #include <cstdint>
 #include <string>
-#include "cueball/rack.hpp"
+#include "cueball/table/rack.hpp"
 
 namespace cueball_python {
 

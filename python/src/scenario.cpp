@@ -1,4 +1,4 @@
-// include/cueball/scenario.hpp: a shot as an object. A Scenario is
+// include/cueball/simulation/scenario.hpp: a shot as an object. A Scenario is
 // read-only and always valid; every way of making one goes through the
 // library's JSON reader (scenario_from_json), so the checks, the defaults and
 // the units (degrees and ball radii for the cue) are the JSON's, and its
@@ -9,9 +9,9 @@
 #include <optional>
 #include <string>
 #include <vector>
-#include "cueball/errors.hpp"
-#include "cueball/rack.hpp"
-#include "cueball/scenario.hpp"
+#include "cueball/core/errors.hpp"
+#include "cueball/table/rack.hpp"
+#include "cueball/simulation/scenario.hpp"
 
 namespace cueball_python {
 

@@ -1,4 +1,4 @@
-// include/cueball/scenario.hpp: a scenario given from Python (None, Scenario, dict, JSON text, path).
+// include/cueball/simulation/scenario.hpp: a scenario given from Python (None, Scenario, dict, JSON text, path).
 #include "bindings.hpp"
 
 #include <cctype>
@@ -6,8 +6,8 @@
 #include <optional>
 #include <string>
 #include <vector>
-#include "cueball/errors.hpp"
-#include "cueball/scenario.hpp"
+#include "cueball/core/errors.hpp"
+#include "cueball/simulation/scenario.hpp"
 
 namespace cueball_python {
 

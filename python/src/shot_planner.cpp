@@ -1,5 +1,5 @@
 // plan_shot: which strike pots this ball, and how sure is it
-// (include/cueball/shot_planner.hpp). The plan comes back as the dict of
+// (include/cueball/planning/shot_planner.hpp). The plan comes back as the dict of
 // `cueball plan-shot --json` (the same keys and units), plus the scenario
 // with the planned cue as a Scenario object.
 #include <array>
@@ -8,10 +8,10 @@
 #include <vector>
 
 #include "bindings.hpp"
-#include "cueball/ball_in_hand.hpp"
-#include "cueball/errors.hpp"
-#include "cueball/position_play.hpp"
-#include "cueball/shot_planner.hpp"
+#include "cueball/planning/ball_in_hand.hpp"
+#include "cueball/core/errors.hpp"
+#include "cueball/planning/position_play.hpp"
+#include "cueball/planning/shot_planner.hpp"
 
 namespace cueball_python {
 

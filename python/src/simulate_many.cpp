@@ -7,8 +7,8 @@
 #include <memory>
 
 #include "bindings.hpp"
-#include "cueball/batch.hpp"
-#include "cueball/errors.hpp"
+#include "cueball/simulation/batch.hpp"
+#include "cueball/core/errors.hpp"
 
 namespace cueball_python {
 

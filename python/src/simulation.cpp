@@ -1,4 +1,4 @@
-// include/cueball/simulator.hpp: whole shots. simulate() returns a Result
+// include/cueball/simulation/simulator.hpp: whole shots. simulate() returns a Result
 // that holds the library's SimulationResult (and the scenario it ran) and
 // builds NumPy arrays from it on demand; no JSON on the way unless asked for
 // (to_dict(), to_json(): the library's result_to_json, the CLI's bytes).
@@ -16,10 +16,10 @@
 #include <utility>
 #include <vector>
 
-#include "cueball/cloth_motion.hpp"
-#include "cueball/errors.hpp"
-#include "cueball/scenario.hpp"
-#include "cueball/simulator.hpp"
+#include "cueball/physics/cloth_motion.hpp"
+#include "cueball/core/errors.hpp"
+#include "cueball/simulation/scenario.hpp"
+#include "cueball/simulation/simulator.hpp"
 
 namespace cueball_python {
 

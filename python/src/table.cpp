@@ -1,4 +1,4 @@
-// include/cueball/table.hpp: tables (presets, specs, custom geometry, JSON)
+// include/cueball/table/table.hpp: tables (presets, specs, custom geometry, JSON)
 // and their parts. A Table is a read-only value that is always valid: every
 // way of making one validates it (validate(const Table&)), so its methods can
 // call the library's unchecked queries.
@@ -9,8 +9,8 @@
 #include <cmath>
 #include <string>
 #include <vector>
-#include "cueball/errors.hpp"
-#include "cueball/table.hpp"
+#include "cueball/core/errors.hpp"
+#include "cueball/table/table.hpp"
 
 namespace cueball_python {
 

@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "cueball/scenario.hpp"
+#include "cueball/simulation/scenario.hpp"
 
 namespace cueball::test {
 

@@ -5,7 +5,7 @@
 
 #include <string>
 
-#include "cueball/errors.hpp"
+#include "cueball/core/errors.hpp"
 
 namespace cueball::test {
 

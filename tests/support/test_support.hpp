@@ -3,7 +3,7 @@
 
 #include <random>
 
-#include "cueball/cloth_motion.hpp"
+#include "cueball/physics/cloth_motion.hpp"
 
 namespace cueball::test {
 

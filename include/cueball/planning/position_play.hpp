@@ -1,0 +1,120 @@
+// Position play (issue 13, item 2): among the shots that pot the target,
+// prefer the one that leaves the cue ball where the next target has the
+// highest success probability. A one-shot lookahead over plan_shot():
+//
+//   1. The shot is planned with a wide variant search: plan_shot()'s step 4
+//      (shot_planner.hpp) with the tip heights kPositionHeights at the cue
+//      speeds kPositionSpeedFactors x the shot's own (kept inside its speed
+//      window), side +-0.2 at the best, for the three best shots even when
+//      they leave nothing to gain in potting; kPositionVariantBudgets x the
+//      request's budget more engine runs for these. Every shot and variant
+//      found, with the noise-free end of every ball (PlannedShot::predicted),
+//      is a candidate; those whose window probability is at least
+//      kPositionKeepFraction of the best's are kept, at most kPositionLeaves,
+//      best first.
+//   2. Each candidate's leave is scored without a noisy shot: its window
+//      probability times the best window probability of the next target's
+//      shots on the table it leaves (the balls not pocketed, at rest where
+//      the noise-free shot leaves them; plan_shot()'s geometry, aim solve and
+//      windows, `next_simulations` runs at most). The window probability is
+//      the planner's prediction of a shot's success (0.98 correlated with
+//      measured success on the planner benchmark). A shot that pots the
+//      next target too is scored on the ball after it (the lowest id left,
+//      9-ball's rule), and with no ball left on its window probability alone.
+//   3. The kMaxPositionCandidates best by that score are the finalists: each
+//      is screened on the same noisy draws (a kPositionScreenFraction-th of
+//      the request's budget: common random numbers, a paired comparison),
+//      and the next target's shot planned in full with plan_shot() on the
+//      table it leaves (the same kinds and noise, `next_simulations` runs). A
+//      next shot with no feasible candidate scores 0.
+//   4. The finalist played maximises P(this pot) x P(next pot), the
+//      probability of potting both under the noise (each estimated from
+//      noisy simulations; the product treats them as independent and takes
+//      the next shot from the noise-free leave: a one-shot lookahead, as in
+//      the computational-pool tournament programs' first level of search:
+//      M. Smith, "PickPocket: A computer billiards shark", Artificial
+//      Intelligence 171 (2007) 1069-1091). Its success probability is then
+//      measured on fresh draws (a kPositionEstimateFraction-th of the
+//      budget), so it carries no selection bias.
+//
+// The leave's quality is measured on the exact simulation and the real
+// planner, so it includes what the next shot needs (its cut, distance,
+// blockers and the cue's clearance), not a distance heuristic. Paper 001's
+// inverse problem (a ball stopping at a planned point) is not used: the cue
+// ball's end after a collision is not a straight roll from the strike, so
+// the leave is read from the simulation instead.
+#pragma once
+
+#include <array>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "cueball/planning/shot_planner.hpp"
+
+namespace cueball {
+
+/// Tip heights of the wide variant search, ball radii.
+inline constexpr std::array<double, 5> kPositionHeights{-0.4, -0.2, 0.0, 0.2, 0.4};
+/// Cue-speed factors of the wide variant search, on each shot's own speed.
+inline constexpr std::array<double, 6> kPositionSpeedFactors{0.6, 0.8, 1.0, 1.3, 1.8, 2.5};
+/// Engine runs of the wide variant search, in budgets of the request's.
+inline constexpr int kPositionVariantBudgets = 3;
+/// Candidates whose window probability is under this fraction of the best's are not played for position.
+inline constexpr double kPositionKeepFraction = 0.5;
+/// Most candidates whose leave is scored by window probabilities.
+inline constexpr std::size_t kPositionLeaves = 24;
+/// Most candidates whose leave is evaluated in full (the finalists).
+inline constexpr std::size_t kMaxPositionCandidates = 3;
+/// The finalists' common screen takes the request's budget over this; the
+/// final estimate of the one played, the budget over kPositionEstimateFraction.
+inline constexpr int kPositionScreenFraction = 5;
+inline constexpr int kPositionEstimateFraction = 4;
+
+struct PositionRequest {
+  /// The shot that pots shot.target; its `simulations` is the budget of its
+  /// plan, and kPositionVariantBudgets times it more go to the wide variant search.
+  PlanRequest shot;
+  /// Id of the next target. None: the lowest id on the table other than the
+  /// cue ball and the target (9-ball's rule); with no such ball there is no
+  /// lookahead and the shot is plan_shot()'s.
+  std::optional<int> next_target;
+  /// Engine runs of each next-shot plan, [kMinPlanSimulations, kMaxPlanSimulations].
+  int next_simulations = kMinPlanSimulations;
+};
+
+/// What a candidate leaves for the next shot.
+struct Leave {
+  Vec2 cue_ball;                           ///< where the noise-free shot leaves the cue ball, m
+  bool next_feasible = false;              ///< the next shot has a feasible candidate
+  double next_success_probability = 0.0;   ///< of the next shot's plan from there (0 when infeasible)
+  /// This shot's success probability on the finalists' common noisy draws.
+  double screened_probability = 0.0;
+  std::string next_kind;                   ///< the next shot's kind ("direct", ...); empty when infeasible
+  std::string next_pocket;                 ///< the next shot's pocket name; empty when infeasible
+  /// screened_probability x next_success_probability. When the noise-free
+  /// shot pots the next target too, next_* are of the ball after it (the
+  /// lowest id left); with no ball left, score = screened_probability.
+  double score = 0.0;
+};
+
+struct PositionPlanResult {
+  ShotPlanResult plan;                 ///< shot: the one played; alternatives: the others evaluated, by score
+  int next_target = -1;                ///< -1: no next ball, no lookahead
+  Leave leave;                         ///< plan.shot's
+  std::vector<Leave> alternative_leaves;  ///< plan.alternatives[k]'s
+};
+
+/// Plans the shot for position (header comment). Throws what plan_shot()
+/// throws, and InvalidArgument("next") when next_target is not a ball on
+/// the table or is the cue ball or the target, InvalidArgument
+/// ("next_simulations") out of range. plan.simulations and plan.seconds
+/// count every plan made (a next plan that finds no feasible shot counted at
+/// its whole budget, so plan.simulations is an upper bound).
+PositionPlanResult plan_shot_for_position(const Scenario& table_state, const PositionRequest& request);
+
+/// The table a planned shot leaves: its balls not pocketed, at rest where
+/// PlannedShot::predicted puts them, the scenario's "cue" cleared.
+Scenario table_left_by(const Scenario& table_state, const PlannedShot& shot);
+
+}  // namespace cueball

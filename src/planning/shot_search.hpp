@@ -1,0 +1,63 @@
+// Inside the library: plan_shot() with a wider or a cheaper search, for its
+// callers here (position play). The public entry is shot_planner.hpp.
+#pragma once
+
+#include <algorithm>
+#include <cstdint>
+#include <vector>
+
+#include "cueball/planning/shot_planner.hpp"
+
+namespace cueball {
+
+/// What plan_shot()'s step 4 tries (shot_planner.hpp); the defaults are plan_shot()'s own.
+struct ShotSearch {
+  std::vector<double> variant_heights{-0.3, 0.0, 0.3};  ///< tip heights of the variants, ball radii
+  std::vector<double> variant_speeds{0.7, 1.0, 1.8};    ///< cue-speed factors of the variants
+  /// Vary a shot even when its window probability leaves nothing to gain
+  /// (position play wants the spin and speed that leave the cue ball well).
+  bool vary_easy = false;
+  /// Engine runs the variants may take beyond the request's budget.
+  int variant_runs = 0;
+  /// False: no noisy shot at all (no screen, no variants, no estimate): the
+  /// feasible shots ranked by window probability, success_probability 0.
+  bool noisy = true;
+  /// Fill SearchedShots::every (a copy of every shot found).
+  bool keep_every = false;
+};
+
+struct SearchedShots {
+  ShotPlanResult plan;
+  /// With ShotSearch::keep_every and noise: every feasible shot and variant
+  /// found, the chosen one among them (its success probability as screened,
+  /// not as finally estimated). Empty otherwise.
+  std::vector<PlannedShot> every;
+};
+
+/// plan_shot() with `search` (plan_shot(s, q) is search_shots(s, q, {}).plan).
+SearchedShots search_shots(const Scenario& table_state, const PlanRequest& q, const ShotSearch& search);
+
+/// The successes among `shots` noisy repeats of a planned shot under q.noise
+/// and q.seed, counted by the planner's rule of success (shot_planner.hpp):
+/// shots first_shot, first_shot + 1, ... of the seed's stream.
+int noisy_successes(const Scenario& table_state, const PlanRequest& q, int cue_ball, const PlannedShot& shot, int shots,
+                    std::uint64_t first_shot);
+
+/// Sets the shot's success probability to hits / shots, its standard error
+/// sqrt(p (1 - p) / shots) and noisy_shots to shots.
+void set_estimate(PlannedShot& shot, int hits, int shots);
+
+/// Distance from p to the segment a-b (the swept-circle test of a straight
+/// path: another ball's centre within 2R of it blocks it), m.
+inline double distance_to_path(Vec2 p, Vec2 a, Vec2 b) {
+  const Vec2 ab = b - a;
+  const double len2 = dot(ab, ab);
+  const double t = len2 > 0.0 ? std::clamp(dot(p - a, ab) / len2, 0.0, 1.0) : 0.0;
+  return norm(p - (a + t * ab));
+}
+
+/// Where plan_shot()'s noisy screen starts in the seed's stream (its final
+/// estimate starts at 0).
+inline constexpr std::uint64_t kScreenFirstShot = std::uint64_t{1} << 40;
+
+}  // namespace cueball

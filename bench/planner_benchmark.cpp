@@ -69,6 +69,7 @@
 
 #include "cueball/simulation/batch.hpp"
 #include "cueball/core/errors.hpp"
+#include "cueball/core/random.hpp"
 #include "cueball/planning/ball_in_hand.hpp"
 #include "cueball/planning/position_play.hpp"
 #include "cueball/table/rack.hpp"
@@ -118,26 +119,6 @@ __attribute__((format(printf, 1, 2))) std::string fmt(const char* format, ...) {
   out.resize(static_cast<std::size_t>(std::max(n, 0)));
   return out;
 }
-
-std::uint64_t splitmix64(std::uint64_t x) {
-  x += 0x9e3779b97f4a7c15ULL;
-  x = (x ^ (x >> 30)) * 0xbf58476d1ce4e5b9ULL;
-  x = (x ^ (x >> 27)) * 0x94d049bb133111ebULL;
-  return x ^ (x >> 31);
-}
-std::uint64_t stream_seed(std::uint64_t seed, std::uint64_t stream) { return splitmix64(splitmix64(seed) ^ (stream * 0x632be59bd9b4e019ULL)); }
-
-class Rng {
- public:
-  explicit Rng(std::uint64_t seed) : engine_(splitmix64(seed)) {}
-  std::uint64_t bits() { return engine_(); }
-  double unit() { return static_cast<double>(engine_() >> 11) * 0x1.0p-53; }
-  double uniform(double lo, double hi) { return lo + (hi - lo) * unit(); }
-  int integer(int lo, int hi) { return lo + static_cast<int>(unit() * static_cast<double>(hi - lo + 1)); }
-
- private:
-  std::mt19937_64 engine_;
-};
 
 double seconds_since(std::chrono::steady_clock::time_point t) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
@@ -194,7 +175,7 @@ void add_ball(std::vector<SimulationBall>& balls, int id, Vec2 p) {
   balls.push_back(b);
 }
 
-Vec2 random_spot(const Setup& st, const std::vector<SimulationBall>& balls, Rng& rng) {
+Vec2 random_spot(const Setup& st, const std::vector<SimulationBall>& balls, RandomStream& rng) {
   const Table& t = st.base.table;
   for (int attempt = 0; attempt < 100000; ++attempt) {
     const Vec2 p{rng.uniform(0.0, t.length), rng.uniform(0.0, t.width)};
@@ -205,7 +186,7 @@ Vec2 random_spot(const Setup& st, const std::vector<SimulationBall>& balls, Rng&
 
 // Single-pot layout k: cue ball, target, then 0-5 others, uniform on the bed.
 Scenario single_layout(const Setup& st, std::uint64_t seed, int& others) {
-  Rng rng(seed);
+  RandomStream rng(splitmix64(seed));
   others = rng.integer(0, 5);
   Scenario s = st.base;
   for (int id = 0; id < 2 + others; ++id) add_ball(s.balls, id, random_spot(st, s.balls, rng));
@@ -216,13 +197,6 @@ std::size_t index_of(const Scenario& s, int id) {
   for (std::size_t i = 0; i < s.balls.size(); ++i)
     if (s.balls[i].id == id) return i;
   return s.balls.size();
-}
-
-double distance_to_path(Vec2 p, Vec2 a, Vec2 b) {
-  const Vec2 ab = b - a;
-  const double len2 = dot(ab, ab);
-  const double t = len2 > 0.0 ? std::clamp(dot(p - a, ab) / len2, 0.0, 1.0) : 0.0;
-  return norm(p - (a + t * ab));
 }
 
 // The lowest elevation of kElevationsDeg at which the cue clears, or NaN.
@@ -352,7 +326,7 @@ GhostAim ghost_aim(const Setup& st, const Scenario& s, int target_id, double spe
     bool blocked = false;
     for (const SimulationBall& b : s.balls) {
       if (b.id == 0 || b.id == target_id) continue;
-      if (distance_to_path(b.state.position, C, G) < 2.0 * R || distance_to_path(b.state.position, O, P) < 2.0 * R) blocked = true;
+      if (distance_to_segment(b.state.position, C, G) < 2.0 * R || distance_to_segment(b.state.position, O, P) < 2.0 * R) blocked = true;
     }
     if (blocked) continue;
     ShotAction a;
@@ -564,7 +538,7 @@ Scenario with_balls_at(const Scenario& s, const ManyResult& m, std::size_t shot,
 
 // The rack after the engine's break, the cue ball in hand by the rule.
 Scenario broken_rack(const Setup& st, std::uint64_t seed, int& on_break) {
-  Rng rng(stream_seed(seed, kBreakStream));
+  RandomStream rng(splitmix64(stream_seed(seed, kBreakStream)));
   RackOptions ro;
   ro.gap_sigma = rng.uniform(0.0, 5e-4);
   ro.seed = rng.bits() & 0x7fffffffULL;
@@ -613,8 +587,8 @@ Scenario broken_rack(const Setup& st, std::uint64_t seed, int& on_break) {
     if (!placeable(st, objects, C)) continue;
     bool blocked = false;
     for (const SimulationBall& b : objects)
-      if (b.id != lowest && (distance_to_path(b.state.position, C, O) < 2.0 * st.radius ||
-                             distance_to_path(b.state.position, O, q.centre) < 2.0 * st.radius))
+      if (b.id != lowest && (distance_to_segment(b.state.position, C, O) < 2.0 * st.radius ||
+                             distance_to_segment(b.state.position, O, q.centre) < 2.0 * st.radius))
         blocked = true;
     if (!blocked) places.push_back({1.0 / op, C});
   }

@@ -76,6 +76,7 @@
 #include "cueball/physics/cloth_motion.hpp"
 #include "cueball/physics/cue_strike.hpp"
 #include "cueball/core/errors.hpp"
+#include "cueball/core/random.hpp"
 #include "cueball/core/parameters.hpp"
 #include "cueball/table/rack.hpp"
 #include "cueball/simulation/scenario.hpp"
@@ -108,34 +109,7 @@ __attribute__((format(printf, 1, 2))) std::string fmt(const char* format, ...) {
   return buf;
 }
 
-// ------------------------------------------------------------------ random numbers
-
-std::uint64_t splitmix64(std::uint64_t x) {
-  x += 0x9e3779b97f4a7c15ULL;
-  x = (x ^ (x >> 30)) * 0xbf58476d1ce4e5b9ULL;
-  x = (x ^ (x >> 27)) * 0x94d049bb133111ebULL;
-  return x ^ (x >> 31);
-}
-
-// Uniforms from the 53 high bits, so a seed gives the same shot with every
-// standard library (std::uniform_real_distribution is not specified exactly).
-class Rng {
- public:
-  explicit Rng(std::uint64_t seed) : engine_(splitmix64(seed)) {}
-  std::uint64_t bits() { return engine_(); }
-  double unit() { return static_cast<double>(engine_() >> 11) * 0x1.0p-53; }  // [0, 1)
-  double uniform(double lo, double hi) { return lo + (hi - lo) * unit(); }
-  double log_uniform(double lo, double hi) { return lo * std::exp(std::log(hi / lo) * unit()); }
-  double angle() { return uniform(-kPi, kPi); }
-  bool chance(double p) { return unit() < p; }
-  int integer(int lo, int hi) {  // [lo, hi]
-    return lo + static_cast<int>(unit() * static_cast<double>(hi - lo + 1));
-  }
-  double sign() { return chance(0.5) ? 1.0 : -1.0; }
-
- private:
-  std::mt19937_64 engine_;
-};
+// ------------------------------------------------------------------ geometry
 
 Vec2 direction(double angle) { return {std::cos(angle), std::sin(angle)}; }
 double angle_of(Vec2 v) { return std::atan2(v.y, v.x); }
@@ -218,7 +192,7 @@ std::size_t add_ball(Shot& s, Vec2 p, BallState state = {}) {
   return s.balls.size() - 1;
 }
 
-Vec2 random_spot(const Shot& s, Rng& rng, double margin = 0.0) {
+Vec2 random_spot(const Shot& s, RandomStream& rng, double margin = 0.0) {
   for (int attempt = 0; attempt < 20000; ++attempt) {
     const Vec2 p{rng.uniform(0.0, s.table.length), rng.uniform(0.0, s.table.width)};
     if (placeable(s, p, margin)) return p;
@@ -226,7 +200,7 @@ Vec2 random_spot(const Shot& s, Rng& rng, double margin = 0.0) {
   throw Unplaceable{};
 }
 
-void add_random_balls(Shot& s, Rng& rng, int count) {
+void add_random_balls(Shot& s, RandomStream& rng, int count) {
   for (int k = 0; k < count; ++k) add_ball(s, random_spot(s, rng));
 }
 
@@ -250,15 +224,15 @@ Vec2 on_rail(const Shot& s, std::size_t c, double f, double inset = 0.0) {
 
 // Tip offsets (side, height) in ball radii, uniform over the disc of radius
 // `limit` (at most the miscue limit 0.5).
-std::pair<double, double> random_tip(Rng& rng, double limit = kMiscueOffsetFraction) {
+std::pair<double, double> random_tip(RandomStream& rng, double limit = kMiscueOffsetFraction) {
   const double r = limit * std::sqrt(rng.unit());
-  const double a = rng.angle();
+  const double a = rng.uniform(-kPi, kPi);
   return {r * std::cos(a), r * std::sin(a)};
 }
 
 // A large side offset (|side| in [lo, 0.5) R) and a height that keeps the tip
 // inside the miscue limit.
-std::pair<double, double> side_heavy_tip(Rng& rng, double lo) {
+std::pair<double, double> side_heavy_tip(RandomStream& rng, double lo) {
   const double side = rng.sign() * rng.uniform(lo, 0.499);
   const double room = std::sqrt(std::max(0.0, 0.25 - side * side)) * 0.999;
   return {side, rng.uniform(-room, room)};
@@ -307,7 +281,7 @@ Vec3 spin_driving_along(Vec2 n, double slip, double radius, double side_spin) {
 // on the 9-ft pool table, snooker on the 12-ft table), frozen or with small
 // random gaps, hard (8-14 m/s at the ball), aim jittered, any tip offset, cue
 // raised 0-20 deg. The everyday case: it must be clean (no false positives).
-void make_break(Shot& s, Rng& rng) {
+void make_break(Shot& s, RandomStream& rng) {
   const int variant = rng.integer(0, 2);
   s = new_shot(variant == 2 ? 1 : 0);
   RackOptions options;
@@ -356,12 +330,12 @@ void make_break(Shot& s, Rng& rng) {
 // 2. random: 2-16 balls anywhere on any table, the cue ball struck in any
 // direction at 0.05-8 m/s (log-uniform), cue raised 0-60 deg, any tip offset
 // within the miscue limit. Broad coverage of ordinary play.
-void make_random(Shot& s, Rng& rng) {
+void make_random(Shot& s, RandomStream& rng) {
   s = new_shot(rng.integer(0, 2));
   const int n = rng.integer(2, 16);
   s.what = fmt("%d random balls on %s", n, table_label(s.table));
   add_random_balls(s, rng, n);
-  strike(s, 0, rng.log_uniform(0.05, 8.0), rng.angle(), rng.uniform(0.0, 60.0) * kDeg, random_tip(rng));
+  strike(s, 0, rng.log_uniform(0.05, 8.0), rng.uniform(-kPi, kPi), rng.uniform(0.0, 60.0) * kDeg, random_tip(rng));
 }
 
 // 3. rail_frozen: the cue ball frozen to a rail (its centre exactly at the
@@ -369,7 +343,7 @@ void make_random(Shot& s, Rng& rng) {
 // it, with the cue raised 10-80 deg and side spin. Swerve and masse off a rail
 // press the ball into the cushion while it is in contact: the case of the
 // 38 mm penetration in shared/repro/rail_swerve_pool_penetrates_38mm.json.
-void make_rail_frozen(Shot& s, Rng& rng) {
+void make_rail_frozen(Shot& s, RandomStream& rng) {
   s = new_shot(rng.integer(0, 2));
   const std::vector<std::size_t> rs = rails(s.table);
   for (int attempt = 0;; ++attempt) {
@@ -396,7 +370,7 @@ void make_rail_frozen(Shot& s, Rng& rng) {
 
 // The round-off overlaps of the validator's limit: exactly touching, or
 // overlapping by 1e-15 m, 1e-12 m or up to (just under) 1e-9 m.
-double touching_overlap(Rng& rng, double limit) {
+double touching_overlap(RandomStream& rng, double limit) {
   const double w = rng.unit();
   if (w < 0.35) return 0.0;
   if (w < 0.5) return 1e-15;
@@ -409,14 +383,14 @@ double touching_overlap(Rng& rng, double limit) {
 // up to the validator's 1e-9 m), the cue ball struck along their common
 // tangent, into the other ball or anywhere, with raised cue and side spin.
 // Tests the touching-but-separating rule and the pair's prediction at contact.
-void make_ball_frozen(Shot& s, Rng& rng) {
+void make_ball_frozen(Shot& s, RandomStream& rng) {
   s = new_shot(rng.integer(0, 2));
   const double r = s.radius();
   for (int attempt = 0;; ++attempt) {
     if (attempt > 1000) throw Unplaceable{};
     s.balls.clear();
     const Vec2 a = random_spot(s, rng);
-    const double phi = rng.angle();
+    const double phi = rng.uniform(-kPi, kPi);
     const double overlap = touching_overlap(rng, 1e-9);
     const Vec2 b = a + (2.0 * r - overlap) * direction(phi);
     if (!ball_on_table(s.table, b, r)) continue;
@@ -425,7 +399,7 @@ void make_ball_frozen(Shot& s, Rng& rng) {
     const double which = rng.unit();
     const double aim = which < 0.4   ? phi + rng.sign() * 0.5 * kPi + (rng.chance(0.5) ? 0.0 : rng.uniform(-1.0, 1.0) * kDeg)
                        : which < 0.7 ? phi + rng.uniform(-30.0, 30.0) * kDeg
-                                     : rng.angle();
+                                     : rng.uniform(-kPi, kPi);
     s.what = fmt("cue ball frozen to ball 1 on %s (centres 2R - %.3g m apart), aim %.2f deg from the line of centres",
                  table_label(s.table), overlap, std::remainder(aim - phi, 2 * kPi) / kDeg);
     add_random_balls(s, rng, rng.integer(0, 3));
@@ -440,7 +414,7 @@ void make_ball_frozen(Shot& s, Rng& rng) {
 // rail), struck or nudged at 1 mm/s - 5 m/s. Chains of simultaneous contacts
 // are where pairwise impulses can cascade without end (pitfall 6;
 // shared/repro/frozen_cluster_event_limit_zeno.json).
-void make_cluster(Shot& s, Rng& rng) {
+void make_cluster(Shot& s, RandomStream& rng) {
   s = new_shot(rng.integer(0, 2));
   const double r = s.radius(), d = 2.0 * r;
   const int shape = rng.integer(0, 4);  // row, triangle, chain, cradle, against a rail
@@ -449,7 +423,7 @@ void make_cluster(Shot& s, Rng& rng) {
     if (attempt > 2000) throw Unplaceable{};
     s.balls.clear();
     std::vector<Vec2> p;
-    Vec2 u = direction(rng.angle());
+    Vec2 u = direction(rng.uniform(-kPi, kPi));
     if (shape == 4) {
       const std::vector<std::size_t> rs = rails(s.table);
       const std::size_t c = rs[static_cast<std::size_t>(rng.integer(0, static_cast<int>(rs.size()) - 1))];
@@ -499,14 +473,14 @@ void make_cluster(Shot& s, Rng& rng) {
       // One ball of the cluster struck: into its neighbour, or anywhere.
       const std::size_t k = rng.chance(0.5) ? 0 : static_cast<std::size_t>(rng.integer(0, static_cast<int>(p.size()) - 1));
       const Vec2 to = p[k == 0 ? 1 : k - 1] - p[k];
-      const double aim = rng.chance(0.6) ? angle_of(to) + rng.uniform(-5.0, 5.0) * kDeg : rng.angle();
+      const double aim = rng.chance(0.6) ? angle_of(to) + rng.uniform(-5.0, 5.0) * kDeg : rng.uniform(-kPi, kPi);
       strike(s, k, speed, aim, rng.chance(0.5) ? 0.0 : rng.uniform(0.0, 60.0) * kDeg, random_tip(rng));
     } else {
       const std::size_t k = static_cast<std::size_t>(rng.integer(0, static_cast<int>(p.size()) - 1));
       Vec2 centroid{};
       for (const Vec2& q : p) centroid = centroid + q / static_cast<double>(p.size());
       const Vec2 to = centroid - p[k];
-      const double aim = norm(to) > 1e-9 && rng.chance(0.6) ? angle_of(to) : rng.angle();
+      const double aim = norm(to) > 1e-9 && rng.chance(0.6) ? angle_of(to) : rng.uniform(-kPi, kPi);
       nudge(s, k, speed, aim, rng.chance(0.5), rng.chance(0.5) ? 0.0 : rng.uniform(-30.0, 30.0));
     }
     return;
@@ -517,7 +491,7 @@ void make_cluster(Shot& s, Rng& rng) {
 // distance) or in a pocket's mouth, struck themselves or hit by the cue ball,
 // slow (1 cm/s - 0.5 m/s) and fast (1-10 m/s). The jaws are the only curved
 // cushions and meet the nose and facing segments tangentially.
-void make_jaw(Shot& s, Rng& rng) {
+void make_jaw(Shot& s, RandomStream& rng) {
   s = new_shot(rng.integer(0, 1));
   const double r = s.radius();
   for (int attempt = 0;; ++attempt) {
@@ -529,14 +503,14 @@ void make_jaw(Shot& s, Rng& rng) {
     if (touching) {
       const std::size_t j = static_cast<std::size_t>(rng.integer(0, static_cast<int>(s.table.jaws.size()) - 1));
       const JawArc& jaw = s.table.jaws[j];
-      p = jaw.centre + jaw_contact_distance(jaw, r) * direction(rng.angle());
+      p = jaw.centre + jaw_contact_distance(jaw, r) * direction(rng.uniform(-kPi, kPi));
       for (std::size_t q = 0; q < s.table.pockets.size(); ++q)
         if (norm(s.table.pockets[q].centre - jaw.centre) < norm(s.table.pockets[pocket].centre - jaw.centre)) pocket = q;
       s.what = fmt("ball touching jaw %zu of %s", j, table_label(s.table));
     } else {
       pocket = static_cast<std::size_t>(rng.integer(0, static_cast<int>(s.table.pockets.size()) - 1));
       const Pocket& q = s.table.pockets[pocket];
-      p = q.centre + rng.uniform(q.radius, q.radius + 0.08) * direction(rng.angle());
+      p = q.centre + rng.uniform(q.radius, q.radius + 0.08) * direction(rng.uniform(-kPi, kPi));
       s.what = fmt("ball in the mouth of pocket %s of %s", q.name.c_str(), table_label(s.table));
     }
     if (!ball_on_table(s.table, p, r)) continue;
@@ -545,7 +519,7 @@ void make_jaw(Shot& s, Rng& rng) {
     if (rng.chance(0.5)) {
       add_ball(s, p);  // the ball at the jaw is the cue ball
       add_random_balls(s, rng, rng.integer(0, 2));
-      const double aim = rng.chance(0.5) ? angle_of(to_pocket) + rng.uniform(-30.0, 30.0) * kDeg : rng.angle();
+      const double aim = rng.chance(0.5) ? angle_of(to_pocket) + rng.uniform(-30.0, 30.0) * kDeg : rng.uniform(-kPi, kPi);
       strike(s, 0, speed, aim, rng.uniform(0.0, 30.0) * kDeg, random_tip(rng));
     } else {
       add_ball(s, {});  // placeholder for the cue ball, id 0
@@ -578,18 +552,18 @@ void make_jaw(Shot& s, Rng& rng) {
 // Pitfall 4: a contact that starts already touching (or overlapping by
 // round-off) must not be missed (shared/repro/overlap_passthrough_roundoff_1e-15.json,
 // frozen_to_cushion_spinning_penetrates_5mm.json).
-void make_roundoff(Shot& s, Rng& rng) {
+void make_roundoff(Shot& s, RandomStream& rng) {
   s = new_shot(rng.integer(0, 2));
   const double r = s.radius();
   const int variant = s.table.jaws.empty() ? rng.integer(0, 2) : rng.integer(0, 3);
-  const auto creep = [&rng]() { return rng.chance(0.5) ? Vec2{} : 1e-9 * direction(rng.angle()); };
+  const auto creep = [&rng]() { return rng.chance(0.5) ? Vec2{} : 1e-9 * direction(rng.uniform(-kPi, kPi)); };
   const auto w_z = [&rng]() { return rng.chance(0.5) ? 0.0 : rng.uniform(-50.0, 50.0); };
   for (int attempt = 0;; ++attempt) {
     if (attempt > 2000) throw Unplaceable{};
     s.balls.clear();
     if (variant == 0) {  // two balls, B spun into A (and maybe A into B)
       const Vec2 a = random_spot(s, rng);
-      const double phi = rng.angle();
+      const double phi = rng.uniform(-kPi, kPi);
       const double overlap = touching_overlap(rng, 1e-9);
       const Vec2 b = a + (2.0 * r - overlap) * direction(phi);
       if (!ball_on_table(s.table, b, r)) continue;
@@ -626,7 +600,7 @@ void make_roundoff(Shot& s, Rng& rng) {
     } else {  // a ball touching a jaw, spun into it
       const std::size_t j = static_cast<std::size_t>(rng.integer(0, static_cast<int>(s.table.jaws.size()) - 1));
       const JawArc& jaw = s.table.jaws[j];
-      const Vec2 n = direction(rng.angle());
+      const Vec2 n = direction(rng.uniform(-kPi, kPi));
       const double inset = touching_overlap(rng, 1e-12);
       const Vec2 p = jaw.centre + (jaw_contact_distance(jaw, r) - inset) * n;
       if (!ball_on_table(s.table, p, r)) continue;
@@ -645,7 +619,7 @@ void make_roundoff(Shot& s, Rng& rng) {
 // regime is below 1 cm/s), alone, into a ball at a gap of 0 - 5 cm, into a
 // rail, or a touching pair. Slow contacts are where bounces could shrink
 // without end (inelastic collapse) and where tolerances matter most.
-void make_slow(Shot& s, Rng& rng) {
+void make_slow(Shot& s, RandomStream& rng) {
   s = new_shot(rng.integer(0, 2));
   const double r = s.radius();
   const double speed = rng.log_uniform(1e-4, 0.05);
@@ -654,13 +628,13 @@ void make_slow(Shot& s, Rng& rng) {
   for (int attempt = 0;; ++attempt) {
     if (attempt > 2000) throw Unplaceable{};
     s.balls.clear();
-    double aim = rng.angle();
+    double aim = rng.uniform(-kPi, kPi);
     if (variant == 0) {
       add_ball(s, random_spot(s, rng));
       s.what = fmt("one slow ball on %s", table_label(s.table));
     } else if (variant == 1 || variant == 3) {  // a ball at a gap (or touching), aimed at another
       const Vec2 a = random_spot(s, rng);
-      const double phi = rng.angle(), g = variant == 3 ? 0.0 : gap();
+      const double phi = rng.uniform(-kPi, kPi), g = variant == 3 ? 0.0 : gap();
       const Vec2 b = a + (2.0 * r + g) * direction(phi);
       if (!ball_on_table(s.table, b, r)) continue;
       add_ball(s, a);
@@ -692,13 +666,13 @@ void make_slow(Shot& s, Rng& rng) {
 // the ball near a rail (0-10 cm, or frozen) or near another ball: a strongly
 // curving, long-sliding path with spin about a horizontal axis, pressed into
 // whatever it touches.
-void make_masse(Shot& s, Rng& rng) {
+void make_masse(Shot& s, RandomStream& rng) {
   s = new_shot(rng.integer(0, 2));
   const double r = s.radius();
   for (int attempt = 0;; ++attempt) {
     if (attempt > 2000) throw Unplaceable{};
     s.balls.clear();
-    double aim = rng.angle();
+    double aim = rng.uniform(-kPi, kPi);
     if (rng.chance(0.5)) {
       const std::vector<std::size_t> rs = rails(s.table);
       const std::size_t c = rs[static_cast<std::size_t>(rng.integer(0, static_cast<int>(rs.size()) - 1))];
@@ -711,7 +685,7 @@ void make_masse(Shot& s, Rng& rng) {
       s.what = fmt("masse %.3g m from cushion %zu of %s", g, c, table_label(s.table));
     } else {
       const Vec2 a = random_spot(s, rng);
-      const double phi = rng.angle(), g = rng.chance(0.3) ? 0.0 : rng.uniform(0.0, 0.1);
+      const double phi = rng.uniform(-kPi, kPi), g = rng.chance(0.3) ? 0.0 : rng.uniform(0.0, 0.1);
       const Vec2 b = a + (2.0 * r + g) * direction(phi);
       if (!ball_on_table(s.table, b, r)) continue;
       add_ball(s, a);
@@ -728,7 +702,7 @@ void make_masse(Shot& s, Rng& rng) {
 struct ShotClass {
   const char* name;
   const char* summary;
-  void (*make)(Shot&, Rng&);
+  void (*make)(Shot&, RandomStream&);
 };
 
 constexpr std::array<ShotClass, 9> kClasses{{
@@ -1033,7 +1007,7 @@ Outcome run_shot(const Shot& shot, bool twice) {
 // refused the strike or the generator could not place the balls.
 bool generate(const ShotClass& c, std::uint64_t seed, Shot& shot, std::string& why) {
   try {
-    Rng rng(seed);
+    RandomStream rng(splitmix64(seed));
     c.make(shot, rng);
     return true;
   } catch (const InvalidArgument& e) {

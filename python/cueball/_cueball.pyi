@@ -999,6 +999,9 @@ class Result:
     def segments(self) -> list[SegmentArrays]:
         """per ball, in the scenario's order"""
     @property
+    def facts(self) -> dict[str, Any]:
+        """what the shot did: the result JSON's "facts" (first contact, contacts, pots, cushions, jaws, ...)"""
+    @property
     def scenario(self) -> Scenario:
         """the Scenario that ran: simulate(result.scenario) reproduces this result bit for bit"""
     @property

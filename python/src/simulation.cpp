@@ -19,7 +19,9 @@
 #include "cueball/physics/cloth_motion.hpp"
 #include "cueball/core/errors.hpp"
 #include "cueball/simulation/scenario.hpp"
+#include "cueball/simulation/shot_facts.hpp"
 #include "cueball/simulation/simulator.hpp"
+#include "cueball/io/shot_facts_json.hpp"
 
 namespace cueball_python {
 
@@ -38,7 +40,7 @@ struct Result {
   std::shared_ptr<const cueball::Scenario> scenario;
   cueball::SimulationResult result;
   double sample_rate = 0.0;  // to_dict()'s and to_json()'s default
-  py::object events, balls, segments;
+  py::object events, balls, segments, facts;
 };
 
 using Index = py::ssize_t;
@@ -274,6 +276,23 @@ void bind_simulation(py::module_& m) {
           "per ball (list, ball order), its closed-form trajectory: a dict of arrays, one row per\n"
           "segment: time (start, s), position (k, 2), velocity (k, 2), angular_velocity (k, 3) at the\n"
           "start, phase (int8, index into PHASES). Between starts the state is evolve(start, t - time).")
+      .def_property_readonly(
+          "facts",
+          [](Result& r) {
+            if (!r.facts) {
+              const cueball::Scenario& s = *r.scenario;
+              const cueball::ShotFacts f =
+                  cueball::shot_facts(s.table, s.settings.parameters, r.result, s.cue ? s.cue->ball : -1);
+              r.facts = py::module_::import("json").attr("loads")(cueball::shot_facts_to_json(s.table, f, -1));
+            }
+            return r.facts;
+          },
+          "What the shot did (the result JSON's \"facts\"; ShotFacts, shot_facts.hpp), a dict: cue_ball,\n"
+          "first_contact {ball, time, simultaneous} (None: no contact), contacts [{time, balls}],\n"
+          "pots [{time, ball, pocket (name)}], cushions [{time, ball, cushion, cushion_name,\n"
+          "after_first_contact}], cue_cushions_before_contact [{time, ball, cushions}], jaws [{time,\n"
+          "ball, jaw, jaw_name}], head_string_crossings [{time, ball, toward_head}], frozen_at_start\n"
+          "{balls: [[id, id]], cushions: [{ball, cushion, cushion_name}]}. Lists in event order.")
       .def_property_readonly(
           "scenario", [](const Result& r) { return std::const_pointer_cast<cueball::Scenario>(r.scenario); },
           "the Scenario that ran (the same object when simulate() was given one): simulate(result.scenario)\n"

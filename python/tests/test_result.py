@@ -113,6 +113,26 @@ class ResultTest(unittest.TestCase):
         self.assertIn("ball_pocket", {cueball.EVENT_TYPES[t] for t in self.cut.events["type"]})
         self.assertIs(self.result.events, self.result.events)  # built once
 
+    def test_facts_are_the_jsons_and_agree_with_the_events(self):
+        for r in (self.result, self.cut):
+            facts = r.facts
+            self.assertEqual(facts, r.to_dict()["facts"])
+            self.assertIs(r.facts, facts)  # built once
+            ev = r.events
+            kinds = [cueball.EVENT_TYPES[t] for t in ev["type"]]
+            self.assertEqual(len(facts["contacts"]), kinds.count("ball_ball"))
+            self.assertEqual(len(facts["cushions"]), kinds.count("ball_cushion"))
+            self.assertEqual(len(facts["jaws"]), kinds.count("ball_jaw"))
+            self.assertEqual([p["ball"] for p in facts["pots"]],
+                             [int(b) for b, k in zip(ev["ball"], kinds) if k == "ball_pocket"])
+            self.assertEqual([p["pocket"] for p in facts["pots"]],
+                             [r.pocket_names[q] for q, k in zip(ev["pocket"], kinds) if k == "ball_pocket"])
+            cue = r.scenario.to_dict()["cue"]["ball"]
+            first = next((int(b) if int(o) == cue else int(o) for b, o, k in zip(ev["ball"], ev["other"], kinds)
+                          if k == "ball_ball" and cue in (int(b), int(o))), None)
+            self.assertEqual(facts["first_contact"]["ball"], first)
+        self.assertEqual(self.result.facts["first_contact"]["ball"], 1)  # the break, aimed at the 1
+
     def test_balls_are_the_jsons(self):
         for r in (self.result, self.cut):
             b, js = r.balls, r.to_dict()["balls"]

@@ -74,13 +74,6 @@ constexpr double kLateralTol = 0.5e-3;
 constexpr double kOffsetFraction = 0.3;
 constexpr int kOffsetSteps = 3;
 
-double distance_to_path(Vec3 p, Vec3 a, Vec3 b) {
-  const Vec3 ab = b - a;
-  const double len2 = dot(ab, ab);
-  const double t = len2 > 0.0 ? std::clamp(dot(p - a, ab) / len2, 0.0, 1.0) : 0.0;
-  return norm(p - (a + t * ab));
-}
-
 double angle_deg(Vec2 v) { return std::atan2(v.y, v.x) / kDegree; }
 
 double normal_cdf(double x) { return 0.5 * std::erfc(-x / std::numbers::sqrt2); }
@@ -760,50 +753,16 @@ CueStrikeNoise tournament_noise() {
   return n;
 }
 
-double rail_height(const Table& table) {
-  double h = 0.0;
-  for (const CushionSegment& c : table.cushions) h = std::max(h, c.contact_height);
-  for (const JawArc& j : table.jaws) h = std::max(h, j.contact_height);
-  return h;
-}
-
 bool cue_obstructed(const Table& table, const std::vector<SimulationBall>& balls, int cue_ball, const CueStrike& strike,
                     const BallParameters& ball) {
   const std::size_t cue = index_of(balls, cue_ball);
   if (cue == balls.size())
     throw InvalidArgument("cue_ball", "cue_ball = " + std::to_string(cue_ball) + " is not the id of a ball on the table");
-  const double R = ball.radius;
-  const Vec2 c2 = balls[cue].state.position;
-  // The cue frame (C1) of cue_strike.hpp and the contact point (C2).
-  const Vec3 u{std::cos(strike.aim), std::sin(strike.aim), 0.0};
-  const Vec3 side{u.y, -u.x, 0.0};
-  const double ce = std::cos(strike.elevation), se = std::sin(strike.elevation);
-  const Vec3 d{ce * u.x, ce * u.y, -se};
-  const Vec3 up{se * u.x, se * u.y, ce};
-  const double a = strike.side_offset, b = strike.height_offset;
-  const double c = std::sqrt(std::max(0.0, R * R - a * a - b * b));
-  const Vec3 tip = Vec3{c2.x, c2.y, R} + a * side + b * up - c * d;
-  const Vec3 butt = tip - kCueLength * d;
-  for (std::size_t i = 0; i < balls.size(); ++i) {
-    if (i == cue) continue;
-    const Vec2 p = balls[i].state.position;
-    if (distance_to_path(Vec3{p.x, p.y, R}, tip, butt) < R + kCueTipRadius) return true;
-  }
-  // The rail: the first point (2 mm steps) where the cue is over it, within
-  // its radius in plan of a cushion's nose or outside the playing area; the
-  // cue only rises behind it.
-  const double rail = rail_height(table);
-  const double drop = kCueTipRadius / ce;  // the lower edge below the axis
-  constexpr double kStep = 0.002;
-  for (double s = 0.0; s <= kCueLength; s += kStep) {
-    const Vec3 x = tip - s * d;
-    const Vec2 p{x.x, x.y};
-    bool over_rail = !inside_playing_area(table, p);
-    for (std::size_t k = 0; k < table.cushions.size() && !over_rail; ++k)
-      over_rail = distance_to_segment(table.cushions[k], p) < kCueTipRadius;
-    if (over_rail) return x.z - drop < rail;
-  }
-  return false;
+  std::vector<Vec2> others;
+  others.reserve(balls.size());
+  for (std::size_t i = 0; i < balls.size(); ++i)
+    if (i != cue) others.push_back(balls[i].state.position);
+  return cue_obstructed(table, balls[cue].state.position, others, strike, ball.radius);
 }
 
 Scenario scenario_with_shot(const Scenario& table_state, int cue_ball, const PlannedShot& shot,

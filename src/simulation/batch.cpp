@@ -24,32 +24,18 @@
 #include <thread>
 
 #include "cueball/core/errors.hpp"
+#include "cueball/core/random.hpp"
+#include "cueball/simulation/shot_facts.hpp"
 
 namespace cueball {
 
 namespace {
 
-// SplitMix64: decorrelates the per-shot seeds.
-std::uint64_t splitmix64(std::uint64_t x) {
-  x += 0x9E3779B97F4A7C15ULL;
-  x = (x ^ (x >> 30)) * 0xBF58476D1CE4E5B9ULL;
-  x = (x ^ (x >> 27)) * 0x94D049BB133111EBULL;
-  return x ^ (x >> 31);
-}
-
-// Five standard normal draws by Box-Muller on mt19937_64 output, so the
-// numbers do not depend on the standard library's distributions.
+// Five standard normal draws (Box-Muller, RandomStream::normal_pair).
 std::array<double, 5> standard_normals(std::uint64_t seed) {
-  std::mt19937_64 rng(seed);
-  const auto uniform = [&] { return (static_cast<double>(rng() >> 11) + 0.5) * 0x1.0p-53; };
-  std::array<double, 6> z{};
-  for (std::size_t i = 0; i < 6; i += 2) {
-    const double radius = std::sqrt(-2.0 * std::log(uniform()));
-    const double angle = 2.0 * std::numbers::pi * uniform();
-    z[i] = radius * std::cos(angle);
-    z[i + 1] = radius * std::sin(angle);
-  }
-  return {z[0], z[1], z[2], z[3], z[4]};
+  RandomStream rng(seed);
+  const Vec2 a = rng.normal_pair(), b = rng.normal_pair(), c = rng.normal_pair();
+  return {a.x, a.y, b.x, b.y, c.x};
 }
 
 // Reflects x into [lo, hi] (batch.hpp); true in `reflected` when it was outside.
@@ -373,7 +359,6 @@ void ShotOutcome::reset(std::size_t balls) {
 void outcome_from_result(const SimulationResult& r, int cue_ball, ShotOutcome& out) {
   const std::size_t n = r.balls.size();
   out.kind = ShotOutcome::Kind::simulated;
-  out.first_contact = -1;
   out.pocketed.assign(n, 0);
   out.pocket.assign(n, -1);
   out.final_position.resize(n);
@@ -385,27 +370,18 @@ void outcome_from_result(const SimulationResult& r, int cue_ball, ShotOutcome& o
     out.pocket[i] = b.pocketed ? b.pocket : -1;
     out.final_position[i] = b.final_state.position;
   }
-  const auto index_of = [&](int id) {
-    for (std::size_t i = 0; i < n; ++i)
-      if (r.balls[i].id == id) return i;
-    return n;
-  };
-  int events = 0;
-  bool contacted = false;
-  for (const Event& e : r.events) {
-    if (e.type == EventType::cue_strike) continue;
-    ++events;
-    if (e.type == EventType::ball_cushion) {
-      const std::size_t i = index_of(e.ball);
-      if (i == n) continue;
-      ++out.cushions[i];
-      if (!contacted) ++out.cushions_before_contact[i];
-    } else if (e.type == EventType::ball_ball && !contacted && (e.ball == cue_ball || e.other == cue_ball)) {
-      contacted = true;
-      out.first_contact = e.ball == cue_ball ? e.other : e.ball;
-    }
+  const ShotFacts facts = shot_facts(r, cue_ball);
+  out.first_contact = facts.first_contact;
+  for (const CushionHit& c : facts.cushions) {
+    const auto i = static_cast<std::size_t>(
+        std::find_if(r.balls.begin(), r.balls.end(), [&](const BallTrajectory& b) { return b.id == c.ball; }) -
+        r.balls.begin());
+    if (i == n) continue;
+    ++out.cushions[i];
+    if (!c.after_first_contact) ++out.cushions_before_contact[i];
   }
-  out.events = events;
+  out.events = static_cast<int>(std::count_if(r.events.begin(), r.events.end(),
+                                               [](const Event& e) { return e.type != EventType::cue_strike; }));
 }
 
 // ------------------------------------------------------------------ many different shots

@@ -15,9 +15,11 @@
 
 #include "cueball/models/cushion/impact.hpp"
 #include "cueball/core/errors.hpp"
+#include "cueball/simulation/shot_facts.hpp"
 #include "cueball/table/rack.hpp"
-#include "cueball/planning/shot_planner.hpp"
+#include "cueball/table/cue_obstruction.hpp"
 #include "io/json_input.hpp"
+#include "io/json_output.hpp"
 
 namespace cueball {
 
@@ -588,7 +590,12 @@ SimulationResult run_scenario(const Scenario& s) {
 
 bool cue_strike_obstructed(const Scenario& s) {
   if (!s.cue || !find_ball(s.balls, s.cue->ball)) return false;
-  return cue_obstructed(s.table, s.balls, s.cue->ball, resolved_strike(s, s.cue->strike), s.settings.parameters.ball);
+  const SimulationBall* cue = find_ball(s.balls, s.cue->ball);
+  std::vector<Vec2> others;
+  for (const SimulationBall& b : s.balls)
+    if (&b != cue) others.push_back(b.state.position);
+  return cue_obstructed(s.table, cue->state.position, others, resolved_strike(s, s.cue->strike),
+                        s.settings.parameters.ball.radius);
 }
 
 CueStrikeNoise noise_from_json(std::string_view json_text, double radius, const std::string& path) {
@@ -665,6 +672,7 @@ std::string result_to_json(const Scenario& s, const SimulationResult& r, double 
     events.push_back(ev);
   }
   out["events"] = events;
+  out["facts"] = io::shot_facts_json(s.table, shot_facts(s.table, p, r, s.cue ? s.cue->ball : -1));
   Json balls = Json::array();
   for (const BallTrajectory& b : r.balls) {
     Json jb = state_json(b.final_state);

@@ -17,6 +17,7 @@
 #include <string>
 
 #include "cueball/core/errors.hpp"
+#include "cueball/core/random.hpp"
 
 namespace cueball {
 
@@ -40,26 +41,15 @@ struct RackBall {
   Site site;
 };
 
-// Deterministic random numbers from std::mt19937_64's specified output,
-// independent of the standard library's distributions.
-class Jitter {
- public:
-  explicit Jitter(std::uint64_t seed) : rng_(seed) {}
-
-  double uniform() { return static_cast<double>(rng_() >> 11) * 0x1.0p-53; }  // [0, 1)
-
-  // Two independent standard normals (Box-Muller).
-  Vec2 normal2() {
-    const double u1 = 1.0 - uniform();  // (0, 1]
-    const double u2 = uniform();
-    const double r = std::sqrt(-2.0 * std::log(u1));
-    const double a = 2.0 * std::numbers::pi * u2;
-    return {r * std::cos(a), r * std::sin(a)};
-  }
-
- private:
-  std::mt19937_64 rng_;
-};
+// Two independent standard normals (Box-Muller) in the rack's own order of
+// draws: radius from 1 - unit() (in (0, 1]), then angle.
+Vec2 normal_pair(RandomStream& rng) {
+  const double u1 = 1.0 - rng.unit();
+  const double u2 = rng.unit();
+  const double r = std::sqrt(-2.0 * std::log(u1));
+  const double a = 2.0 * std::numbers::pi * u2;
+  return {r * std::cos(a), r * std::sin(a)};
+}
 
 std::string format_number(double v) {
   std::ostringstream os;
@@ -76,13 +66,13 @@ std::vector<PlacedBall> place(const std::vector<RackBall>& balls, Vec2 apex, dou
   const double sigma = options.gap_sigma;
   const double spacing = 2.0 * radius + 4.0 * sigma;
   const double row_step = 0.5 * std::numbers::sqrt3 * spacing;
-  Jitter jitter(options.seed);
+  RandomStream jitter(options.seed);
   std::vector<PlacedBall> out;
   out.reserve(balls.size());
   for (const RackBall& b : balls) {
     Vec2 p{apex.x + b.site.row * row_step, apex.y + (b.site.col - 0.5 * b.site.row) * spacing};
     if (sigma > 0.0 && !(b.site.row == 0 && b.site.col == 0)) {
-      Vec2 u = sigma * jitter.normal2();
+      Vec2 u = sigma * normal_pair(jitter);
       const double len = norm(u);
       if (len > 2.0 * sigma) u = u * (2.0 * sigma / len);
       p = p + u;

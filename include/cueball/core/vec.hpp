@@ -4,6 +4,7 @@
 // in constexpr code. Table frame: x, y span the bed of the table, z points up.
 #pragma once
 
+#include <algorithm>
 #include <cmath>
 
 namespace cueball {
@@ -48,6 +49,20 @@ constexpr bool operator==(Vec3 a, Vec3 b) { return a.x == b.x && a.y == b.y && a
 
 /// The horizontal (x, y) part of a 3-vector.
 constexpr Vec2 horizontal(Vec3 a) { return {a.x, a.y}; }
+
+/// Distance from p to the segment a-b (a point when a == b).
+inline double distance_to_segment(Vec2 p, Vec2 a, Vec2 b) {
+  const Vec2 ab = b - a;
+  const double len2 = dot(ab, ab);
+  const double t = len2 > 0.0 ? std::clamp(dot(p - a, ab) / len2, 0.0, 1.0) : 0.0;
+  return norm(p - (a + t * ab));
+}
+inline double distance_to_segment(Vec3 p, Vec3 a, Vec3 b) {
+  const Vec3 ab = b - a;
+  const double len2 = dot(ab, ab);
+  const double t = len2 > 0.0 ? std::clamp(dot(p - a, ab) / len2, 0.0, 1.0) : 0.0;
+  return norm(p - (a + t * ab));
+}
 
 inline bool is_finite(Vec2 a) { return std::isfinite(a.x) && std::isfinite(a.y); }
 inline bool is_finite(Vec3 a) { return std::isfinite(a.x) && std::isfinite(a.y) && std::isfinite(a.z); }

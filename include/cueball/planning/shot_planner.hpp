@@ -110,19 +110,7 @@
 // Deterministic: the same scenario, request and seed give the same plan bit
 // for bit, and the engine runs never exceed `simulations`.
 //
-// Cue obstruction (cue_obstructed()). The cue is a straight cylinder of
-// radius kCueTipRadius and length kCueLength along the strike's axis behind
-// the contact point, butt raised by the elevation. It is obstructed when it
-// passes within R + its radius of another ball's centre (3D), or where it
-// first reaches the rail (its axis outside the playing area, inside_playing_area
-// of table.hpp, or within its radius in plan of a cushion's nose; sampled
-// every 2 mm) its lower edge is below the rail height, taken as the highest cushion nose height h
-// of the table (the cushion's top rises behind the nose, so this is a lower
-// bound on the real rail). Sources: the same model as pooltool's CueAvoid
-// (a cue of tip radius ~7 mm, cushions at their height) and FastFiz's
-// cue-stick collision check (isPhysicallyPossible; the engine of the
-// computational-pool tournaments, Leckie & Greenspan). Cue dimensions: a
-// 58 in (1.47 m) cue with a 13 mm tip, the usual pool cue.
+// Cue obstruction: cue_obstructed() (table/cue_obstruction.hpp).
 #pragma once
 
 #include <array>
@@ -136,6 +124,7 @@
 
 #include "cueball/simulation/batch.hpp"
 #include "cueball/simulation/scenario.hpp"
+#include "cueball/table/cue_obstruction.hpp"
 
 namespace cueball {
 
@@ -172,10 +161,6 @@ std::string shot_kind_names(std::string_view quote = "");
 /// offsets, 0.1 deg elevation, 0.125 deg aim, 0.075 m/s speed.
 CueStrikeNoise tournament_noise();
 
-/// Cue length, m (58 in).
-inline constexpr double kCueLength = 1.4732;
-/// Cue tip radius, m (13 mm tip).
-inline constexpr double kCueTipRadius = 0.0065;
 /// Largest cut angle a candidate may need, degrees (thinner cuts are skipped).
 inline constexpr double kMaxCutDeg = 80.0;
 /// Most intermediate balls tried per pocket for a combination (those with the
@@ -197,9 +182,6 @@ inline constexpr int kMaxPlanSimulations = 1'000'000;
 bool cue_obstructed(const Table& table, const std::vector<SimulationBall>& balls, int cue_ball, const CueStrike& strike,
                     const BallParameters& ball);
 
-/// The rail height cue_obstructed() uses: the highest nose contact height
-/// of the table's cushions and jaws, m.
-double rail_height(const Table& table);
 
 struct PlanRequest {
   std::optional<int> cue_ball;           ///< id; default: the scenario's cue ball, else 0

@@ -72,6 +72,7 @@
 #include "cueball/core/random.hpp"
 #include "cueball/planning/ball_in_hand.hpp"
 #include "cueball/planning/position_play.hpp"
+#include "cueball/table/placement.hpp"
 #include "cueball/table/rack.hpp"
 #include "cueball/simulation/scenario.hpp"
 #include "cueball/planning/shot_planner.hpp"
@@ -151,20 +152,14 @@ Setup make_setup() {
   return s;
 }
 
-// Room around centre p beyond every cushion's and jaw's contact distance and every pocket's capture circle.
-double clearance(const Table& t, Vec2 p, double radius) {
-  double c = std::min({p.x, t.length - p.x, p.y, t.width - p.y});
-  for (const CushionSegment& s : t.cushions) c = std::min(c, distance_to_segment(s, p) - cushion_contact_distance(s.contact_height, radius));
-  for (const JawArc& j : t.jaws) c = std::min(c, norm(p - j.centre) - jaw_contact_distance(j, radius));
-  for (const Pocket& q : t.pockets) c = std::min(c, norm(p - q.centre) - q.radius);
-  return c;
+std::vector<Vec2> positions(const std::vector<SimulationBall>& balls) {
+  std::vector<Vec2> out;
+  for (const SimulationBall& b : balls) out.push_back(b.state.position);
+  return out;
 }
 
 bool placeable(const Setup& st, const std::vector<SimulationBall>& balls, Vec2 p) {
-  if (!ball_on_table(st.base.table, p, st.radius) || clearance(st.base.table, p, st.radius) < 0.0) return false;
-  for (const SimulationBall& b : balls)
-    if (norm(p - b.state.position) < 2.0 * st.radius) return false;
-  return true;
+  return is_free_spot(st.base.table, positions(balls), p, st.radius);
 }
 
 void add_ball(std::vector<SimulationBall>& balls, int id, Vec2 p) {
@@ -176,12 +171,9 @@ void add_ball(std::vector<SimulationBall>& balls, int id, Vec2 p) {
 }
 
 Vec2 random_spot(const Setup& st, const std::vector<SimulationBall>& balls, RandomStream& rng) {
-  const Table& t = st.base.table;
-  for (int attempt = 0; attempt < 100000; ++attempt) {
-    const Vec2 p{rng.uniform(0.0, t.length), rng.uniform(0.0, t.width)};
-    if (placeable(st, balls, p)) return p;
-  }
-  throw std::runtime_error("could not place a ball");
+  const std::optional<Vec2> p = random_free_spot(st.base.table, positions(balls), st.radius, rng, 100000);
+  if (!p) throw std::runtime_error("could not place a ball");
+  return *p;
 }
 
 // Single-pot layout k: cue ball, target, then 0-5 others, uniform on the bed.

@@ -78,6 +78,7 @@
 #include "cueball/core/errors.hpp"
 #include "cueball/core/random.hpp"
 #include "cueball/core/parameters.hpp"
+#include "cueball/table/placement.hpp"
 #include "cueball/table/rack.hpp"
 #include "cueball/simulation/scenario.hpp"
 #include "cueball/simulation/simulator.hpp"
@@ -161,18 +162,6 @@ const char* table_label(const Table& t) {
 // A generator could not place its balls (never seen; retried by the caller).
 struct Unplaceable {};
 
-// Signed room around a centre p: the smallest of its distances beyond the
-// contact distance of every cushion segment and jaw, beyond every pocket's
-// capture circle, and inside the rectangle. >= 0: ball_on_table() accepts p.
-double clearance(const Table& t, Vec2 p, double radius) {
-  double c = std::min({p.x, t.length - p.x, p.y, t.width - p.y});
-  for (const CushionSegment& s : t.cushions)
-    c = std::min(c, distance_to_segment(s, p) - cushion_contact_distance(s.contact_height, radius));
-  for (const JawArc& j : t.jaws) c = std::min(c, norm(p - j.centre) - jaw_contact_distance(j, radius));
-  for (const Pocket& q : t.pockets) c = std::min(c, norm(p - q.centre) - q.radius);
-  return c;
-}
-
 // Smallest centre distance minus 2R to the balls already placed (skipping index `except`).
 double ball_gap(const Shot& s, Vec2 p, std::size_t except = SIZE_MAX) {
   double g = std::numeric_limits<double>::infinity();
@@ -181,9 +170,13 @@ double ball_gap(const Shot& s, Vec2 p, std::size_t except = SIZE_MAX) {
   return g;
 }
 
-bool placeable(const Shot& s, Vec2 p, double margin = 0.0) {
-  return ball_on_table(s.table, p, s.radius()) && clearance(s.table, p, s.radius()) >= margin && ball_gap(s, p) >= 0.0;
+std::vector<Vec2> positions(const Shot& s) {
+  std::vector<Vec2> out;
+  for (const SimulationBall& b : s.balls) out.push_back(b.state.position);
+  return out;
 }
+
+bool placeable(const Shot& s, Vec2 p, double margin = 0.0) { return is_free_spot(s.table, positions(s), p, s.radius(), margin); }
 
 std::size_t add_ball(Shot& s, Vec2 p, BallState state = {}) {
   const int id = static_cast<int>(s.balls.size());
@@ -193,11 +186,9 @@ std::size_t add_ball(Shot& s, Vec2 p, BallState state = {}) {
 }
 
 Vec2 random_spot(const Shot& s, RandomStream& rng, double margin = 0.0) {
-  for (int attempt = 0; attempt < 20000; ++attempt) {
-    const Vec2 p{rng.uniform(0.0, s.table.length), rng.uniform(0.0, s.table.width)};
-    if (placeable(s, p, margin)) return p;
-  }
-  throw Unplaceable{};
+  const std::optional<Vec2> p = random_free_spot(s.table, positions(s), s.radius(), rng, 20000, {}, margin);
+  if (!p) throw Unplaceable{};
+  return *p;
 }
 
 void add_random_balls(Shot& s, RandomStream& rng, int count) {

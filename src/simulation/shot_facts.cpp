@@ -9,7 +9,7 @@
 #include <cmath>
 
 #include "cueball/physics/contact_prediction.hpp"
-#include "cueball/table/rack.hpp"
+#include "cueball/table/placement.hpp"
 
 namespace cueball {
 

@@ -151,10 +151,6 @@ void validate(const RackOptions& options) {
   require_in_range("gap_sigma", options.gap_sigma, 0.0, kMaxGapSigma, "scale of the random gaps in a rack, m");
 }
 
-Vec2 foot_spot(const Table& table) { return {0.75 * table.length, 0.5 * table.width}; }
-
-double head_string_x(const Table& table) { return 0.25 * table.length; }
-
 SnookerSpots snooker_spots(const Table& table) {
   const double L = table.length, W = table.width;
   const double along = L / kSnookerLength;

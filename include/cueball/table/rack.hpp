@@ -27,6 +27,7 @@
 #include <string>
 #include <vector>
 
+#include "cueball/table/placement.hpp"
 #include "cueball/table/table.hpp"
 #include "cueball/core/vec.hpp"
 
@@ -48,10 +49,7 @@ inline constexpr double kMaxGapSigma = 0.005;  ///< m
 /// Throws InvalidArgument("gap_sigma", ...) unless 0 <= gap_sigma <= kMaxGapSigma.
 void validate(const RackOptions& options);
 
-/// Foot spot (3L/4, W/2), where pool racks put the apex ball.
-Vec2 foot_spot(const Table& table);
-/// x of the head string (L/4); the cue ball starts behind it (x < L/4).
-double head_string_x(const Table& table);
+// foot_spot(), head_string_x(): placement.hpp.
 
 /// Snooker markings (WPBSA Rules, section 1(d)-(f)), for a table of any size:
 /// distances given for the standard 3569 x 1778 mm table scale with the

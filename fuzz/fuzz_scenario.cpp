@@ -24,6 +24,7 @@
 #include "cueball/core/errors.hpp"
 #include "cueball/simulation/scenario.hpp"
 #include "cueball/simulation/simulator.hpp"
+#include "cueball/io/table_json.hpp"
 #include "cueball/table/table.hpp"
 #include "fuzz_common.hpp"
 

@@ -12,6 +12,7 @@
 #include <string_view>
 
 #include "cueball/core/errors.hpp"
+#include "cueball/io/table_json.hpp"
 #include "cueball/table/table.hpp"
 #include "fuzz_common.hpp"
 

@@ -82,6 +82,7 @@
 #include "cueball/table/rack.hpp"
 #include "cueball/simulation/scenario.hpp"
 #include "cueball/simulation/simulator.hpp"
+#include "cueball/io/table_json.hpp"
 #include "cueball/table/table.hpp"
 #include "cueball/core/vec.hpp"
 

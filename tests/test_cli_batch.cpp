@@ -18,6 +18,7 @@
 #include "temp_dir.hpp"
 #include "cueball/simulation/batch.hpp"
 #include "cueball/simulation/scenario.hpp"
+#include "cueball/io/table_json.hpp"
 #include "cueball/table/table.hpp"
 
 namespace cueball {

@@ -15,6 +15,7 @@
 #include <nlohmann/json.hpp>
 
 #include "cueball/simulation/scenario.hpp"
+#include "cueball/io/table_json.hpp"
 #include "cueball/table/table.hpp"
 #include "temp_dir.hpp"
 

@@ -22,6 +22,7 @@
 #include "cueball/simulation/batch.hpp"
 #include "cueball/simulation/scenario.hpp"
 #include "cueball/simulation/simulator.hpp"
+#include "cueball/io/table_json.hpp"
 #include "cueball/table/table.hpp"
 
 namespace cueball {

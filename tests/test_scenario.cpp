@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "cueball/core/errors.hpp"
+#include "cueball/io/table_json.hpp"
 #include "cueball/simulation/scenario.hpp"
 
 namespace cueball {

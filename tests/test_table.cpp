@@ -3,6 +3,7 @@
 // Expected values are computed here from the published numbers (inches,
 // millimetres), independently of the construction in src/table/table.cpp; the lips,
 // cut angles and mouths are measured back from the built segments.
+#include "cueball/io/table_json.hpp"
 #include "cueball/table/table.hpp"
 
 #include <gtest/gtest.h>

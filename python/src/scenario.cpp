@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 #include "cueball/core/errors.hpp"
+#include "cueball/io/table_json.hpp"
 #include "cueball/table/rack.hpp"
 #include "cueball/simulation/scenario.hpp"
 

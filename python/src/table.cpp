@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 #include "cueball/core/errors.hpp"
+#include "cueball/io/table_json.hpp"
 #include "cueball/table/table.hpp"
 
 namespace cueball_python {

@@ -15,6 +15,7 @@
 
 #include "cueball/models/cushion/impact.hpp"
 #include "cueball/core/errors.hpp"
+#include "cueball/io/table_json.hpp"
 #include "cueball/simulation/shot_facts.hpp"
 #include "cueball/table/rack.hpp"
 #include "cueball/table/cue_obstruction.hpp"

@@ -136,6 +136,21 @@ TEST(CliInput, PlansBeyondTheSpeedCapNameTheInput) {
   EXPECT_TRUE(r.out.empty());
 }
 
+// Issue 24: 0.50000000001 was printed as 0.5, equal to its bound.
+TEST(CliInput, AValueJustBeyondItsBoundIsPrintedApartFromIt) {
+  const TempDir dir;
+  expect_usage_error({"simulate", dir.write("side.json", R"({"balls": [{"id": 0, "position": [1, 0.6]}],
+                        "cue": {"speed": 2, "side": 0.50000000001}})")},
+                     "scenario.cue.side = 0.50000000001 is outside the allowed range [-0.5, 0.5]");
+  expect_usage_error({"simulate", dir.write("offset.json", R"({"balls": [{"id": 0, "position": [1, 0.6]}],
+                        "cue": {"speed": 2, "side": 0.4, "height": 0.30000000001}})")},
+                     "tip offset = 0.0142875000001");
+  expect_usage_error({"cushion", "--v0", "1", "--alpha", "30", "--e", "1.00000000001"},
+                     "--e = 1.00000000001 is outside the allowed range [1e-09, 1]");
+  expect_usage_error({"plan-shot", "--ball", "1", "--simulations", "4000.0000001"},
+                     "--simulations = 4000.0000001 is not a whole number");
+}
+
 // ------------------------------------------------------------------ scenario JSON
 
 TEST(CliInput, ScenarioErrorsNameTheJsonPathTheUserWrote) {

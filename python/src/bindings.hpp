@@ -15,6 +15,7 @@
 #include <array>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <utility>
 #include <vector>
 
@@ -91,6 +92,11 @@ py::arg_v params_arg();
 // otherwise), and its name (cushion.cpp).
 /// The solver of that name ("exact", "paper"); InvalidArgument naming `field` otherwise.
 cueball::CushionSolver cushion_solver(const std::string& name, const char* field = "solver");
+
+/// Refuses an argument given (`given`) that belongs to another model or
+/// solver than the one chosen: InvalidArgument "FIELD applies to the KIND
+/// 'OWNER' only, not to 'CHOSEN'", as the scenario reader refuses its key.
+void only_for(const char* field, bool given, const char* kind, bool applies, const char* owner, std::string_view chosen);
 
 // ------------------------------------------------------------------ scenarios (scenario_input.cpp)
 

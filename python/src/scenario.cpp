@@ -94,11 +94,12 @@ std::string scenario_json(const py::object& table, const py::iterable& balls, co
                           const std::optional<cueball::CueParameters>& cue_parameters, const py::object& noise) {
   std::string table_text;
   if (py::isinstance<py::str>(table)) {
+    (void)utf8_argument(table, "table");
     table_text = py::module_::import("json").attr("dumps")(table).cast<std::string>();
   } else if (py::isinstance<cueball::Table>(table)) {
     table_text = cueball::table_to_json(table.cast<const cueball::Table&>());
   } else {
-    throw py::type_error("table must be a cueball.Table or a preset's name (TABLE_PRESETS)");
+    throw ArgumentTypeError("table", wrong_type_message(table, "table", "a cueball.Table or a preset's name (TABLE_PRESETS)"));
   }
   py::dict d;
   py::list placed;
@@ -109,7 +110,8 @@ std::string scenario_json(const py::object& table, const py::iterable& balls, co
       const auto& p = b.cast<const cueball::PlacedBall&>();
       placed.append(ball_json(SimulationBall{p.id, p.name, {p.position, {}, {}}}));
     } else {
-      throw py::type_error("balls must be SimulationBall or PlacedBall objects");
+      throw ArgumentTypeError("balls", wrong_type_message(b, "balls[" + std::to_string(placed.size()) + "]",
+                                                          "a SimulationBall or a PlacedBall"));
     }
   }
   d["balls"] = placed;
@@ -262,15 +264,16 @@ void bind_scenario(py::module_& m) {
              SimulationSettings s;
              s.parameters = p;
              s.cushion = cueball::default_cushion_settings(cushion_model_named(model, "cushion_model"));
-             if (!e.is_none()) s.cushion.restitution = e.cast<double>();
-             if (!mu.is_none()) s.cushion.friction = mu.cast<double>();
+             if (!e.is_none()) s.cushion.restitution = cast_argument<double>(e, "cushion_restitution", "float or None");
+             if (!mu.is_none()) s.cushion.friction = cast_argument<double>(mu, "cushion_friction", "float or None");
              s.cushion.solver = cushion_solver(solver, "cushion_solver");
              s.cushion.paper_steps = paper_steps;
              s.cushion.exact_tolerance = exact_tolerance;
-             if (!omega.is_none()) s.cushion.frequency_ratio = omega.cast<double>();
+             if (!omega.is_none()) s.cushion.frequency_ratio = cast_argument<double>(omega, "cushion_frequency_ratio", "float or None");
              s.ball_collision_model = ball_collision_model_named(ball_model, "ball_collision_model");
              s.ball_collision = c.is_none() ? cueball::default_ball_collision(s.ball_collision_model)
-                                            : c.cast<cueball::BallCollisionParameters>();
+                                            : cast_argument<cueball::BallCollisionParameters>(
+                                                  c, "ball_collision", "BallCollisionParameters or None");
              s.max_events = max_events;
              const SimulationSettings d;
              check_cushion_owners(s.cushion, solver != cueball::to_string(d.cushion.solver),

@@ -94,5 +94,21 @@ class WrongTypesTest(unittest.TestCase):
                 self.assert_named(call, field, "lone UTF-16 surrogate", part, "allowed: valid Unicode text")
 
 
+class PlanInputTest(unittest.TestCase):
+    def test_the_missing_cue_ball_and_a_region_off_the_table_are_named_as_written(self):
+        # Issue 24: reported as 'cue_ball' (a name the scenario never has) and as NoFeasibleShot.
+        scenario = {"balls": [{"id": 3, "position": [1, 0.6]}, {"id": 4, "position": [1.5, 0.6]}]}
+        with self.assertRaises(cueball.InvalidArgument) as caught:
+            cueball.plan_shot(scenario, 4)
+        self.assertEqual(caught.exception.field, "scenario.cue.ball")
+        with self.assertRaises(cueball.InvalidArgument) as caught:
+            cueball.plan_shot(scenario, 4, cue_ball=7)
+        self.assertEqual(caught.exception.field, "cue_ball")
+        with self.assertRaises(cueball.InvalidArgument) as caught:
+            cueball.plan_shot(None, 1, in_hand=True, region=[5, 6, 5, 6])
+        self.assertEqual(caught.exception.field, "region")
+        self.assertIn("wholly off the playing surface", str(caught.exception))
+
+
 if __name__ == "__main__":
     unittest.main()

@@ -104,7 +104,7 @@ void write_text_file(const std::string& path, std::string_view text, const std::
 
 void check_flag(const char* flag, double value, double lo, double hi, const char* meaning) {
   if (std::isfinite(value) && value >= lo && value <= hi) return;
-  throw UsageError(std::string(flag) + " = " + format_value(value) +
+  throw UsageError(std::string(flag) + " = " + format_number_beside(value, {lo, hi}) +
                    (std::isfinite(value) ? " is outside the allowed range [" : " is not a finite number; allowed: [") +
                    format_value(lo) + ", " + format_value(hi) + "] (" + meaning + ")");
 }

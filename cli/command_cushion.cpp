@@ -277,6 +277,16 @@ void sweep_row(std::ostream& out, const char* family, const PaperIncidence& in, 
   out << line;
 }
 
+// The same row as a JSON object (--json): the CSV's columns as keys.
+nlohmann::ordered_json sweep_row_json(const PaperIncidence& in, const SweepImpact& r, double radius) {
+  return {{"v0", in.speed},
+          {"alpha_deg", in.angle / kDegree},
+          {"topspin_k", in.topspin * radius / in.speed},
+          {"sidespin_k", in.sidespin * radius / in.speed},
+          {"speed", r.speed},
+          {"angle_deg", r.angle / kDegree}};
+}
+
 void run_sweep(const SweepFlags& f, std::ostream& out, std::ostream& err) {
   const std::optional<CushionModel> model = cushion_model_from_string(f.model);
   if (!model) throw UsageError("--model = " + quote_input(f.model) + " is not known; allowed: " + cushion_model_names(""));
@@ -309,42 +319,68 @@ void run_sweep(const SweepFlags& f, std::ostream& out, std::ostream& err) {
   const std::vector<double> topspins{-1.0, -0.5, 0.0, 0.5, 1.0, 1.5, 2.0};
   const std::vector<double> sidespins{-2.0, -1.5, -1.0, -0.5, 0.0, 0.5, 1.0, 1.5, 2.0};
 
+  // --json: one object, the family, model, solver and ball with the rows
+  // (fig12: the history over P_I, as cushion --history --json gives it).
+  nlohmann::ordered_json j;
+  if (f.parameters.json) {
+    j["family"] = f.family;
+    j["model"] = f.model;
+    if (mathavan) j["solver"] = f.cushion.solver;
+    j["preset"] = f.parameters.preset;
+  }
   if (f.family == "fig12") {
     // Slip speeds and angles over the impact: V0 = 2, alpha = 45, w_S = 2 V0/R, w_T = 1.5 V0/R.
     PaperIncidence in{2.0, 45.0 * kDegree, 1.5 * 2.0 / radius, 2.0 * 2.0 / radius};
     CushionImpactOptions o = options;
     o.record_history = true;
-    print_history_csv(out, cushion_impact(incoming_ball(in), p, cushion, o).history);
+    const std::vector<CushionImpactSample> history = cushion_impact(incoming_ball(in), p, cushion, o).history;
+    if (!f.parameters.json) {
+      print_history_csv(out, history);
+      return;
+    }
+    nlohmann::ordered_json rows = nlohmann::ordered_json::array();
+    for (const CushionImpactSample& sample : history) add_sample(rows, sample);
+    j["history"] = rows;
+    out << j.dump(2) << '\n';
     return;
   }
-  out << "family,solver,v0,alpha_deg,topspin_k,sidespin_k,speed,angle_deg\n";
+  nlohmann::ordered_json rows = nlohmann::ordered_json::array();
+  if (!f.parameters.json) out << "family,solver,v0,alpha_deg,topspin_k,sidespin_k,speed,angle_deg\n";
   const char* family = f.family.c_str();
+  const auto row = [&](const PaperIncidence& in, const SweepImpact& r) {
+    if (f.parameters.json) rows.push_back(sweep_row_json(in, r, radius));
+    else sweep_row(out, family, in, r, radius, label);
+  };
   bool beyond_limit = false;
   for (int a = 1; a <= 90; ++a) {
     if (f.family == "fig8") {
       for (double v0 : {0.5, 1.0, 1.5, 2.0, 2.5, 3.0}) {
         const auto [in, r] = impact(v0, a, 1.0, 0.0);
         beyond_limit = beyond_limit || r.beyond_rigid_cushion_limit;
-        sweep_row(out, family, in, r, radius, label);
+        row(in, r);
       }
     } else if (f.family == "fig9") {
       for (double k : topspins) {
         const auto [in, r] = impact(1.0, a, k, 0.0);
-        sweep_row(out, family, in, r, radius, label);
+        row(in, r);
       }
     } else if (f.family == "fig10") {
       for (double k : sidespins) {
         const auto [in, r] = impact(1.0, a, 1.0, k);
-        sweep_row(out, family, in, r, radius, label);
+        row(in, r);
       }
     } else {
       for (double top : topspins) {
         for (double side : sidespins) {
           const auto [in, r] = impact(1.0, a, top, side);
-          sweep_row(out, family, in, r, radius, label);
+          row(in, r);
         }
       }
     }
+  }
+  if (f.parameters.json) {
+    j["rows"] = rows;
+    out << j.dump(2) << '\n';
   }
   if (beyond_limit) err << "cueball: warning: some rows exceed the rigid-cushion limit of 2.5 m/s normal speed\n";
 }
@@ -575,7 +611,13 @@ void run_figures(const FigureFlags& f, std::ostream& out, std::ostream& err) {
       throw std::runtime_error(std::string("gnuplot failed on ") + name + ".gp (status " + std::to_string(status) +
                                "); see " + quote_input((dir / name).string() + ".log", kMaxEchoedPathChars));
   }
-  for (const auto& image : written) out << image.string() << '\n';
+  if (f.parameters.json) {
+    nlohmann::ordered_json files = nlohmann::ordered_json::array();
+    for (const auto& image : written) files.push_back(image.string());
+    out << nlohmann::ordered_json{{"out", f.out}, {"format", f.format}, {"files", files}}.dump(2) << '\n';
+  } else {
+    for (const auto& image : written) out << image.string() << '\n';
+  }
   (void)err;
 }
 
@@ -769,7 +811,8 @@ Command add_cushion_sweep_command(CLI::App& app) {
       "  fig12  slip speeds and angles over P_I at V0 = 2, alpha = 45, w_S = 2 V0/R, w_T = 1.5 V0/R\n"
       "  grid   alpha 1-90 x topspin K (7 values) x sidespin K (9 values) at V0 = 1 m/s\n"
       "Columns: family, solver (exact or paper; the model's name with --model), v0, alpha_deg,\n"
-      "topspin_k, sidespin_k, speed, angle_deg.");
+      "topspin_k, sidespin_k, speed, angle_deg. --json: one object with family, model, solver, preset\n"
+      "and the rows as objects (fig12: the history, as cushion --history --json).");
   sub->add_option("--model", flags->model,
                   "The cushion model: " + cushion_model_names("") +
                       "; another model than mathavan_2010 with its own\nconstants (fig8, fig9, fig10, grid)")
@@ -790,7 +833,8 @@ Command add_figures_command(CLI::App& app) {
       "Redraws the cushion paper's Figs 8, 9, 10 and 12 with gnuplot into --out: rebound speed and angle\n"
       "against the angle of incidence, and the slip speeds and angles over the impact. Lines are the\n"
       "paper's Euler solver, points the exact solver, with the same constants (the paper's fit unless\n"
-      "--e / --mu-w are given), so a gap between them is the Euler scheme's error. Prints the files.");
+      "--e / --mu-w are given), so a gap between them is the Euler scheme's error. Prints the files\n"
+      "(--json: an object with out, format and the files).");
   sub->add_option("--out", flags->out, "Directory for the images, data and gnuplot scripts")->capture_default_str();
   sub->add_option("--format", flags->format, "png or svg")->check(CLI::IsMember({"png", "svg"}))->capture_default_str();
   add_cushion_flags(*sub, flags->cushion);

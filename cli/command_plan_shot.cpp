@@ -111,7 +111,7 @@ void run_plan_shot(const PlanShotFlags& f, std::ostream& out, std::ostream& err)
   check_flag("--simulations", f.simulations, kMinPlanSimulations, kMaxPlanSimulations,
              "engine runs the plan may use");
   if (f.simulations != std::floor(f.simulations))
-    throw UsageError("--simulations = " + format_number(f.simulations) + " is not a whole number");
+    throw UsageError("--simulations = " + format_number_beside(f.simulations, {std::round(f.simulations)}) + " is not a whole number");
   const Scenario s = f.scenario.empty()
                          ? default_scenario()
                          : scenario_from_document(read_text_file(f.scenario, "the scenario file", kMaxScenarioBytes));
@@ -175,7 +175,7 @@ void run_plan_shot(const PlanShotFlags& f, std::ostream& out, std::ostream& err)
   check_flag("--next-simulations", f.next_simulations, kMinPlanSimulations, kMaxPlanSimulations,
              "engine runs of each next-shot plan");
   if (f.next_simulations != std::floor(f.next_simulations))
-    throw UsageError("--next-simulations = " + format_number(f.next_simulations) + " is not a whole number");
+    throw UsageError("--next-simulations = " + format_number_beside(f.next_simulations, {std::round(f.next_simulations)}) + " is not a whole number");
   ShotPlanResult plan;
   PositionPlanResult position;
   Scenario on = s;  // the table planned on (with --in-hand, the cue ball at its spot)

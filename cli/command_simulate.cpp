@@ -173,7 +173,7 @@ struct BatchFlags {
 void run_batch(const BatchFlags& f, std::ostream& out, std::ostream& err) {
   check_flag("--shots", f.shots, 1, kMaxBatchShots, "number of shots; memory does not grow with it");
   if (f.shots != std::floor(f.shots))
-    throw UsageError("--shots = " + format_number(f.shots) + " is not a whole number of shots");
+    throw UsageError("--shots = " + format_number_beside(f.shots, {std::round(f.shots)}) + " is not a whole number of shots");
   check_flag("--threads", f.threads, 1, kMaxBatchThreads, "worker threads");
   check_flag("--seed", static_cast<double>(f.seed), 0, 9.0e15, "random seed");
   Scenario s = load_scenario(f.scenario);

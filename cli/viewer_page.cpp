@@ -98,7 +98,7 @@ class Node {
     expect(value_.is_number() && std::isfinite(value_.get<double>()), "expected a finite number");
     const double x = value_.get<double>();
     expect(x >= lo && x <= hi,
-           format_number(x) + " is outside [" + format_number(lo) + ", " + format_number(hi) + "]");
+           format_number_beside(x, {lo, hi}) + " is outside [" + format_number(lo) + ", " + format_number(hi) + "]");
     return x;
   }
   void string() const { expect(value_.is_string(), "expected a string"); }

@@ -1116,7 +1116,10 @@ std::string scenario_json(const Shot& s) {
          ", \"friction\": " + num(s.settings.cushion.friction) + "},\n";
   out += " \"ball_collision\": {\"model\": \"" + std::string(to_string(s.settings.ball_collision_model)) +
          "\", \"restitution\": " + num(c.restitution) + ", \"friction\": " + num(c.friction) +
-         ", \"friction_excess\": " + num(c.friction_excess) + ", \"friction_decay\": " + num(c.friction_decay) + "},\n";
+         (s.settings.ball_collision_model == BallCollisionModel::coulomb_impulse  // mathavan_2014's reader refuses them
+              ? ", \"friction_excess\": " + num(c.friction_excess) + ", \"friction_decay\": " + num(c.friction_decay)
+              : std::string()) +
+         "},\n";
   out += " \"max_events\": " + std::to_string(s.settings.max_events) + ",\n";
   out += " \"balls\": [\n";
   for (std::size_t i = 0; i < s.balls.size(); ++i) {

@@ -93,6 +93,25 @@ TEST(BallCollisionModel, ScenarioChoosesTheModelByName) {
         "balls": [{"id": 0, "position": [1, 0.6]}]})"));
   });
   EXPECT_EQ(excess.rfind("scenario.ball_collision.friction_excess: ", 0), 0u) << excess;
+  // Issue 24: friction_decay under mathavan_2014 was accepted and ignored.
+  const std::string decay = error_of([] {
+    (void)scenario_from_json(R"({"ball_collision": {"model": "mathavan_2014", "friction_decay": 5},
+        "balls": [{"id": 0, "position": [1, 0.6]}]})");
+  });
+  EXPECT_NE(decay.find("scenario.ball_collision.friction_decay applies to the model \"coulomb_impulse\" only, not to "
+                       "\"mathavan_2014\""),
+            std::string::npos)
+      << decay;
+  // The C++ API alike, and the writer leaves both keys out under mathavan_2014 (it reads back).
+  BallCollisionParameters decaying = default_ball_collision(BallCollisionModel::mathavan_2014);
+  decaying.friction_decay = 5.0;
+  const std::string api = error_of([&] { (void)ball_collision_contact(pool_parameters(), BallCollisionModel::mathavan_2014, decaying); });
+  EXPECT_EQ(api.rfind("friction_decay: ", 0), 0u) << api;
+  const Scenario m14 = scenario_from_json(R"({"ball_collision": {"model": "mathavan_2014"}, "balls": [{"id": 0, "position": [1, 0.6]}]})");
+  const std::string written = scenario_to_json(m14);
+  EXPECT_EQ(written.find("friction_decay"), std::string::npos) << written;
+  EXPECT_EQ(written.find("friction_excess"), std::string::npos) << written;
+  EXPECT_EQ(scenario_from_json(written).settings.ball_collision.friction, m14.settings.ball_collision.friction);
 }
 
 TEST(BallCollisionModel, BreakUnderEachModelConservesWhatItShould) {

@@ -132,6 +132,12 @@ TEST(BallInHand, BadInputNamesTheField) {
   EXPECT_EQ(field(q), "region");
   q.region = InHandRegion{0.0, 1.0, 0.0, std::nan("")};
   EXPECT_EQ(field(q), "region");
+  // Issue 24: a region wholly off the table was NoFeasibleShot (exit 3), not bad input.
+  for (const InHandRegion off : {InHandRegion{5.0, 6.0, 0.2, 0.8}, InHandRegion{-1.0, 0.0, 0.2, 0.8},
+                                 InHandRegion{0.5, 1.0, -0.5, -0.1}, InHandRegion{0.5, 1.0, s.table.width, 2.0}}) {
+    q.region = off;
+    EXPECT_EQ(field(q), "region") << off.x_min << " " << off.y_min;
+  }
   EXPECT_EQ(field(request_for(0)), "target");  // the cue ball
   EXPECT_EQ(field(request_for(7)), "target");
   q = request_for(1);

@@ -159,6 +159,51 @@ TEST(CliCushion, Fig12SweepIsTheImpactHistory) {
   EXPECT_GT(rows.size(), 1000u) << "one row per Euler step";
 }
 
+// Issue 24: --json was listed by cushion-sweep and figures, and ignored.
+TEST(CliCushion, SweepJsonHoldsTheCsvRowsAsObjects) {
+  const CliRun csv = run_cli({"cushion-sweep", "--family", "fig9"});
+  const CliRun r = run_cli({"cushion-sweep", "--family", "fig9", "--json"});
+  ASSERT_EQ(r.status, 0) << r.err;
+  const nlohmann::json j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["family"], "fig9");
+  EXPECT_EQ(j["model"], "mathavan_2010");
+  EXPECT_EQ(j["solver"], "exact");
+  EXPECT_EQ(j["preset"], "snooker");
+  const auto rows = parse_csv(csv.out);
+  ASSERT_EQ(j["rows"].size() + 1, rows.size());
+  for (std::size_t i = 0; i < j["rows"].size(); i += 97) {
+    const nlohmann::json& row = j["rows"][i];
+    for (std::size_t c = 2; c < 8; ++c)  // the CSV's columns v0 ... angle_deg, printed to fewer digits
+      EXPECT_NEAR(row[rows[0][c]].get<double>(), std::stod(rows[i + 1][c]), 1e-5 * (1 + std::abs(std::stod(rows[i + 1][c]))))
+          << rows[0][c] << " row " << i;
+  }
+  const nlohmann::json other = nlohmann::json::parse(run_cli({"cushion-sweep", "--family", "fig8", "--model", "han_2005", "--json"}).out);
+  EXPECT_EQ(other["model"], "han_2005");
+  EXPECT_FALSE(other.contains("solver"));
+  EXPECT_EQ(other["rows"].size(), 90u * 6u);
+  const CliRun fig12 = run_cli({"cushion-sweep", "--family", "fig12", "--solver", "paper", "--steps", "200", "--json"});
+  ASSERT_EQ(fig12.status, 0) << fig12.err;
+  const nlohmann::json history = nlohmann::json::parse(fig12.out)["history"];
+  ASSERT_GT(history.size(), 100u);
+  EXPECT_TRUE(history[0].contains("P"));
+  EXPECT_TRUE(history[0].contains("phi_prime"));
+}
+
+TEST(CliCushion, FiguresJsonListsTheImages) {
+  if (!std::filesystem::exists("/usr/bin/gnuplot") && !std::filesystem::exists("/usr/local/bin/gnuplot"))
+    GTEST_SKIP() << "gnuplot is not installed";
+  const std::filesystem::path dir = std::filesystem::temp_directory_path() / "cueball_test_figures_json";
+  std::filesystem::remove_all(dir);
+  const CliRun r = run_cli({"figures", "--out", dir.string(), "--format", "svg", "--steps", "50", "--json"});
+  ASSERT_EQ(r.status, 0) << r.err;
+  const nlohmann::json j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["out"], dir.string());
+  EXPECT_EQ(j["format"], "svg");
+  ASSERT_EQ(j["files"].size(), 5u);
+  for (const auto& file : j["files"]) EXPECT_TRUE(std::filesystem::exists(file.get<std::string>())) << file;
+  std::filesystem::remove_all(dir);
+}
+
 TEST(CliCushion, FiguresWritesThePapersPlotsAndTheModels) {
   const std::filesystem::path dir = std::filesystem::temp_directory_path() / "cueball_test_figures";
   std::filesystem::remove_all(dir);

@@ -137,6 +137,36 @@ TEST(CliInput, PlansBeyondTheSpeedCapNameTheInput) {
   EXPECT_TRUE(r.out.empty());
 }
 
+// Issue 24: 0.50000000001 was printed as 0.5, equal to its bound.
+TEST(CliInput, AValueJustBeyondItsBoundIsPrintedApartFromIt) {
+  const TempDir dir;
+  expect_usage_error({"simulate", dir.write("side.json", R"({"balls": [{"id": 0, "position": [1, 0.6]}],
+                        "cue": {"speed": 2, "side": 0.50000000001}})")},
+                     "scenario.cue.side = 0.50000000001 is outside the allowed range [-0.5, 0.5]");
+  expect_usage_error({"simulate", dir.write("offset.json", R"({"balls": [{"id": 0, "position": [1, 0.6]}],
+                        "cue": {"speed": 2, "side": 0.4, "height": 0.30000000001}})")},
+                     "tip offset = 0.0142875000001");
+  expect_usage_error({"cushion", "--v0", "1", "--alpha", "30", "--e", "1.00000000001"},
+                     "--e = 1.00000000001 is outside the allowed range [1e-09, 1]");
+  expect_usage_error({"plan-shot", "--ball", "1", "--simulations", "4000.0000001"},
+                     "--simulations = 4000.0000001 is not a whole number");
+}
+
+// Issue 24: a scenario without the cue ball was reported as "cue_ball", a name the user never wrote.
+TEST(CliInput, AMissingCueBallIsNamedAsTheScenarioWritesIt) {
+  const TempDir dir;
+  expect_usage_error({"plan-shot", dir.write("no_cue.json", R"({"balls": [{"id": 3, "position": [1, 0.6]},
+                        {"id": 4, "position": [1.5, 0.6]}]})"), "--ball", "4"},
+                     "cueball: error: scenario.cue.ball = 0 (the default: no cue given) is not the id of a ball on "
+                     "the table; allowed: 3, 4");
+  const CliRun r = run_cli({"plan-shot", dir.write("cue_5.json", R"({"balls": [{"id": 3, "position": [1, 0.6]},
+                              {"id": 4, "position": [1.5, 0.6]}], "cue": {"ball": 3, "speed": 1}})"), "--ball", "4"});
+  EXPECT_EQ(r.status, 0) << r.err;  // the scenario's cue ball is the planner's
+  expect_usage_error({"simulate", dir.write("cue_ball.json", R"({"balls": [{"id": 3, "position": [1, 0.6]}],
+                        "cue": {"ball": 5, "speed": 1}})")},
+                     "scenario.cue.ball = 5 is not a ball on the table");
+}
+
 // ------------------------------------------------------------------ scenario JSON
 
 TEST(CliInput, ScenarioErrorsNameTheJsonPathTheUserWrote) {

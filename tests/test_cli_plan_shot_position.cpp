@@ -117,6 +117,10 @@ TEST(CliPlanShotPosition, BadRegionIsAUsageErrorNamingTheFlag) {
   expect_usage_error({"plan-shot", scenario, "--ball", "1", "--in-hand", "--region", "0,1,0,x"}, "--region");
   expect_usage_error({"plan-shot", scenario, "--ball", "1", "--in-hand", "--region", "1,0,0,1"}, "--region");
   expect_usage_error({"plan-shot", scenario, "--ball", "1", "--in-hand", "--region", "0,1,0,nan"}, "--region");
+  // Issue 24: wholly off the table was exit status 3 ("no spot for the cue ball").
+  expect_usage_error({"plan-shot", scenario, "--ball", "1", "--in-hand", "--region", "5,6,5,6"},
+                     "--region = \"5,6,5,6\": region [5, 6] x [5, 6] m lies wholly off the playing surface; allowed: "
+                     "a region overlapping [0, 2.54] x [0, 1.27] m");
 }
 
 TEST(CliPlanShotPosition, BadNextIsAUsageErrorNamingTheFlag) {

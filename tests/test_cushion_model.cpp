@@ -179,6 +179,23 @@ TEST(CushionModel, ScenarioChoosesTheModelByName) {
   EXPECT_NE(not_han.find("applies to the model \"mathavan_2010\" only"), std::string::npos) << not_han;
   const std::string mu = error(R"({"cushion": {"model": "han_2005", "friction": 2}, "balls": [{"id": 0, "position": [1, 0.6]}]})");
   EXPECT_EQ(mu.rfind("scenario.cushion.friction: ", 0), 0u) << mu;
+  // Issue 24: each solver's key with the other solver was accepted and ignored.
+  const std::string paper_tolerance =
+      error(R"({"cushion": {"solver": "paper", "exact_tolerance": 1e-7}, "balls": [{"id": 0, "position": [1, 0.6]}]})");
+  EXPECT_EQ(paper_tolerance, "scenario.cushion.exact_tolerance: scenario.cushion.exact_tolerance applies to the solver "
+                             "\"exact\" only, not to \"paper\"");
+  const std::string exact_steps = error(R"({"cushion": {"paper_steps": 100}, "balls": [{"id": 0, "position": [1, 0.6]}]})");
+  EXPECT_EQ(exact_steps, "scenario.cushion.paper_steps: scenario.cushion.paper_steps applies to the solver \"paper\" "
+                         "only, not to \"exact\"");
+  // What the writer writes reads back: each solver's own key only.
+  SimulationSettings paper;
+  paper.cushion.solver = CushionSolver::paper;
+  paper.cushion.exact_tolerance = 1e-7;  // not the paper solver's: left out
+  Scenario with_paper = t;
+  with_paper.settings = paper;
+  const std::string written = scenario_to_json(with_paper);
+  EXPECT_EQ(written.find("exact_tolerance"), std::string::npos) << written;
+  EXPECT_EQ(scenario_from_json(written).settings.cushion.solver, CushionSolver::paper);
 }
 
 TEST(CushionModel, SimulatorReboundsByTheChosenModel) {

@@ -106,6 +106,31 @@ TEST(Parameters, ErrorMessageNamesFieldValueAndRange) {
   }
 }
 
+// Issue 24: a value just beyond its bound was printed equal to it ("0.5 is outside [-0.5, 0.5]").
+TEST(Parameters, AValueJustBeyondItsBoundNeverPrintsAsTheBound) {
+  const auto message = [](double value, double lo, double hi) {
+    try {
+      require_in_range("side", value, lo, hi, "tip offset");
+    } catch (const InvalidArgument& e) {
+      return std::string(e.what());
+    }
+    return std::string("accepted");
+  };
+  EXPECT_EQ(message(0.50000000001, -0.5, 0.5),
+            "side = 0.50000000001 is outside the allowed range [-0.5, 0.5] (tip offset)");
+  EXPECT_EQ(message(-0.5000000000000001, -0.5, 0.5),
+            "side = -0.5000000000000001 is outside the allowed range [-0.5, 0.5] (tip offset)");
+  EXPECT_EQ(message(1e-7 * (1 + 1e-12), 1e-11, 1e-7).rfind("side = 1.000000000001e-07 is outside", 0), 0u)
+      << message(1e-7 * (1 + 1e-12), 1e-11, 1e-7);
+  // Values that differ visibly keep the usual 10 digits.
+  EXPECT_EQ(message(0.7, -0.5, 0.5), "side = 0.7 is outside the allowed range [-0.5, 0.5] (tip offset)");
+  EXPECT_EQ(message(1.0 / 3.0, 0.5, 1.0).rfind("side = 0.3333333333 is", 0), 0u);
+  // A bound that is itself printed with 10 digits (a bound computed from R).
+  const double bound = 0.1 / 3.0;
+  EXPECT_NE(format_number_beside(std::nextafter(bound, 1.0), {0.0, bound}), format_number(bound));
+  EXPECT_EQ(format_number_beside(2.0, {0.0, 1.0}), "2");
+}
+
 TEST(Parameters, UnknownPresetIsRejected) {
   try {
     preset_parameters("croquet");

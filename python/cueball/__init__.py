@@ -7,12 +7,20 @@ Pure-Python layers sit beside it and are imported on demand:
 
 - ``cueball.dask``: ``simulate_many`` in chunks across a Dask distributed
   cluster (Debian's python3-distributed), bit-identical to a local run.
+- ``cueball._arguments``: applied at import, names an argument of the wrong
+  Python type (``cueball.InvalidArgumentType``) where pybind11 would list every
+  signature.
 
 Units, sign conventions and defaults: see ``help(cueball._cueball)`` and
 python/README.md.
 """
 
-from ._cueball import *  # noqa: F401,F403 (the extension's public API is the package's)
+from . import _cueball
+from ._arguments import name_wrong_types as _name_wrong_types
+
+_name_wrong_types(_cueball)  # wrong argument types as InvalidArgumentType naming the argument
+
+from ._cueball import *  # noqa: E402,F401,F403 (the extension's public API is the package's)
 from ._cueball import __doc__ as _extension_doc
 from ._cueball import __version__ as __version__
 from ._cueball import _time_run_scenario as _time_run_scenario

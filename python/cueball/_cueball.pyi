@@ -31,6 +31,9 @@ class InvalidArgument(ValueError):
 
     field: str
 
+class InvalidArgumentType(InvalidArgument, TypeError):
+    """An argument of the wrong Python type; `field` names the argument (e.g. 'speed')."""
+
 class InfeasibleShot(ValueError):
     """A plan with no physical answer; `condition` is the failed inequality (e.g. 'x1 >= x0')."""
 

@@ -14,7 +14,9 @@
 
 #include <array>
 #include <optional>
+#include <stdexcept>
 #include <string>
+#include <string_view>
 #include <utility>
 #include <vector>
 
@@ -51,6 +53,36 @@ void bind_simulate_many(py::module_& m);  // simulate_many.cpp (defined there, w
 #endif
 
 // ------------------------------------------------------------------ conversions
+
+/// An argument of the wrong Python type: raised as cueball.InvalidArgumentType
+/// (an InvalidArgument and a TypeError) with `field` the argument's name
+/// (errors.cpp). pybind11's own refusals of an argument's type are named the
+/// same way by cueball/_arguments.py.
+struct ArgumentTypeError : std::runtime_error {
+  ArgumentTypeError(std::string field_name, const std::string& message)
+      : std::runtime_error(message), field(std::move(field_name)) {}
+  std::string field;
+};
+
+/// `value` as T, or ArgumentTypeError "FIELD = repr(value) is a TYPE; allowed: ALLOWED".
+template <class T>
+T cast_argument(const py::handle& value, const std::string& field, const char* allowed);
+
+/// A Python str as UTF-8; InvalidArgument naming `field` when it holds a lone
+/// UTF-16 surrogate (no UTF-8 for it), ArgumentTypeError when it is no str.
+std::string utf8_argument(const py::handle& text, const std::string& field);
+
+/// "FIELD = repr(value) is a TYPE; allowed: ALLOWED" (repr cut at 60 characters).
+std::string wrong_type_message(const py::handle& value, const std::string& field, const char* allowed);
+
+template <class T>
+T cast_argument(const py::handle& value, const std::string& field, const char* allowed) {
+  try {
+    return value.cast<T>();
+  } catch (const py::cast_error&) {
+    throw ArgumentTypeError(field, wrong_type_message(value, field, allowed));
+  }
+}
 
 using Pair = std::array<double, 2>;
 using Triple = std::array<double, 3>;
@@ -91,6 +123,11 @@ py::arg_v params_arg();
 // otherwise), and its name (cushion.cpp).
 /// The solver of that name ("exact", "paper"); InvalidArgument naming `field` otherwise.
 cueball::CushionSolver cushion_solver(const std::string& name, const char* field = "solver");
+
+/// Refuses an argument given (`given`) that belongs to another model or
+/// solver than the one chosen: InvalidArgument "FIELD applies to the KIND
+/// 'OWNER' only, not to 'CHOSEN'", as the scenario reader refuses its key.
+void only_for(const char* field, bool given, const char* kind, bool applies, const char* owner, std::string_view chosen);
 
 // ------------------------------------------------------------------ scenarios (scenario_input.cpp)
 

@@ -156,6 +156,8 @@ void bind_cushion(py::module_& m) {
         cueball::CushionSettings settings = cueball::default_cushion_settings(*chosen);
         if (restitution) settings.restitution = *restitution;
         if (friction) settings.friction = *friction;
+        only_for("frequency_ratio", frequency_ratio.has_value(), "model", *chosen == cueball::CushionModel::stronge_compliant,
+                 "stronge_compliant", model);
         if (frequency_ratio) settings.frequency_ratio = *frequency_ratio;
         const double h = contact_height ? *contact_height : cueball::default_cushion_height(p.ball);
         cueball::require_in_range("contact_height", h, p.ball.radius * (1 + 1e-9), 2 * p.ball.radius * (1 - 1e-9),

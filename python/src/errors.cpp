@@ -16,6 +16,7 @@ namespace {
 // The exception classes, created once and kept for the life of the process
 // (never released: they outlive the module's finalisation).
 PyObject* g_invalid_argument = nullptr;
+PyObject* g_invalid_argument_type = nullptr;
 PyObject* g_infeasible_shot = nullptr;
 PyObject* g_simulation_error = nullptr;
 PyObject* g_no_feasible_shot = nullptr;
@@ -44,6 +45,16 @@ void bind_errors(py::module_& m) {
       "The message names the field, its value and what is allowed; `field` is the field's name\n"
       "in cueball's API (e.g. 'mu_s', 'speed', 'scenario.balls[1].position').",
       PyExc_ValueError);
+  {
+    // An argument of the wrong Python type: an InvalidArgument naming it, and a
+    // TypeError as Python's own (pybind11's four-line TypeError before).
+    const py::tuple bases = py::make_tuple(py::handle(g_invalid_argument), py::handle(PyExc_TypeError));
+    g_invalid_argument_type = new_exception(
+        m, "InvalidArgumentType",
+        "An argument of the wrong Python type (a str where a float is expected, a 2-vector for a\n"
+        "3-vector, ...): an InvalidArgument whose `field` names the argument, and a TypeError.",
+        bases.ptr());
+  }
   g_infeasible_shot = new_exception(
       m, "InfeasibleShot",
       "A well-formed request with no physical answer, e.g. a planned shot violating a validity\n"
@@ -61,6 +72,8 @@ void bind_errors(py::module_& m) {
   py::register_exception_translator([](std::exception_ptr p) {
     try {
       if (p) std::rethrow_exception(p);
+    } catch (const ArgumentTypeError& e) {
+      raise_with(g_invalid_argument_type, e.what(), "field", e.field);
     } catch (const cueball::InvalidArgument& e) {
       raise_with(g_invalid_argument, e.what(), "field", e.field());
     } catch (const cueball::InfeasibleShot& e) {

@@ -29,7 +29,8 @@ Tables, racks and scenarios are objects (Table, rack_nine_ball(), Scenario):
 read-only, always valid, picklable through their JSON; simulate() takes a
 Scenario wherever it takes a scenario dict, and result.scenario replays a
 result bit for bit. Bad input raises cueball.InvalidArgument
-(a ValueError naming the field), an impossible plan cueball.InfeasibleShot
+(a ValueError naming the field; an argument of the wrong Python type its
+subclass InvalidArgumentType, also a TypeError), an impossible plan cueball.InfeasibleShot
 (ValueError), a simulation that cannot finish cueball.SimulationError
 (RuntimeError).)";
 

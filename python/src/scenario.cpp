@@ -95,11 +95,12 @@ std::string scenario_json(const py::object& table, const py::iterable& balls, co
                           const std::optional<cueball::CueParameters>& cue_parameters, const py::object& noise) {
   std::string table_text;
   if (py::isinstance<py::str>(table)) {
+    (void)utf8_argument(table, "table");
     table_text = py::module_::import("json").attr("dumps")(table).cast<std::string>();
   } else if (py::isinstance<cueball::Table>(table)) {
     table_text = cueball::table_to_json(table.cast<const cueball::Table&>());
   } else {
-    throw py::type_error("table must be a cueball.Table or a preset's name (TABLE_PRESETS)");
+    throw ArgumentTypeError("table", wrong_type_message(table, "table", "a cueball.Table or a preset's name (TABLE_PRESETS)"));
   }
   py::dict d;
   py::list placed;
@@ -110,7 +111,8 @@ std::string scenario_json(const py::object& table, const py::iterable& balls, co
       const auto& p = b.cast<const cueball::PlacedBall&>();
       placed.append(ball_json(SimulationBall{p.id, p.name, {p.position, {}, {}}}));
     } else {
-      throw py::type_error("balls must be SimulationBall or PlacedBall objects");
+      throw ArgumentTypeError("balls", wrong_type_message(b, "balls[" + std::to_string(placed.size()) + "]",
+                                                          "a SimulationBall or a PlacedBall"));
     }
   }
   d["balls"] = placed;
@@ -122,16 +124,21 @@ std::string scenario_json(const py::object& table, const py::iterable& balls, co
     const cueball::CushionSettings& k = settings->cushion;
     d["cushion"] = py::dict("model"_a = cueball::to_string(k.model), "restitution"_a = k.restitution,
                             "friction"_a = k.friction);
+    // Only the chosen model's and solver's keys: the reader refuses the others.
     if (k.model == cueball::CushionModel::mathavan_2010) {
       d["cushion"]["solver"] = cueball::to_string(k.solver);
-      d["cushion"]["paper_steps"] = k.paper_steps;
-      if (k.exact_tolerance != cueball::CushionSettings{}.exact_tolerance) d["cushion"]["exact_tolerance"] = k.exact_tolerance;
+      if (k.solver == cueball::CushionSolver::paper) d["cushion"]["paper_steps"] = k.paper_steps;
+      if (k.solver == cueball::CushionSolver::exact && k.exact_tolerance != cueball::CushionSettings{}.exact_tolerance)
+        d["cushion"]["exact_tolerance"] = k.exact_tolerance;
     }
     if (k.model == cueball::CushionModel::stronge_compliant) d["cushion"]["frequency_ratio"] = k.frequency_ratio;
     const cueball::BallCollisionParameters& c = settings->ball_collision;
     d["ball_collision"] = py::dict("model"_a = cueball::to_string(settings->ball_collision_model),
-                                   "restitution"_a = c.restitution, "friction"_a = c.friction,
-                                   "friction_excess"_a = c.friction_excess, "friction_decay"_a = c.friction_decay);
+                                   "restitution"_a = c.restitution, "friction"_a = c.friction);
+    if (settings->ball_collision_model == cueball::BallCollisionModel::coulomb_impulse) {
+      d["ball_collision"]["friction_excess"] = c.friction_excess;
+      d["ball_collision"]["friction_decay"] = c.friction_decay;
+    }
     d["max_events"] = settings->max_events;
   }
   if (cue) {
@@ -170,6 +177,49 @@ cueball::BallCollisionModel ball_collision_model_named(const std::string& name, 
   return *model;
 }
 
+// The arguments of one cushion model or solver, given with another (kept
+// and never used): refused as the scenario reader refuses their keys.
+void check_cushion_owners(const cueball::CushionSettings& k, bool solver, bool paper_steps, bool exact_tolerance,
+                          bool frequency_ratio) {
+  using cueball::CushionModel;
+  using cueball::CushionSolver;
+  const char* model = cueball::to_string(k.model);
+  only_for("cushion_solver", solver, "model", k.model == CushionModel::mathavan_2010, "mathavan_2010", model);
+  only_for("cushion_paper_steps", paper_steps, "model", k.model == CushionModel::mathavan_2010, "mathavan_2010", model);
+  only_for("cushion_exact_tolerance", exact_tolerance, "model", k.model == CushionModel::mathavan_2010, "mathavan_2010", model);
+  only_for("cushion_frequency_ratio", frequency_ratio, "model", k.model == CushionModel::stronge_compliant,
+           "stronge_compliant", model);
+  const char* chosen = cueball::to_string(k.solver);
+  only_for("cushion_paper_steps", paper_steps, "solver", k.solver == CushionSolver::paper, "paper", chosen);
+  only_for("cushion_exact_tolerance", exact_tolerance, "solver", k.solver == CushionSolver::exact, "exact", chosen);
+}
+
+// The settings checked as the scenario reader checks its JSON, each error
+// naming the argument: the cushion model's constants (at the default contact
+// height), the ball-ball model's (a constant of coulomb_impulse's
+// speed-dependent friction under mathavan_2014 included), max_events.
+void check_settings(const SimulationSettings& s) {
+  try {
+    (void)cueball::cushion_contact(s.parameters, s.cushion, cueball::default_cushion_height(s.parameters.ball));
+  } catch (const cueball::InvalidArgument& e) {
+    // Mathavan's own names for the cushion's constants.
+    if (e.field() == "e_e" || e.field() == "mu_w") {
+      const std::string field = e.field() == "e_e" ? "cushion_restitution" : "cushion_friction";
+      throw cueball::InvalidArgument(field, field + ": " + e.what());
+    }
+    throw;
+  }
+  try {
+    (void)cueball::ball_collision_contact(s.parameters, s.ball_collision_model, s.ball_collision);
+  } catch (const cueball::InvalidArgument& e) {
+    const std::string field = (e.field() == "mu_s" ? "parameters." : "ball_collision.") + e.field();
+    throw cueball::InvalidArgument(field, field + ": " + e.what());
+  }
+  if (s.max_events < 1 || s.max_events > cueball::kMaxEvents)
+    throw cueball::InvalidArgument("max_events", s.max_events, "[1, " + std::to_string(cueball::kMaxEvents) + "]",
+                                   "event limit");
+}
+
 }  // namespace
 
 void bind_scenario(py::module_& m) {
@@ -204,7 +254,9 @@ void bind_scenario(py::module_& m) {
       "cushion_frequency_ratio (Omega, (1, 1000]); the ball-ball model by name\n"
       "(ball_collision_model: 'coulomb_impulse', the default, or 'mathavan_2014') with its constants\n"
       "ball_collision (the model's own when not given); and max_events (SimulationError beyond it,\n"
-      "[1, 1e6]).");
+      "[1, 1e6]). Checked when made, as a scenario's JSON: an argument of another model or solver\n"
+      "than the one chosen (cushion_frequency_ratio with 'mathavan_2010', cushion_paper_steps with the\n"
+      "exact solver, ...) raises InvalidArgument naming it.");
   settings_cls
       .def(py::init([](const cueball::Parameters& p, const py::object& e, const py::object& mu,
                        const py::object& c, int max_events, const std::string& model, const std::string& solver,
@@ -213,16 +265,22 @@ void bind_scenario(py::module_& m) {
              SimulationSettings s;
              s.parameters = p;
              s.cushion = cueball::default_cushion_settings(cushion_model_named(model, "cushion_model"));
-             if (!e.is_none()) s.cushion.restitution = e.cast<double>();
-             if (!mu.is_none()) s.cushion.friction = mu.cast<double>();
+             if (!e.is_none()) s.cushion.restitution = cast_argument<double>(e, "cushion_restitution", "float or None");
+             if (!mu.is_none()) s.cushion.friction = cast_argument<double>(mu, "cushion_friction", "float or None");
              s.cushion.solver = cushion_solver(solver, "cushion_solver");
              s.cushion.paper_steps = paper_steps;
              s.cushion.exact_tolerance = exact_tolerance;
-             if (!omega.is_none()) s.cushion.frequency_ratio = omega.cast<double>();
+             if (!omega.is_none()) s.cushion.frequency_ratio = cast_argument<double>(omega, "cushion_frequency_ratio", "float or None");
              s.ball_collision_model = ball_collision_model_named(ball_model, "ball_collision_model");
              s.ball_collision = c.is_none() ? cueball::default_ball_collision(s.ball_collision_model)
-                                            : c.cast<cueball::BallCollisionParameters>();
+                                            : cast_argument<cueball::BallCollisionParameters>(
+                                                  c, "ball_collision", "BallCollisionParameters or None");
              s.max_events = max_events;
+             const SimulationSettings d;
+             check_cushion_owners(s.cushion, solver != cueball::to_string(d.cushion.solver),
+                                  paper_steps != d.cushion.paper_steps, exact_tolerance != d.cushion.exact_tolerance,
+                                  !omega.is_none());
+             check_settings(s);
              return s;
            }),
            py::arg_v("parameters", defaults.parameters, "pool_parameters()"),
@@ -248,18 +306,31 @@ void bind_scenario(py::module_& m) {
           [](SimulationSettings& s, double v) { s.cushion.friction = v; }, "mu_w (mathavan_2010) or mu (han_2005), >= 0")
       .def_property(
           "cushion_solver", [](const SimulationSettings& s) { return std::string(cueball::to_string(s.cushion.solver)); },
-          [](SimulationSettings& s, const std::string& name) { s.cushion.solver = cushion_solver(name, "cushion_solver"); },
+          [](SimulationSettings& s, const std::string& name) {
+            check_cushion_owners(s.cushion, true, false, false, false);
+            s.cushion.solver = cushion_solver(name, "cushion_solver");
+          },
           "mathavan_2010's solver: 'exact' or 'paper'")
       .def_property(
           "cushion_paper_steps", [](const SimulationSettings& s) { return s.cushion.paper_steps; },
-          [](SimulationSettings& s, int n) { s.cushion.paper_steps = n; }, "the paper solver's Euler steps, [1, 1e5]")
+          [](SimulationSettings& s, int n) {
+            check_cushion_owners(s.cushion, false, true, false, false);
+            s.cushion.paper_steps = n;
+          },
+          "the paper solver's Euler steps, [1, 1e5]")
       .def_property(
           "cushion_exact_tolerance", [](const SimulationSettings& s) { return s.cushion.exact_tolerance; },
-          [](SimulationSettings& s, double v) { s.cushion.exact_tolerance = v; },
+          [](SimulationSettings& s, double v) {
+            check_cushion_owners(s.cushion, false, false, true, false);
+            s.cushion.exact_tolerance = v;
+          },
           "the exact solver's local error per step, [1e-11, 1e-7] (1e-8 keeps the accuracy goal)")
       .def_property(
           "cushion_frequency_ratio", [](const SimulationSettings& s) { return s.cushion.frequency_ratio; },
-          [](SimulationSettings& s, double v) { s.cushion.frequency_ratio = v; },
+          [](SimulationSettings& s, double v) {
+            check_cushion_owners(s.cushion, false, false, false, true);
+            s.cushion.frequency_ratio = v;
+          },
           "stronge_compliant's Omega, tangential over normal natural frequency, (1, 1000]")
       .def_property(
           "ball_collision_model",

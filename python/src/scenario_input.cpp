@@ -39,6 +39,10 @@ class ScenarioObjects {
       throw cueball::InvalidArgument("scenario", "scenario holds more than " + std::to_string(kMaxValues) +
                                                      " values; a scenario's JSON text is at most " +
                                                      std::to_string(cueball::kMaxScenarioBytes) + " bytes");
+    if (py::isinstance<py::str>(value)) {
+      (void)utf8_argument(value, path);  // a lone surrogate: named here, not as malformed JSON
+      return py::reinterpret_borrow<py::object>(value);
+    }
     if (py::isinstance<py::float_>(value)) {
       const double v = value.cast<double>();
       if (!std::isfinite(v)) throw cueball::InvalidArgument(path, v, "any finite number");
@@ -69,7 +73,7 @@ class ScenarioObjects {
     if (dict) {
       py::dict d;
       for (const auto& item : py::reinterpret_borrow<py::dict>(value)) {
-        d[item.first] = normalise(item.second, path + "." + path_key(py::str(item.first).cast<std::string>()), depth + 1);
+        d[item.first] = normalise(item.second, path + "." + path_key(utf8_argument(py::str(item.first), path + " (a key)")), depth + 1);
       }
       out = std::move(d);
     } else {
@@ -122,15 +126,15 @@ ScenarioInput scenario_input(const py::object& scenario) {
   if (scenario.is_none()) return {};
   if (py::isinstance<cueball::Scenario>(scenario)) return {scenario.cast<std::shared_ptr<cueball::Scenario>>(), {}};
   if (py::isinstance<py::str>(scenario)) {
-    std::string text = scenario.cast<std::string>();
+    std::string text = utf8_argument(scenario, "scenario");
     const std::size_t first = text.find_first_not_of(" \t\r\n");
     return {nullptr, first != std::string::npos && text[first] == '{' ? text : read_scenario_file(scenario)};
   }
   if (py::isinstance(scenario, py::module_::import("os").attr("PathLike"))) return {nullptr, read_scenario_file(scenario)};
   if (py::isinstance<py::dict>(scenario)) return {nullptr, json_text(scenario, "scenario")};
-  throw py::type_error(
-      "scenario must be None (the built-in 9-ball break), a cueball.Scenario, a dict, JSON text, or a path (str or "
-      "os.PathLike)");
+  throw ArgumentTypeError("scenario", wrong_type_message(scenario, "scenario",
+                                                        "None (the built-in 9-ball break), a cueball.Scenario, a dict, "
+                                                        "JSON text, or a path (str or os.PathLike)"));
 }
 
 std::shared_ptr<const cueball::Scenario> load_scenario(const ScenarioInput& input) {

@@ -26,9 +26,10 @@ cueball::CueStrikeNoise noise_model(const py::object& noise, const Scenario& s) 
   if (py::isinstance<py::dict>(noise))
     return cueball::noise_from_json(json_text(noise, "noise"), s.settings.parameters.ball.radius, "noise");
   if (!py::isinstance<py::str>(noise))
-    throw py::type_error("noise must be 'tournament', 'none', 'scenario' or a dict of sigmas (speed, aim_deg, "
-                         "elevation_deg, side, height)");
-  const std::string name = noise.cast<std::string>();
+    throw ArgumentTypeError("noise", wrong_type_message(noise, "noise",
+                                                       "'tournament', 'none', 'scenario' or a dict of sigmas (speed, "
+                                                       "aim_deg, elevation_deg, side, height)"));
+  const std::string name = utf8_argument(noise, "noise");
   if (name == "tournament") return cueball::tournament_noise();
   if (name == "none") return {};
   if (name == "scenario") return s.noise;
@@ -52,7 +53,7 @@ std::vector<cueball::ShotKind> shot_kinds(const std::vector<std::string>& names)
 std::optional<int> pocket_index(const py::object& pocket, const Scenario& s) {
   if (pocket.is_none()) return std::nullopt;
   if (py::isinstance<py::str>(pocket)) {
-    const std::string name = pocket.cast<std::string>();
+    const std::string name = utf8_argument(pocket, "pocket");
     if (name == "any") return std::nullopt;
     std::string names;
     for (std::size_t k = 0; k < s.table.pockets.size(); ++k) {
@@ -62,7 +63,7 @@ std::optional<int> pocket_index(const py::object& pocket, const Scenario& s) {
     throw cueball::InvalidArgument("pocket", "pocket = '" + name + "' is not a pocket of " + s.table.name +
                                                  "; allowed: 'any'" + names + " or an index");
   }
-  return pocket.cast<int>();  // an index: plan_shot checks its range
+  return cast_argument<int>(pocket, "pocket", "a pocket's name, 'any' or an index");  // plan_shot checks the index's range
 }
 
 py::dict shot_dict(const Scenario& s, int cue_ball, const PlannedShot& shot, const cueball::CueStrikeNoise& noise) {

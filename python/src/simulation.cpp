@@ -172,11 +172,11 @@ py::dict states_dict(const Result& r, py::array_t<double> times) {
 // dtype), every value finite and >= 0.
 py::array_t<double> checked_times(const py::object& times) {
   if (py::isinstance<py::str>(times) || py::isinstance<py::bytes>(times))
-    throw py::type_error("times must be a number or a 1-D array of numbers (seconds), not a string");
+    throw ArgumentTypeError("times", wrong_type_message(times, "times", "a number or a 1-D array of numbers (seconds)"));
   py::array_t<double> a = py::array_t<double, py::array::c_style | py::array::forcecast>::ensure(times);
   if (!a) {
     PyErr_Clear();
-    throw py::type_error("times must be a number or a 1-D array of numbers (seconds)");
+    throw ArgumentTypeError("times", wrong_type_message(times, "times", "a number or a 1-D array of numbers (seconds)"));
   }
   if (a.ndim() > 1)
     throw cueball::InvalidArgument("times", "times has " + std::to_string(a.ndim()) +

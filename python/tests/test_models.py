@@ -94,6 +94,47 @@ class ModelsTest(unittest.TestCase):
         with self.assertRaisesRegex(ValueError, "cushion_solver"):
             s.cushion_solver = "euler"
 
+    def test_another_models_or_solvers_argument_is_refused_as_the_cli_refuses_its_key(self):
+        # Issue 24: these were kept (and never used), so Omega = 5000 was silently accepted.
+        cases = [
+            (dict(cushion_frequency_ratio=5000), "cushion_frequency_ratio",
+             "cushion_frequency_ratio applies to the model 'stronge_compliant' only, not to \"mathavan_2010\""),
+            (dict(cushion_model="han_2005", cushion_frequency_ratio=2), "cushion_frequency_ratio", "'stronge_compliant' only"),
+            (dict(cushion_paper_steps=100), "cushion_paper_steps",
+             "cushion_paper_steps applies to the solver 'paper' only, not to \"exact\""),
+            (dict(cushion_solver="paper", cushion_exact_tolerance=1e-7), "cushion_exact_tolerance",
+             "cushion_exact_tolerance applies to the solver 'exact' only, not to \"paper\""),
+            (dict(cushion_model="han_2005", cushion_solver="paper"), "cushion_solver", "'mathavan_2010' only"),
+            (dict(ball_collision_model="mathavan_2014",
+                  ball_collision=cueball.BallCollisionParameters(0.89, 0.05, 0.0, 1.0)), "ball_collision.friction_decay",
+             "friction_decay = 1 is outside the allowed range 0"),
+            # The chosen model's own values are checked when the settings are made, as the reader checks them.
+            (dict(cushion_model="stronge_compliant", cushion_frequency_ratio=5000), "cushion_frequency_ratio", "(1, 1000]"),
+            (dict(max_events=0), "max_events", "[1, 1000000]"),
+        ]
+        for kwargs, field, message in cases:
+            with self.subTest(**{k: str(v) for k, v in kwargs.items()}):
+                with self.assertRaises(cueball.InvalidArgument) as caught:
+                    cueball.SimulationSettings(**kwargs)
+                self.assertEqual(caught.exception.field, field)
+                self.assertIn(message, str(caught.exception))
+        s = cueball.SimulationSettings()
+        with self.assertRaises(cueball.InvalidArgument) as caught:
+            s.cushion_frequency_ratio = 2.5
+        self.assertEqual(caught.exception.field, "cushion_frequency_ratio")
+        self.assertEqual(s.cushion_frequency_ratio, 1.8)
+        # Each model's and solver's own arguments are taken, and written to the scenario as its keys.
+        paper = cueball.SimulationSettings(cushion_solver="paper", cushion_paper_steps=100)
+        self.assertEqual(paper.cushion_paper_steps, 100)
+        self.assertEqual(json.loads(cut_scenario(paper).to_json())["cushion"]["paper_steps"], 100)
+        m14 = json.loads(cut_scenario(cueball.SimulationSettings(ball_collision_model="mathavan_2014")).to_json())
+        self.assertNotIn("friction_decay", m14["ball_collision"])
+        # cushion_rebound as the CLI's cushion --model han_2005 --frequency-ratio 2.
+        with self.assertRaises(cueball.InvalidArgument) as caught:
+            cueball.cushion_rebound(1.0, 0.5, model="han_2005", frequency_ratio=2)
+        self.assertEqual(caught.exception.field, "frequency_ratio")
+        self.assertIn("applies to the model 'stronge_compliant' only", str(caught.exception))
+
 
 if __name__ == "__main__":
     unittest.main()

@@ -1,8 +1,12 @@
 #include "cueball/core/errors.hpp"
 
+#include <cctype>
+#include <charconv>
 #include <cmath>
+#include <cstdlib>
 #include <cstdio>
 #include <sstream>
+#include <vector>
 
 namespace cueball {
 
@@ -11,6 +15,53 @@ std::string format_number(double v) {
   os.precision(10);
   os << v;
   return os.str();
+}
+
+namespace {
+
+// The shortest text that reads back as v.
+std::string round_trip(double v) {
+  char buf[32];
+  const std::to_chars_result r = std::to_chars(buf, buf + sizeof buf, v);
+  return std::string(buf, r.ptr);
+}
+
+bool reads_as_another(double value, const std::string& shown, double bound) {
+  return bound != value && format_number(bound) == shown;
+}
+
+// Every number written in `text` (the bounds of an "allowed" text such as
+// "[0, 0.5 R] = [0, 0.0142875] m"), in order.
+std::vector<double> numbers_in(std::string_view text) {
+  std::vector<double> out;
+  const std::string s(text);
+  const auto digit = [&](std::size_t k) { return k < s.size() && std::isdigit(static_cast<unsigned char>(s[k])) != 0; };
+  for (std::size_t i = 0; i < s.size(); ++i) {
+    const bool starts = digit(i) || ((s[i] == '-' || s[i] == '.') && digit(i + 1)) ||
+                        (s[i] == '-' && i + 1 < s.size() && s[i + 1] == '.' && digit(i + 2));
+    const bool inside_word = i > 0 && (std::isalnum(static_cast<unsigned char>(s[i - 1])) != 0 || s[i - 1] == '_' || s[i - 1] == '.');
+    if (!starts || inside_word) continue;
+    char* end = nullptr;
+    const double v = std::strtod(s.c_str() + i, &end);
+    if (end == s.c_str() + i) continue;
+    out.push_back(v);
+    i = static_cast<std::size_t>(end - s.c_str()) - 1;
+  }
+  return out;
+}
+
+std::string format_beside(double value, const std::vector<double>& bounds) {
+  const std::string shown = format_number(value);
+  if (!std::isfinite(value)) return shown;
+  for (double b : bounds)
+    if (reads_as_another(value, shown, b)) return round_trip(value);
+  return shown;
+}
+
+}  // namespace
+
+std::string format_number_beside(double value, std::initializer_list<double> bounds) {
+  return format_beside(value, std::vector<double>(bounds));
 }
 
 namespace {
@@ -71,7 +122,7 @@ bool append_escaped(std::string& out, std::string_view text, bool quotes, std::s
 
 std::string range_message(const std::string& field, double value, const std::string& allowed,
                           const std::string& meaning) {
-  std::string m = field + " = " + format_number(value) + " is " +
+  std::string m = field + " = " + format_beside(value, numbers_in(allowed)) + " is " +
                   (std::isfinite(value) ? "outside the allowed range " : "not a finite number; allowed: ") + allowed;
   if (!meaning.empty()) m += " (" + meaning + ")";
   return m;

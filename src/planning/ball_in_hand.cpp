@@ -47,6 +47,13 @@ BallInHandResult plan_ball_in_hand(const Scenario& table_state, const BallInHand
     };
     bounds("x_min", r.x_min, "x_max", r.x_max);
     bounds("y_min", r.y_min, "y_max", r.y_max);
+    // A region wholly off the playing surface is bad input, not a shot without an answer.
+    const Table& t = table_state.table;
+    if (r.x_max <= 0.0 || r.x_min >= t.length || r.y_max <= 0.0 || r.y_min >= t.width)
+      throw InvalidArgument("region", "region [" + format_number(r.x_min) + ", " + format_number(r.x_max) + "] x [" +
+                                          format_number(r.y_min) + ", " + format_number(r.y_max) +
+                                          "] m lies wholly off the playing surface; allowed: a region overlapping [0, " +
+                                          format_number(t.length) + "] x [0, " + format_number(t.width) + "] m");
   }
   const Scenario& s = table_state;
   const int cue_id = q.position.shot.cue_ball ? *q.position.shot.cue_ball : s.cue ? s.cue->ball : 0;

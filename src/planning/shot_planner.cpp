@@ -821,9 +821,11 @@ SearchedShots search_shots(const Scenario& table_state, const PlanRequest& q, co
   for (const SimulationBall& b : s.balls) ids += (ids.empty() ? "" : ", ") + std::to_string(b.id);
   const int cue_id = q.cue_ball ? *q.cue_ball : s.cue ? s.cue->ball : 0;
   const std::size_t cue = index_of(s.balls, cue_id);
-  if (cue == s.balls.size())
-    throw InvalidArgument("cue_ball", "cue_ball = " + std::to_string(cue_id) +
-                                          " is not the id of a ball on the table; allowed: " + ids);
+  if (cue == s.balls.size()) {  // the request's cue_ball, else the scenario's cue.ball (0 without a cue)
+    const std::string f = q.cue_ball ? "cue_ball" : "scenario.cue.ball";
+    throw InvalidArgument(f, f + " = " + std::to_string(cue_id) + (q.cue_ball || s.cue ? "" : " (the default: no cue given)") +
+                                 " is not the id of a ball on the table; allowed: " + ids);
+  }
   const std::size_t target = index_of(s.balls, q.target);
   if (target == s.balls.size())
     throw InvalidArgument("target", "target = " + std::to_string(q.target) +

@@ -151,6 +151,14 @@ CushionSettings read_cushion(const Reader& r) {
       throw InvalidArgument(r.field("solver"), r.field("solver") + " = " + quote_input(solver) +
                                                    " is not known; allowed: exact, paper");
     c.solver = *chosen;
+    // Each solver's own key, refused with the other (it would be ignored).
+    const auto only_with = [&](const char* key, CushionSolver owner) {
+      if (c.solver != owner && r.has(key))
+        throw InvalidArgument(r.field(key), r.field(key) + " applies to the solver \"" + to_string(owner) +
+                                                "\" only, not to " + quote_input(solver));
+    };
+    only_with("paper_steps", CushionSolver::paper);
+    only_with("exact_tolerance", CushionSolver::exact);
     c.paper_steps = r.integer("paper_steps", c.paper_steps, 1, kMaxCushionPaperSteps, "Euler steps per impact");
     c.exact_tolerance =
         r.number("exact_tolerance", c.exact_tolerance, kMinExactTolerance, kMaxExactTolerance, "the exact solver's local error per step");
@@ -392,7 +400,7 @@ Json scenario_json(const Scenario& s) {
   if (cushion.model == CushionModel::mathavan_2010) {
     j["cushion"]["solver"] = to_string(cushion.solver);
     if (cushion.solver == CushionSolver::paper) j["cushion"]["paper_steps"] = cushion.paper_steps;
-    if (cushion.exact_tolerance != CushionSettings{}.exact_tolerance) {
+    if (cushion.solver == CushionSolver::exact && cushion.exact_tolerance != CushionSettings{}.exact_tolerance) {
       j["cushion"]["exact_tolerance"] = cushion.exact_tolerance;
     }
   }
@@ -400,9 +408,11 @@ Json scenario_json(const Scenario& s) {
   const BallCollisionParameters& b = s.settings.ball_collision;
   j["ball_collision"] = {{"model", to_string(s.settings.ball_collision_model)},
                          {"restitution", b.restitution},
-                         {"friction", b.friction},
-                         {"friction_excess", b.friction_excess},
-                         {"friction_decay", b.friction_decay}};
+                         {"friction", b.friction}};
+  if (s.settings.ball_collision_model == BallCollisionModel::coulomb_impulse) {
+    j["ball_collision"]["friction_excess"] = b.friction_excess;
+    j["ball_collision"]["friction_decay"] = b.friction_decay;
+  }
   j["max_events"] = s.settings.max_events;
   Json balls = Json::array();
   for (const SimulationBall& ball : s.balls) {
@@ -477,6 +487,12 @@ Scenario scenario_from_json(std::string_view json_text) {
     if (!model)
       throw InvalidArgument(c.field("model"), c.field("model") + " = " + quote_input(name) +
                                                   " is not known; allowed: " + ball_collision_model_names(""));
+    // coulomb_impulse's speed-dependent friction: mathavan_2014's is constant.
+    for (const char* key : {"friction_excess", "friction_decay"})
+      if (*model != BallCollisionModel::coulomb_impulse && c.has(key))
+        throw InvalidArgument(c.field(key), c.field(key) + " applies to the model \"" +
+                                                to_string(BallCollisionModel::coulomb_impulse) + "\" only, not to " +
+                                                quote_input(name));
     s.settings.ball_collision_model = *model;
     s.settings.ball_collision = default_ball_collision(*model);  // the model's own constants unless given
     BallCollisionParameters& b = s.settings.ball_collision;

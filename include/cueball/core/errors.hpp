@@ -7,6 +7,7 @@
 
 #include <stdexcept>
 #include <cstddef>
+#include <initializer_list>
 #include <string>
 #include <string_view>
 
@@ -40,6 +41,14 @@ class InfeasibleShot : public std::domain_error {
 
 /// A number as error messages show it (10 significant digits).
 std::string format_number(double value);
+
+/// `value` as format_number() shows it, unless those 10 digits would read as
+/// one of `bounds` that the value is not (0.50000000001 beside the bound
+/// 0.5): then as many digits as read back as the value (the shortest
+/// round-trip form), so that a value beyond a bound never looks equal to it.
+/// InvalidArgument's range messages show their value so, beside every number
+/// of their `allowed` text.
+std::string format_number_beside(double value, std::initializer_list<double> bounds);
 
 /// Longest user string an error message echoes, in characters (UTF-8 code
 /// points); longer ones are cut and end in "...".

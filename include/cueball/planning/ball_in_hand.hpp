@@ -77,7 +77,8 @@ struct BallInHandResult {
 
 /// Places the cue ball and plans the shot (header comment). Throws what
 /// plan_shot_for_position() throws; InvalidArgument("region") for a region
-/// with a non-finite bound or x_min >= x_max or y_min >= y_max;
+/// with a non-finite bound or x_min >= x_max or y_min >= y_max, or wholly
+/// off the playing surface [0, length] x [0, width];
 /// NoFeasibleShot when no spot gives a feasible shot. plan.plan.simulations
 /// counts every engine run, step 2's included; plan.plan.seconds the whole
 /// placement.

@@ -10,6 +10,8 @@
 //         (default: the cloth preset that goes with the table, and the table's ball)
 //     "cushion": { "restitution": e_e, "friction": mu_w },      (Mathavan model; default 0.98, 0.14)
 //     "ball_collision": { "restitution": e, "friction": mu, "friction_excess": .., "friction_decay": s/m },
+//         (a key of another model or solver than the one chosen, e.g. "friction_decay" under
+//          "mathavan_2014" or "paper_steps" with the exact solver, is refused naming the owner)
 //     "rack": { "type": "nine_ball" | "eight_ball" | "snooker", "gap_sigma": m, "seed": n },
 //     "balls": [ { "id": n, "name": "..", "position": [x, y],
 //                  "velocity": [vx, vy], "angular_velocity": [wx, wy, wz] } ],

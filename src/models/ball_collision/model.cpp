@@ -38,6 +38,9 @@ BallCollisionContact ball_collision_contact(const Parameters& table, BallCollisi
   if (model == BallCollisionModel::mathavan_2014) {
     if (contact.friction_excess != 0.0)
       throw InvalidArgument("friction_excess", contact.friction_excess, "0 (mathavan_2014's friction is constant)");
+    if (contact.friction_decay != 0.0)
+      throw InvalidArgument("friction_decay", contact.friction_decay,
+                            "0 (mathavan_2014's friction is constant; the decay is coulomb_impulse's)");
     c.mathavan = {contact.restitution, contact.friction, table.cloth.sliding_friction};
     require_in_range("friction", c.mathavan.ball_friction, kMathavan2014BallFrictionRange.min,
                      kMathavan2014BallFrictionRange.max, "mathavan_2014's ball-ball friction");

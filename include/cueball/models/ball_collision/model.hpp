@@ -62,8 +62,9 @@ struct BallCollisionContact {
 };
 
 /// Validates `contact` (validate(BallCollisionParameters)) and, for
-/// mathavan_2014, that its friction is constant (friction_excess = 0,
-/// InvalidArgument "friction_excess") and within the model's range
+/// mathavan_2014, that its friction is constant (friction_excess = 0 and
+/// friction_decay = 0, InvalidArgument "friction_excess" or
+/// "friction_decay") and within the model's range
 /// ("friction"), with the cloth's mu_s as the friction at the table
 /// contacts ("mu_s" when above the model's 0.5).
 BallCollisionContact ball_collision_contact(const Parameters& table, BallCollisionModel model,

@@ -102,6 +102,11 @@ TEST(BallCollisionModel, ScenarioChoosesTheModelByName) {
                        "\"mathavan_2014\""),
             std::string::npos)
       << decay;
+  // A 0, as results written before the check carry, is accepted: they replay.
+  EXPECT_EQ(scenario_from_json(R"({"ball_collision": {"model": "mathavan_2014", "friction_excess": 0, "friction_decay": 0},
+        "balls": [{"id": 0, "position": [1, 0.6]}]})")
+                .settings.ball_collision_model,
+            BallCollisionModel::mathavan_2014);
   // The C++ API alike, and the writer leaves both keys out under mathavan_2014 (it reads back).
   BallCollisionParameters decaying = default_ball_collision(BallCollisionModel::mathavan_2014);
   decaying.friction_decay = 5.0;

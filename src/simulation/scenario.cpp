@@ -488,8 +488,11 @@ Scenario scenario_from_json(std::string_view json_text) {
       throw InvalidArgument(c.field("model"), c.field("model") + " = " + quote_input(name) +
                                                   " is not known; allowed: " + ball_collision_model_names(""));
     // coulomb_impulse's speed-dependent friction: mathavan_2014's is constant.
+    // A 0 changes nothing and is accepted: results written before this check
+    // carry both keys at 0 under every model, and replay.
     for (const char* key : {"friction_excess", "friction_decay"})
-      if (*model != BallCollisionModel::coulomb_impulse && c.has(key))
+      if (*model != BallCollisionModel::coulomb_impulse && c.has(key) &&
+          c.number(key, 0.0, 0.0, 100.0, "coulomb_impulse's speed-dependent friction") != 0.0)
         throw InvalidArgument(c.field(key), c.field(key) + " applies to the model \"" +
                                                 to_string(BallCollisionModel::coulomb_impulse) + "\" only, not to " +
                                                 quote_input(name));

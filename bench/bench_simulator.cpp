@@ -13,6 +13,7 @@
 #include <numbers>
 #include <vector>
 
+#include "cueball/io/scenario_json.hpp"
 #include "cueball/simulation/batch.hpp"
 #include "cueball/simulation/scenario.hpp"
 

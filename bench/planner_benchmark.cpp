@@ -67,6 +67,7 @@
 
 #include <time.h>  // clock_gettime(CLOCK_THREAD_CPUTIME_ID): the calling thread's CPU time
 
+#include "cueball/io/scenario_json.hpp"
 #include "cueball/simulation/batch.hpp"
 #include "cueball/core/errors.hpp"
 #include "cueball/core/random.hpp"

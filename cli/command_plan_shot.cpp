@@ -9,6 +9,8 @@
 #include <vector>
 
 #include "common.hpp"
+#include "cueball/io/scenario_json.hpp"
+#include "cueball/io/result_json.hpp"
 #include "cueball/planning/ball_in_hand.hpp"
 #include "cueball/core/errors.hpp"
 #include "cueball/planning/position_play.hpp"

@@ -11,6 +11,8 @@
 #include <vector>
 
 #include "common.hpp"
+#include "cueball/io/scenario_json.hpp"
+#include "cueball/io/result_json.hpp"
 #include "cueball/simulation/batch.hpp"
 #include "cueball/core/errors.hpp"
 #include "cueball/simulation/scenario.hpp"

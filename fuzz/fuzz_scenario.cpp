@@ -21,6 +21,8 @@
 #include <string_view>
 #include <vector>
 
+#include "cueball/io/scenario_json.hpp"
+#include "cueball/io/result_json.hpp"
 #include "cueball/core/errors.hpp"
 #include "cueball/simulation/scenario.hpp"
 #include "cueball/simulation/simulator.hpp"

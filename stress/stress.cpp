@@ -73,6 +73,7 @@
 #include <thread>
 #include <vector>
 
+#include "cueball/io/scenario_json.hpp"
 #include "cueball/physics/cloth_motion.hpp"
 #include "cueball/physics/cue_strike.hpp"
 #include "cueball/core/errors.hpp"

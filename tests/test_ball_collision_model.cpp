@@ -2,6 +2,7 @@
 // names, each model's own constants, validation under the simulation's field
 // names, the dispatch against each model's kernel, a scenario's
 // "ball_collision" object, and the simulator under each model.
+#include "cueball/io/scenario_json.hpp"
 #include "cueball/models/ball_collision/model.hpp"
 
 #include <gtest/gtest.h>

@@ -3,6 +3,7 @@
 // workers, memory that does not grow with the number of shots, and the
 // reflection of noisy strikes at their limits. (The first batch tests live in
 // tests/test_simulator.cpp.)
+#include "cueball/io/scenario_json.hpp"
 #include "cueball/simulation/batch.hpp"
 
 #include <gtest/gtest.h>

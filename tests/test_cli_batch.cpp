@@ -16,6 +16,7 @@
 
 #include "cli_runner.hpp"
 #include "temp_dir.hpp"
+#include "cueball/io/scenario_json.hpp"
 #include "cueball/simulation/batch.hpp"
 #include "cueball/simulation/scenario.hpp"
 #include "cueball/io/table_json.hpp"

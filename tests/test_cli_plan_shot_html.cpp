@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "cli_runner.hpp"
+#include "cueball/io/scenario_json.hpp"
 #include "cueball/simulation/scenario.hpp"
 #include "plan_shot_scenarios.hpp"
 #include "temp_dir.hpp"

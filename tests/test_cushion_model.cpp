@@ -2,6 +2,7 @@
 // model's own constants, validation under the simulation's field names, the
 // dispatch against each model's kernel, a scenario's "cushion" object, and
 // the simulator's rebound under each model.
+#include "cueball/io/scenario_json.hpp"
 #include "cueball/models/cushion/model.hpp"
 
 #include <gtest/gtest.h>

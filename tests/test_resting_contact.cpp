@@ -3,6 +3,7 @@
 // energy never rises, the swerve along a rail kept), then the simulator on
 // the shots that used to pass into a cushion or another ball, or never end
 // (issue 11), checked densely between events.
+#include "cueball/io/scenario_json.hpp"
 #include "cueball/physics/resting_contact.hpp"
 
 #include <gtest/gtest.h>

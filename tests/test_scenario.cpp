@@ -12,6 +12,8 @@
 #include <string>
 #include <vector>
 
+#include "cueball/io/scenario_json.hpp"
+#include "cueball/io/result_json.hpp"
 #include "cueball/core/errors.hpp"
 #include "cueball/io/table_json.hpp"
 #include "cueball/simulation/scenario.hpp"

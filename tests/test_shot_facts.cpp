@@ -1,6 +1,8 @@
 // ShotFacts (src/simulation/shot_facts.cpp): each fact built from a crafted
 // shot whose answer follows from its geometry, and every fact of a 9-ball
 // break checked against the simulator's own events and trajectories.
+#include "cueball/io/scenario_json.hpp"
+#include "cueball/io/result_json.hpp"
 #include "cueball/simulation/shot_facts.hpp"
 
 #include <gtest/gtest.h>

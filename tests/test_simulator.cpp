@@ -1,6 +1,8 @@
 // Tests of the event-driven table simulator (src/simulation/simulator.cpp) and of
 // scenarios (src/simulation/scenario.cpp): the guarantees of issue 4, each checked on the
 // exact trajectories the result carries.
+#include "cueball/io/scenario_json.hpp"
+#include "cueball/io/result_json.hpp"
 #include "cueball/simulation/simulator.hpp"
 
 #include <gtest/gtest.h>

@@ -9,6 +9,7 @@
 #include <optional>
 #include <string>
 #include <vector>
+#include "cueball/io/scenario_json.hpp"
 #include "cueball/core/errors.hpp"
 #include "cueball/io/table_json.hpp"
 #include "cueball/table/rack.hpp"

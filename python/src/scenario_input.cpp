@@ -6,6 +6,7 @@
 #include <optional>
 #include <string>
 #include <vector>
+#include "cueball/io/scenario_json.hpp"
 #include "cueball/core/errors.hpp"
 #include "cueball/simulation/scenario.hpp"
 

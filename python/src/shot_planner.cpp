@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "bindings.hpp"
+#include "cueball/io/scenario_json.hpp"
 #include "cueball/planning/ball_in_hand.hpp"
 #include "cueball/core/errors.hpp"
 #include "cueball/planning/position_play.hpp"

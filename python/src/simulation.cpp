@@ -16,6 +16,7 @@
 #include <utility>
 #include <vector>
 
+#include "cueball/io/result_json.hpp"
 #include "cueball/physics/cloth_motion.hpp"
 #include "cueball/core/errors.hpp"
 #include "cueball/simulation/scenario.hpp"

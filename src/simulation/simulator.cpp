@@ -707,4 +707,10 @@ SimulationResult simulate_unchecked(const Table& table, const std::vector<Simula
   return Simulation(table, balls, settings).run();
 }
 
+const SimulationBall* find_ball(const std::vector<SimulationBall>& balls, int id) {
+  for (const SimulationBall& b : balls)
+    if (b.id == id) return &b;
+  return nullptr;
+}
+
 }  // namespace cueball

@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "cueball/io/scenario_json.hpp"
 #include "cueball/simulation/scenario.hpp"
 
 namespace cueball::test {

@@ -120,6 +120,9 @@ class SimulationError : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
+/// The ball with id `id`, or nullptr.
+const SimulationBall* find_ball(const std::vector<SimulationBall>& balls, int id);
+
 /// Throws InvalidArgument for bad input: parameters out of range, duplicate
 /// ids, a ball off the table or overlapping a cushion, two balls overlapping
 /// (by more than 1e-9 m), non-finite or implausible velocities and spins.

@@ -67,6 +67,7 @@
 
 #include <time.h>  // clock_gettime(CLOCK_THREAD_CPUTIME_ID): the calling thread's CPU time
 
+#include "tool_support.hpp"
 #include "cueball/io/scenario_json.hpp"
 #include "cueball/simulation/batch.hpp"
 #include "cueball/core/errors.hpp"
@@ -83,6 +84,9 @@
 namespace {
 
 using namespace cueball;
+using cueball::tools::fmt;
+using cueball::tools::quoted;
+constexpr tools::Flags kFlags{"cueball-planner-benchmark"};
 
 constexpr double kPi = std::numbers::pi;
 constexpr double kDeg = kPi / 180.0;
@@ -106,21 +110,6 @@ constexpr int kScreenShots = 200;
 constexpr double kInHandBack = 0.3;
 // Seed streams: layout seed x -> planner seed x, screen seed mix(x, 1), measurement seed mix(x, 2).
 constexpr std::uint64_t kScreenStream = 1, kMeasureStream = 2, kBreakStream = 3;
-
-// printf into a std::string of any length (checked by the compiler like printf).
-__attribute__((format(printf, 1, 2))) std::string fmt(const char* format, ...) {
-  va_list args;
-  va_start(args, format);
-  va_list again;
-  va_copy(again, args);
-  const int n = std::vsnprintf(nullptr, 0, format, args);
-  va_end(args);
-  std::string out(static_cast<std::size_t>(std::max(n, 0)) + 1, '\0');
-  std::vsnprintf(out.data(), out.size(), format, again);
-  va_end(again);
-  out.resize(static_cast<std::size_t>(std::max(n, 0)));
-  return out;
-}
 
 double seconds_since(std::chrono::steady_clock::time_point t) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
@@ -705,30 +694,7 @@ std::string num(double x) {
   if (!std::isfinite(x)) return "null";
   return fmt("%.6g", x);
 }
-std::string quoted(const std::string& s) {
-  std::string out = "\"";
-  for (const char ch : s) {
-    if (ch == '"' || ch == '\\') out += '\\';
-    if (static_cast<unsigned char>(ch) >= 0x20) out += ch;
-  }
-  return out + "\"";
-}
-
 // ------------------------------------------------------------------ flags
-
-[[noreturn]] void bad_flag(const std::string& flag, const std::string& value, const std::string& allowed) {
-  std::fprintf(stderr, "cueball-planner-benchmark: error: %s = '%s' is not allowed; allowed: %s\n", flag.c_str(), value.c_str(),
-               allowed.c_str());
-  std::exit(2);
-}
-
-long long integer_flag(const std::string& flag, const std::string& value, long long lo, long long hi) {
-  const std::string range = "an integer in [" + std::to_string(lo) + ", " + std::to_string(hi) + "]";
-  if (value.empty() || value.find_first_not_of("0123456789") != std::string::npos || value.size() > 18) bad_flag(flag, value, range);
-  const long long x = std::stoll(value);
-  if (x < lo || x > hi) bad_flag(flag, value, range);
-  return x;
-}
 
 struct Options {
   int layouts = 1000;
@@ -783,7 +749,7 @@ std::vector<ShotKind> kinds_flag(const std::string& flag, const std::string& val
   while (from <= value.size()) {
     const std::size_t comma = std::min(value.find(',', from), value.size());
     const std::optional<ShotKind> kind = shot_kind_from_string(value.substr(from, comma - from));
-    if (!kind) bad_flag(flag, value, "a comma-separated list of " + shot_kind_names(""));
+    if (!kind) kFlags.bad(flag, value, "a comma-separated list of " + shot_kind_names(""));
     kinds.push_back(*kind);
     from = comma + 1;
   }
@@ -802,43 +768,43 @@ Options parse(int argc, char** argv) {
                                         "--position", "--kinds", "--fallback-kinds", "--threads", "--json", "--layouts-out",
                                         "--in-hand"};
     if (std::find_if(std::begin(known), std::end(known), [&](const char* k) { return flag == k; }) == std::end(known))
-      bad_flag("flag", flag,
+      kFlags.bad("flag", flag,
                "--suite, --layouts, --racks, --repeats, --seed, --planner-simulations, --position, --kinds, "
                "--fallback-kinds, --threads, "
                "--json, --layouts-out, --in-hand, --help");
-    if (i + 1 >= argc) bad_flag(flag, "", "a value after the flag");
+    if (i + 1 >= argc) kFlags.bad(flag, "", "a value after the flag");
     const std::string value = argv[++i];
     if (flag == "--suite") {
-      if (value != "single" && value != "runout" && value != "all") bad_flag(flag, value, "single, runout, all");
+      if (value != "single" && value != "runout" && value != "all") kFlags.bad(flag, value, "single, runout, all");
       o.suite = value;
       o.single = value != "runout";
       o.runout = value != "single";
     } else if (flag == "--layouts") {
-      o.layouts = static_cast<int>(integer_flag(flag, value, 1, 1000000));
+      o.layouts = static_cast<int>(kFlags.integer(flag, value, 1, 1000000));
     } else if (flag == "--racks") {
-      o.racks = static_cast<int>(integer_flag(flag, value, 1, 1000000));
+      o.racks = static_cast<int>(kFlags.integer(flag, value, 1, 1000000));
     } else if (flag == "--repeats") {
-      o.repeats = static_cast<int>(integer_flag(flag, value, 10, 1000000));
+      o.repeats = static_cast<int>(kFlags.integer(flag, value, 10, 1000000));
     } else if (flag == "--seed") {
-      o.seed = static_cast<std::uint64_t>(integer_flag(flag, value, 0, 1000000000000000000LL));
+      o.seed = static_cast<std::uint64_t>(kFlags.integer(flag, value, 0, 1000000000000000000LL));
     } else if (flag == "--kinds") {
       o.kinds = kinds_flag(flag, value);
     } else if (flag == "--fallback-kinds") {
       o.fallback_kinds = kinds_flag(flag, value);
     } else if (flag == "--in-hand") {
-      if (value != "rule" && value != "planner") bad_flag(flag, value, "rule, planner");
+      if (value != "rule" && value != "planner") kFlags.bad(flag, value, "rule, planner");
       o.in_hand_planner = value == "planner";
     } else if (flag == "--position") {
-      o.position_simulations = static_cast<int>(integer_flag(flag, value, kMinPlanSimulations, kMaxPlanSimulations));
+      o.position_simulations = static_cast<int>(kFlags.integer(flag, value, kMinPlanSimulations, kMaxPlanSimulations));
     } else if (flag == "--planner-simulations") {
-      o.planner_simulations = static_cast<int>(integer_flag(flag, value, kMinPlanSimulations, kMaxPlanSimulations));
+      o.planner_simulations = static_cast<int>(kFlags.integer(flag, value, kMinPlanSimulations, kMaxPlanSimulations));
     } else if (flag == "--threads") {
-      o.threads = static_cast<int>(integer_flag(flag, value, 1, 256));
+      o.threads = static_cast<int>(kFlags.integer(flag, value, 1, 256));
     } else if (flag == "--layouts-out") {
-      if (value.empty()) bad_flag(flag, value, "a folder path");
+      if (value.empty()) kFlags.bad(flag, value, "a folder path");
       o.layouts_out = value;
     } else {
-      if (value.empty()) bad_flag(flag, value, "a file path");
+      if (value.empty()) kFlags.bad(flag, value, "a file path");
       o.json = value;
     }
   }
@@ -900,7 +866,7 @@ int run(const Options& o) {
         int others = 0;
         const std::string path = o.layouts_out + "/layout-" + std::to_string(seed) + ".json";
         std::ofstream out(path);
-        if (!out) bad_flag("--layouts-out", o.layouts_out, "an existing, writable folder");
+        if (!out) kFlags.bad("--layouts-out", o.layouts_out, "an existing, writable folder");
         Scenario layout = single_layout(st, seed, others);
         layout.cue.reset();  // the table state only: the planner chooses the strike
         out << scenario_to_json(layout) << "\n";
@@ -1048,7 +1014,7 @@ int run(const Options& o) {
   json += "\n}\n";
   if (!o.json.empty()) {
     std::ofstream out(o.json);
-    if (!out) bad_flag("--json", o.json, "a writable file path");
+    if (!out) kFlags.bad("--json", o.json, "a writable file path");
     out << json;
   }
   return 0;

@@ -5,7 +5,7 @@
 #      JSON reader and writer, may read every layer and no layer reads io);
 #   2. nlohmann-json is included only in src/io/ (and by the tests, which
 #      check JSON);
-#   3. cli/, python/, bench/, stress/ and fuzz/ include public headers only
+#   3. cli/, python/, bench/, stress/, fuzz/ and tools/ include public headers only
 #      (no private "<layer>/..." header of src/, no src/ include directory).
 # The forwarding headers at include/cueball/*.hpp (old paths, kept for one
 # release) are exempt. KNOWN lists what is still to move, each with where it
@@ -88,7 +88,7 @@ foreach(root include/cueball src)
 endforeach()
 
 # 3: what is built on the library.
-foreach(dir cli python/src bench stress fuzz)
+foreach(dir cli python/src bench stress fuzz tools)
   file(GLOB_RECURSE files RELATIVE ${SOURCE_DIR} ${SOURCE_DIR}/${dir}/*.hpp ${SOURCE_DIR}/${dir}/*.cpp)
   foreach(file IN LISTS files)
     file(STRINGS ${SOURCE_DIR}/${file} includes REGEX "^[ \t]*#[ \t]*include[ \t]*[<\"]")

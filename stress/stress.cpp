@@ -73,6 +73,7 @@
 #include <thread>
 #include <vector>
 
+#include "tool_support.hpp"
 #include "cueball/io/scenario_json.hpp"
 #include "cueball/physics/cloth_motion.hpp"
 #include "cueball/physics/cue_strike.hpp"
@@ -90,6 +91,10 @@
 namespace {
 
 using namespace cueball;
+using cueball::tools::fmt;
+using cueball::tools::num;
+using cueball::tools::quoted;
+constexpr tools::Flags kFlags{"cueball-stress"};
 
 constexpr double kPi = std::numbers::pi;
 constexpr double kDeg = kPi / 180.0;
@@ -101,16 +106,6 @@ constexpr int kMaxEvents = 200000;        // the simulator's limit in this tool
 constexpr int kInteriorPoints = 7;        // checked points inside each interval between events
 constexpr double kNearEvent = 1e-9;       // s: "just after" and "just before" an event
 constexpr double kOffTableBox = 0.1;      // m: outside [-0.1, L + 0.1] x [-0.1, W + 0.1] is always off
-
-// printf into a std::string (checked by the compiler like printf).
-__attribute__((format(printf, 1, 2))) std::string fmt(const char* format, ...) {
-  char buf[1024];
-  va_list args;
-  va_start(args, format);
-  std::vsnprintf(buf, sizeof buf, format, args);
-  va_end(args);
-  return buf;
-}
 
 // ------------------------------------------------------------------ geometry
 
@@ -1088,18 +1083,8 @@ struct ClassStats {
 
 // ------------------------------------------------------------------ scenario JSON out
 
-std::string num(double x) { return fmt("%.17g", x); }
 std::string vec_json(Vec2 v) { return "[" + num(v.x) + ", " + num(v.y) + "]"; }
 std::string vec_json(Vec3 v) { return "[" + num(v.x) + ", " + num(v.y) + ", " + num(v.z) + "]"; }
-std::string quoted(const std::string& s) {
-  std::string out = "\"";
-  for (const char ch : s) {
-    if (ch == '"' || ch == '\\') out += '\\';
-    if (static_cast<unsigned char>(ch) >= 0x20) out += ch;
-  }
-  return out + "\"";
-}
-
 // The shot as a scenario that `cueball simulate FILE` reads (scenario.hpp):
 // the balls' states after the strike, every constant written out with 17
 // digits, so the file reproduces the shot bit for bit.
@@ -1157,19 +1142,6 @@ void print_kinds(const ClassStats& st, const ShotClass& c) {
 
 // ------------------------------------------------------------------ flags
 
-[[noreturn]] void bad_flag(const std::string& flag, const std::string& value, const std::string& allowed) {
-  std::fprintf(stderr, "cueball-stress: error: %s = '%s' is not allowed; allowed: %s\n", flag.c_str(), value.c_str(), allowed.c_str());
-  std::exit(2);
-}
-
-long long integer_flag(const std::string& flag, const std::string& value, long long lo, long long hi) {
-  const std::string range = "an integer in [" + std::to_string(lo) + ", " + std::to_string(hi) + "]";
-  if (value.empty() || value.find_first_not_of("0123456789") != std::string::npos || value.size() > 18) bad_flag(flag, value, range);
-  const long long x = std::stoll(value);
-  if (x < lo || x > hi) bad_flag(flag, value, range);
-  return x;
-}
-
 struct Options {
   std::vector<const ShotClass*> classes;
   long long shots = 1000;
@@ -1210,19 +1182,6 @@ void usage() {
       class_list().c_str(), cushion_model_names("").c_str(), ball_collision_model_names("").c_str(), kMaxEvents);
 }
 
-// A number in [lo, hi] written in full ("1e-7", "0.5"), else exit 2.
-double number_flag(const std::string& flag, const std::string& value, double lo, double hi, const std::string& allowed) {
-  std::size_t used = 0;
-  double x = 0.0;
-  try {
-    x = std::stod(value, &used);
-  } catch (const std::exception&) {
-    bad_flag(flag, value, allowed);
-  }
-  if (used != value.size() || !(x >= lo && x <= hi)) bad_flag(flag, value, allowed);
-  return x;
-}
-
 Options parse(int argc, char** argv) {
   Options o;
   double exact_tolerance = CushionSettings{}.exact_tolerance;
@@ -1236,10 +1195,10 @@ Options parse(int argc, char** argv) {
                                         "--report-worst", "--dump-worst", "--cushion-model", "--ball-collision-model",
                                         "--cushion-exact-tolerance", "--scenario"};
     if (std::find_if(std::begin(known), std::end(known), [&](const char* k) { return flag == k; }) == std::end(known))
-      bad_flag("flag", flag,
+      kFlags.bad("flag", flag,
                "--class, --shots, --seed, --threads, --report-worst, --dump-worst, --cushion-model, "
                "--ball-collision-model, --cushion-exact-tolerance, --scenario, --help");
-    if (i + 1 >= argc) bad_flag(flag, "", "a value after the flag");
+    if (i + 1 >= argc) kFlags.bad(flag, "", "a value after the flag");
     const std::string value = argv[++i];
     if (flag == "--class") {
       o.classes.clear();
@@ -1251,30 +1210,30 @@ Options parse(int argc, char** argv) {
           continue;
         }
         const auto it = std::find_if(kClasses.begin(), kClasses.end(), [&](const ShotClass& c) { return name == c.name; });
-        if (it == kClasses.end()) bad_flag(flag, value, class_list());
+        if (it == kClasses.end()) kFlags.bad(flag, value, class_list());
         o.classes.push_back(&*it);
       }
-      if (o.classes.empty()) bad_flag(flag, value, class_list());
+      if (o.classes.empty()) kFlags.bad(flag, value, class_list());
     } else if (flag == "--shots") {
-      o.shots = integer_flag(flag, value, 1, 1000000000);
+      o.shots = kFlags.integer(flag, value, 1, 1000000000);
     } else if (flag == "--seed") {
-      o.seed = static_cast<std::uint64_t>(integer_flag(flag, value, 0, 1000000000000000000LL));
+      o.seed = static_cast<std::uint64_t>(kFlags.integer(flag, value, 0, 1000000000000000000LL));
     } else if (flag == "--threads") {
-      o.threads = static_cast<int>(integer_flag(flag, value, 1, 256));
+      o.threads = static_cast<int>(kFlags.integer(flag, value, 1, 256));
     } else if (flag == "--report-worst") {
-      o.report_worst = static_cast<std::size_t>(integer_flag(flag, value, 1, 100));
+      o.report_worst = static_cast<std::size_t>(kFlags.integer(flag, value, 1, 100));
     } else if (flag == "--dump-worst") {
-      if (value.empty()) bad_flag(flag, value, "a directory (created when missing)");
+      if (value.empty()) kFlags.bad(flag, value, "a directory (created when missing)");
       o.dump_dir = value;
     } else if (flag == "--cushion-model") {
       const std::optional<CushionModel> model = cushion_model_from_string(value);
-      if (!model) bad_flag(flag, value, cushion_model_names(""));
+      if (!model) kFlags.bad(flag, value, cushion_model_names(""));
       g_cushion = default_cushion_settings(*model);
     } else if (flag == "--cushion-exact-tolerance") {
-      exact_tolerance = number_flag(flag, value, kMinExactTolerance, kMaxExactTolerance, "a number in [1e-11, 1e-7]");
+      exact_tolerance = kFlags.number(flag, value, kMinExactTolerance, kMaxExactTolerance, "a number in [1e-11, 1e-7]");
     } else if (flag == "--ball-collision-model") {
       const std::optional<BallCollisionModel> model = ball_collision_model_from_string(value);
-      if (!model) bad_flag(flag, value, ball_collision_model_names(""));
+      if (!model) kFlags.bad(flag, value, ball_collision_model_names(""));
       g_ball_collision_model = *model;
     } else {
       o.scenarios.push_back(value);
@@ -1292,7 +1251,7 @@ int check_scenarios(const Options& o) {
   bool violated = false;
   for (const std::string& path : o.scenarios) {
     std::ifstream in(path);
-    if (!in) bad_flag("--scenario", path, "a readable scenario JSON file");
+    if (!in) kFlags.bad("--scenario", path, "a readable scenario JSON file");
     std::stringstream text;
     text << in.rdbuf();
     Shot shot;

@@ -3,7 +3,9 @@
 #pragma once
 
 #include <algorithm>
+#include <cstddef>
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 #include "cueball/planning/shot_planner.hpp"
@@ -47,13 +49,32 @@ int noisy_successes(const Scenario& table_state, const PlanRequest& q, int cue_b
 /// sqrt(p (1 - p) / shots) and noisy_shots to shots.
 void set_estimate(PlannedShot& shot, int hits, int shots);
 
-/// Distance from p to the segment a-b (the swept-circle test of a straight
-/// path: another ball's centre within 2R of it blocks it), m.
-inline double distance_to_path(Vec2 p, Vec2 a, Vec2 b) {
-  const Vec2 ab = b - a;
+/// Distance from p to the segment a-b, in the plane (Vec2) or in space
+/// (Vec3): the swept-circle test of a straight path (another ball's centre
+/// within 2R of it blocks it), and the cue's clearance of a ball, m.
+template <class V>
+double distance_to_path(V p, V a, V b) {
+  const V ab = b - a;
   const double len2 = dot(ab, ab);
   const double t = len2 > 0.0 ? std::clamp(dot(p - a, ab) / len2, 0.0, 1.0) : 0.0;
   return norm(p - (a + t * ab));
+}
+
+/// Index in `balls` of the ball with that id; balls.size() when none has it.
+inline std::size_t index_of(const std::vector<SimulationBall>& balls, int id) {
+  for (std::size_t i = 0; i < balls.size(); ++i)
+    if (balls[i].id == id) return i;
+  return balls.size();
+}
+
+/// The planner's rule of success (shot_planner.hpp), on what a shot did: the
+/// cue ball's first contact is `first_ball` (the target, or a combination's
+/// ball A), the target dropped (`target_pocket`: its pocket's index, -1 when
+/// it stayed up) into `pocket`, or into any pocket when none is given, and
+/// the cue ball stayed up.
+inline bool pots_target(int first_contact, int first_ball, int target_pocket, std::optional<int> pocket,
+                        bool cue_pocketed) {
+  return first_contact == first_ball && (pocket ? target_pocket == *pocket : target_pocket >= 0) && !cue_pocketed;
 }
 
 /// Where plan_shot()'s noisy screen starts in the seed's stream (its final

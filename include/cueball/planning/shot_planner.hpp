@@ -234,6 +234,7 @@ struct RobotForm {
 };
 
 struct PlannedShot {
+  int target = -1;                  ///< id of the ball it pots
   ShotKind kind = ShotKind::direct;
   int pocket = -1;                  ///< index into table.pockets
   std::string pocket_name;

@@ -28,7 +28,7 @@ std::pair<std::size_t, std::vector<std::size_t>> validate_request(const Scenario
   validate_simulation_input(s.table, s.balls, s.settings);
   std::string ids;
   for (const SimulationBall& b : s.balls) ids += (ids.empty() ? "" : ", ") + std::to_string(b.id);
-  const int cue_id = q.cue_ball ? *q.cue_ball : s.cue ? s.cue->ball : 0;
+  const int cue_id = cue_ball_id(s, q);
   const std::size_t cue = index_of(s.balls, cue_id);
   if (cue == s.balls.size())
     throw InvalidArgument("cue_ball", "cue_ball = " + std::to_string(cue_id) +
@@ -232,6 +232,19 @@ SearchedShots search_shots(const Scenario& table_state, const PlanRequest& q, co
   st.result.seconds = st.seconds();
   st.out.plan = std::move(st.result);
   return std::move(st.out);
+}
+
+double best_window_probability(const Scenario& table_state, const PlanRequest& q, int& simulations) {
+  ShotSearch windows_only;
+  windows_only.noisy = false;
+  try {
+    const SearchedShots w = search_shots(table_state, q, windows_only);
+    simulations += w.plan.simulations;
+    return w.plan.shot.window_probability;
+  } catch (const NoFeasibleShot&) {
+    simulations += q.simulations;
+    return 0.0;
+  }
 }
 
 }  // namespace cueball

@@ -77,6 +77,18 @@ inline bool pots_target(int first_contact, int first_ball, int target_pocket, st
   return first_contact == first_ball && (pocket ? target_pocket == *pocket : target_pocket >= 0) && !cue_pocketed;
 }
 
+/// The id of the ball the request strikes: PlanRequest::cue_ball, else the
+/// scenario's cue ball, else 0 (as plan_shot() takes it).
+inline int cue_ball_id(const Scenario& s, const PlanRequest& q) {
+  return q.cue_ball ? *q.cue_ball : s.cue ? s.cue->ball : 0;
+}
+
+/// The best window probability of the request's shots on that table, from
+/// search_shots() without a noisy shot; 0 when no shot is feasible.
+/// `simulations` gains the engine runs spent (a plan with no feasible shot
+/// counted at its whole budget: the error does not say what it spent).
+double best_window_probability(const Scenario& table_state, const PlanRequest& q, int& simulations);
+
 /// Where plan_shot()'s noisy screen starts in the seed's stream (its final
 /// estimate starts at 0).
 inline constexpr std::uint64_t kScreenFirstShot = std::uint64_t{1} << 40;

@@ -274,8 +274,22 @@ struct Choice {
   double next_success_probability = -1.0;  // position play: the leave's next-shot estimate; -1: none
 };
 
+// 9-ball's next targets after `target` (PositionRequest::next_targets): each
+// object ball other than the target, one at a time in id order (the lowest
+// ball next; where the shot pots it too, the lowest left).
+std::vector<std::vector<int>> nine_ball_next_targets(const Scenario& s, int target) {
+  std::vector<int> ids;
+  for (const SimulationBall& b : s.balls)
+    if (b.id != 0 && b.id != target) ids.push_back(b.id);
+  std::sort(ids.begin(), ids.end());
+  std::vector<std::vector<int>> in_turn;
+  for (int id : ids) in_turn.push_back({id});
+  return in_turn;
+}
+
 // position_simulations > 0: plan_shot_for_position (position_play.hpp) with
-// that budget for each next-shot plan, the next target 9-ball's lowest ball.
+// that budget for each next-shot plan, the next targets 9-ball's
+// (nine_ball_next_targets).
 // placed: the cue ball in hand placed first by plan_ball_in_hand
 // (ball_in_hand.hpp), played for position (1,000 runs a next-shot plan
 // without position_simulations), the table with the cue ball at its spot
@@ -296,6 +310,7 @@ Choice planner_choice(const Scenario& s, int target, std::uint64_t seed, int sim
     if (placed || position_simulations > 0) {
       PositionRequest p;
       p.shot = q;
+      p.next_targets = nine_ball_next_targets(s, target);
       p.next_simulations = position_simulations > 0 ? position_simulations : 1000;
       PositionPlanResult pr;
       if (placed) {

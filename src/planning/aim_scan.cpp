@@ -101,14 +101,15 @@ AimScan scan_aims(const Scenario& s, std::size_t cue, std::size_t target, int& p
 // `elevation`), the target a bank when it meets a rail (a cushion long enough
 // to bank off, not a pocket's facing) before it drops; nullopt when that
 // play fails or does not pot. has_legs: its first and last legs have a
-// direction (the last leg and the cut are then set).
+// direction (the last leg and the cut are then set). `ball` begins its
+// description ("ball <id>: " with several targets).
 struct ScannedCandidate {
   Candidate candidate;
   bool has_legs = false;
 };
 
 std::optional<ScannedCandidate> scanned_candidate(const Scenario& s, std::size_t cue, std::size_t target, const AimRun& r,
-                                                  double elevation) {
+                                                  double elevation, const std::string& ball) {
   const double R = s.settings.parameters.ball.radius;
   ScannedCandidate out;
   Candidate& c = out.candidate;
@@ -141,7 +142,7 @@ std::optional<ScannedCandidate> scanned_candidate(const Scenario& s, std::size_t
       std::acos(std::clamp(dot(first / norm(first), Vec2{std::cos(c.aim_deg * kDegree), std::sin(c.aim_deg * kDegree)}),
                            -1.0, 1.0)) /
       kDegree;
-  c.what = std::string(to_string(c.kind)) + " into " + s.table.pockets[r.pocket].name;
+  c.what = ball + to_string(c.kind) + " into " + s.table.pockets[r.pocket].name;
   for (std::size_t i = 0; i < c.cushions.size(); ++i)
     c.what += (i == 0 ? " off " : ", then ") + cushion_name(s.table, c.cushions[i]);
   c.what += " (found by the aim scan)";
@@ -195,7 +196,8 @@ void scan_target(SearchState& st, std::size_t target) {
     if (!elevation) continue;
     if (st.trials.runs() >= q.simulations * 3 / 5) break;
     st.trials.count(1);
-    const std::optional<ScannedCandidate> sc = scanned_candidate(s, st.cue, target, r, *elevation);
+    const std::optional<ScannedCandidate> sc = scanned_candidate(
+        s, st.cue, target, r, *elevation, st.targets.size() > 1 ? "ball " + std::to_string(s.balls[target].id) + ": " : "");
     if (!sc) continue;
     const Candidate& c = sc->candidate;
     if (std::find(q.kinds.begin(), q.kinds.end(), c.kind) == q.kinds.end() || c.cushions.size() > 2) continue;

@@ -22,6 +22,7 @@ constexpr double kDegree = std::numbers::pi / 180.0;
 // A spot behind a ghost ball, and what step 2 makes of it.
 struct Spot {
   Vec2 cue_ball;
+  int target = 0;       // id of the ball it pots (a grid spot: the first target)
   int pocket = 0;
   double paths = 0.0;   // cue ball to ghost ball plus object ball to pocket, m
   double window = 0.0;  // the best window probability of a direct shot into the pocket
@@ -41,20 +42,26 @@ void check_bounds(const char* lo_name, double lo, const char* hi_name, double hi
                                         " (m)");
 }
 
-// The table without the cue ball, the target on it, and where the cue ball may go.
+// A target of the request and where it is.
+struct Target {
+  int id = 0;
+  Vec2 O;
+};
+
+// The table without the cue ball, the targets on it, and where the cue ball may go.
 struct Hand {
   const Scenario& s;
   const BallInHandRequest& q;
-  int cue_id = 0, target_id = 0;
+  int cue_id = 0;
+  std::vector<Target> targets;  // PlanRequest::targets (or its target)
   Scenario without;    // the table without the cue ball, its "cue" cleared
   SimulationBall cue;  // the cue ball's own parameters when it is there
   double R = 0.0;
-  Vec2 O;              // the target
 
-  // No other object ball's centre within 2R of the path a -> b.
-  bool clear(Vec2 a, Vec2 b) const {
+  // No object ball but `target`'s centre within 2R of the path a -> b.
+  bool clear(Vec2 a, Vec2 b, int target) const {
     return std::none_of(without.balls.begin(), without.balls.end(), [&](const SimulationBall& o) {
-      return o.id != target_id && distance_to_path(o.state.position, a, b) < 2.0 * R;
+      return o.id != target && distance_to_path(o.state.position, a, b) < 2.0 * R;
     });
   }
   // A place for the cue ball: inside the region, on the bed, kInHandGap clear of every ball.
@@ -67,9 +74,10 @@ struct Hand {
     });
   }
   // The spot with the cue ball placed at C.
-  Spot spot_at(Vec2 C, int pocket, double paths) const {
+  Spot spot_at(Vec2 C, int target, int pocket, double paths) const {
     Spot spot;
     spot.cue_ball = C;
+    spot.target = target;
     spot.pocket = pocket;
     spot.paths = paths;
     spot.table = without;
@@ -82,7 +90,7 @@ struct Hand {
 };
 
 Hand hand_of(const Scenario& s, const BallInHandRequest& q) {
-  Hand h{s, q, cue_ball_id(s, q.position.shot), q.position.shot.target, s, {}, s.settings.parameters.ball.radius, {}};
+  Hand h{s, q, cue_ball_id(s, q.position.shot), {}, s, {}, s.settings.parameters.ball.radius};
   h.without.cue.reset();
   h.cue.id = h.cue_id;
   h.cue.name = "cue";
@@ -91,12 +99,15 @@ Hand hand_of(const Scenario& s, const BallInHandRequest& q) {
     if (b.id == h.cue_id) h.cue = b;
     else h.without.balls.push_back(b);
   }
-  const auto target = std::find_if(h.without.balls.begin(), h.without.balls.end(),
-                                   [&](const SimulationBall& b) { return b.id == h.target_id; });
-  if (target == h.without.balls.end())
-    throw InvalidArgument("target",
-                          "target = " + std::to_string(h.target_id) + " is not the id of an object ball on the table");
-  h.O = target->state.position;
+  const std::vector<int> ids = target_ids(q.position.shot);
+  for (std::size_t k = 0; k < ids.size(); ++k) {
+    const std::size_t i = index_of(h.without.balls, ids[k]);
+    if (i == h.without.balls.size())
+      throw InvalidArgument(q.position.shot.targets.empty() ? "target" : "targets",
+                            (q.position.shot.targets.empty() ? "target" : "targets[" + std::to_string(k) + "]") +
+                                " = " + std::to_string(ids[k]) + " is not the id of an object ball on the table");
+    h.targets.push_back({ids[k], h.without.balls[i].state.position});
+  }
   return h;
 }
 
@@ -119,30 +130,37 @@ void add_region_distances(const InHandRegion& region, Vec2 G, Vec2 w, std::vecto
   if (lo < hi) distances.insert(distances.end(), {lo + kInHandGap, 0.5 * (lo + hi)});
 }
 
-// Step 1: the spots behind the ghost ball of each pocket the target has a
+// The spots behind the ghost ball of `target` for pocket k, when its path
+// to the pocket is clear: at each distance behind G along each cut.
+void add_ghost_ball_spots(const Hand& h, const Target& target, std::size_t k, std::vector<Spot>& spots) {
+  const Vec2 O = target.O, P = h.s.table.pockets[k].centre;
+  const double op = norm(P - O);
+  if (op <= 2.0 * h.R || !h.clear(O, P, target.id)) return;
+  const Vec2 u = (P - O) / op;
+  const Vec2 G = O - 2.0 * h.R * u;
+  for (const double cut : kInHandCutsDeg) {
+    const Vec2 w = rotated(u, cut * kDegree);  // the cue ball's direction to G
+    std::vector<double> distances(kInHandDistances.begin(), kInHandDistances.end());
+    if (h.q.region) add_region_distances(*h.q.region, G, w, distances);
+    for (const double d : distances) {
+      const Vec2 C = G - d * w;
+      if (h.placeable(C) && h.clear(C, G, target.id)) spots.push_back(h.spot_at(C, target.id, static_cast<int>(k), d + op));
+    }
+  }
+}
+
+// Step 1: the spots behind the ghost ball of each pocket a target has a
 // clear path to (and the request allows).
 std::vector<Spot> ghost_ball_spots(const Hand& h) {
   std::vector<Spot> spots;
   const Scenario& s = h.s;
-  for (std::size_t k = 0; k < s.table.pockets.size(); ++k) {
-    if (h.q.position.shot.pocket && static_cast<std::size_t>(*h.q.position.shot.pocket) != k) continue;
-    const Vec2 P = s.table.pockets[k].centre;
-    const double op = norm(P - h.O);
-    if (op <= 2.0 * h.R || !h.clear(h.O, P)) continue;
-    const Vec2 u = (P - h.O) / op;
-    const Vec2 G = h.O - 2.0 * h.R * u;
-    for (const double cut : kInHandCutsDeg) {
-      const Vec2 w = rotated(u, cut * kDegree);  // the cue ball's direction to G
-      std::vector<double> distances(kInHandDistances.begin(), kInHandDistances.end());
-      if (h.q.region) add_region_distances(*h.q.region, G, w, distances);
-      for (const double d : distances) {
-        const Vec2 C = G - d * w;
-        if (h.placeable(C) && h.clear(C, G)) spots.push_back(h.spot_at(C, static_cast<int>(k), d + op));
-      }
-    }
-  }
+  for (const Target& target : h.targets)
+    for (std::size_t k = 0; k < s.table.pockets.size(); ++k)
+      if (!h.q.position.shot.pocket || static_cast<std::size_t>(*h.q.position.shot.pocket) == k)
+        add_ghost_ball_spots(h, target, k, spots);
   return spots;
 }
+
 
 // No straight pot from behind a ghost ball: the centres of a grid over the
 // bed (or the region), each free place a spot for any shot asked for.
@@ -154,7 +172,9 @@ std::vector<Spot> grid_spots(const Hand& h) {
   for (int i = 0; i < kInHandGrid[0]; ++i)
     for (int j = 0; j < kInHandGrid[1]; ++j) {
       const Vec2 C{x0 + (x1 - x0) * (i + 0.5) / kInHandGrid[0], y0 + (y1 - y0) * (j + 0.5) / kInHandGrid[1]};
-      if (h.placeable(C)) spots.push_back(h.spot_at(C, -1, norm(C - h.O)));
+      double paths = norm(C - h.targets.front().O);  // to the nearest target
+      for (const Target& target : h.targets) paths = std::min(paths, norm(C - target.O));
+      if (h.placeable(C)) spots.push_back(h.spot_at(C, h.targets.front().id, -1, paths));
     }
   return spots;
 }
@@ -167,6 +187,8 @@ std::vector<const Spot*> kept_spots(const Hand& h, std::vector<Spot>& spots, boo
     PlanRequest direct = h.q.position.shot;
     direct.cue_ball = h.cue_id;
     if (!grid) {
+      direct.target = spot.target;
+      direct.targets.clear();
       direct.pocket = spot.pocket;
       direct.kinds = {ShotKind::direct};
     }
@@ -181,7 +203,9 @@ std::vector<const Spot*> kept_spots(const Hand& h, std::vector<Spot>& spots, boo
   std::vector<const Spot*> kept;
   for (const Spot& spot : spots) {
     if (kept.size() == kInHandSpots || spot.window <= 0.0) break;
-    const auto same_pocket = std::count_if(kept.begin(), kept.end(), [&](const Spot* k) { return k->pocket == spot.pocket; });
+    const auto same_pocket = std::count_if(kept.begin(), kept.end(), [&](const Spot* k) {
+      return k->target == spot.target && k->pocket == spot.pocket;
+    });
     if (grid || same_pocket < 2) kept.push_back(&spot);
   }
   return kept;
@@ -234,7 +258,7 @@ BallInHandResult plan_ball_in_hand(const Scenario& table_state, const BallInHand
   int simulations = 0;
   const std::vector<const Spot*> kept = kept_spots(h, spots, grid, simulations);
   if (kept.empty())
-    throw NoFeasibleShot("no spot for the cue ball pots ball " + std::to_string(h.target_id) + " (" +
+    throw NoFeasibleShot("no spot for the cue ball pots " + targets_text(target_ids(q.position.shot)) + " (" +
                          std::to_string(spots.size()) + (grid ? " places on a grid" : " spots behind ghost balls") +
                          " tried)");
   // 3. Each kept spot played for position; the best leave chosen.

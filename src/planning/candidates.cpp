@@ -81,6 +81,7 @@ struct Geometry {
   double R;
   Vec2 C, O, P;  // the cue ball, the target, the pocket's capture centre
   std::string pocket_name;
+  std::string label;  // "ball <id>: " with several targets (PlanRequest::targets), else ""
   std::vector<std::string>& rejected;
 
   // The cue ball's ghost ball for a ball at b sent towards `towards`.
@@ -207,7 +208,7 @@ void consider(const Geometry& g, Candidate c, const Legs& legs, std::vector<Cand
 
 // direct: the cue ball at the target's ghost ball G = O - 2R u.
 void direct_candidate(const Geometry& g, Candidate c, std::vector<Candidate>& out) {
-  c.what = "direct into " + g.pocket_name;
+  c.what = g.label + "direct into " + g.pocket_name;
   consider(g, c, {{g.C, g.ghost(g.O, g.P)}, {}, {g.O, g.P}}, out);
 }
 
@@ -222,7 +223,7 @@ void kick_candidates(const Geometry& g, const Candidate& base, const std::vector
     if (line.signed_distance(g.C) <= 0.0 || line.signed_distance(G) <= 0.0) continue;
     Candidate c = base;
     c.cushions = {k};
-    c.what = "kick off " + cushion_name(table, k) + " into " + g.pocket_name;
+    c.what = g.label + "kick off " + cushion_name(table, k) + " into " + g.pocket_name;
     const Vec2 Y = line.crossing(g.C, line.mirror(G));
     if (!line.on_cushion(Y, g.R)) {
       g.rejected.push_back(c.what + ": the cue ball's bank point is not on the cushion");
@@ -246,7 +247,7 @@ void combination_candidates(const Geometry& g, const Candidate& base, std::vecto
     Candidate c = base;
     c.first_ball = i;
     c.intermediate = i;
-    c.what = "combination via ball " + std::to_string(g.s.balls[i].id) + " into " + g.pocket_name;
+    c.what = g.label + "combination via ball " + std::to_string(g.s.balls[i].id) + " into " + g.pocket_name;
     consider(g, c, {{g.C, g.ghost(A, GT)}, {A, GT}, {g.O, g.P}}, combinations);
   }
   // The few with the smallest combined cut.
@@ -272,7 +273,7 @@ void one_cushion_banks(const Geometry& g, const Candidate& base, const std::vect
     if (sp < 4.0 * g.R || so <= 0.0) continue;  // the pocket is on this cushion's rail
     Candidate c = base;
     c.cushions = {k};
-    c.what = "bank off " + cushion_name(table, k) + " into " + g.pocket_name;
+    c.what = g.label + "bank off " + cushion_name(table, k) + " into " + g.pocket_name;
     const Vec2 X = line.crossing(g.O, line.mirror(g.P));
     if (!line.on_cushion(X, g.R)) {
       g.rejected.push_back(c.what + ": the bank point is not on the cushion");
@@ -306,7 +307,7 @@ void two_cushion_banks(const Geometry& g, const Candidate& base, const std::vect
       if (first.signed_distance(X2) <= 0.0) continue;
       Candidate c = base;
       c.cushions = {k1, k2};
-      c.what = "bank off " + cushion_name(table, k1) + ", then " + cushion_name(table, k2) + " into " + g.pocket_name;
+      c.what = g.label + "bank off " + cushion_name(table, k1) + ", then " + cushion_name(table, k2) + " into " + g.pocket_name;
       if (!first.on_cushion(X1, g.R) || !second.on_cushion(X2, g.R)) {
         g.rejected.push_back(c.what + ": a bank point is not on its cushion");
         continue;
@@ -335,6 +336,7 @@ void kind_candidates(const Scenario& s, const PlanRequest& q, std::size_t cue, s
                    s.balls[target].state.position,
                    table.pockets[pocket].centre,
                    table.pockets[pocket].name,
+                   q.targets.size() > 1 ? "ball " + std::to_string(s.balls[target].id) + ": " : "",
                    rejected};
   Candidate base;
   base.kind = kind;

@@ -79,7 +79,8 @@ void keep_most_screened(SearchState& st) {
   std::vector<PlannedShot>& feasible = st.feasible;
   if (feasible.size() > kMaxScreened) {
     for (std::size_t i = kMaxScreened; i < feasible.size(); ++i)
-      st.result.rejected.push_back(std::string(to_string(feasible[i].kind)) + " into " + feasible[i].pocket_name +
+      st.result.rejected.push_back((st.targets.size() > 1 ? "ball " + std::to_string(feasible[i].target) + ": " : "") +
+                                   to_string(feasible[i].kind) + " into " + feasible[i].pocket_name +
                                    ": not screened (more than " + std::to_string(kMaxScreened) + " feasible)");
     feasible.resize(kMaxScreened);
     st.feasible_of.resize(kMaxScreened);

@@ -3,7 +3,6 @@
 
 #include <algorithm>
 #include <chrono>
-#include <initializer_list>
 #include <string>
 #include <utility>
 
@@ -16,14 +15,7 @@ namespace {
 
 bool has_ball(const Scenario& s, int id) { return index_of(s.balls, id) < s.balls.size(); }
 
-// The lowest id on the table other than those of `except` (9-ball's next
-// ball); -1 when none.
-int lowest_ball(const Scenario& s, std::initializer_list<int> except) {
-  int next = -1;
-  for (const SimulationBall& b : s.balls)
-    if (std::find(except.begin(), except.end(), b.id) == except.end() && (next < 0 || b.id < next)) next = b.id;
-  return next;
-}
+bool contains(const std::vector<int>& ids, int id) { return std::find(ids.begin(), ids.end(), id) != ids.end(); }
 
 // Where the noise-free shot leaves the cue ball.
 Vec2 cue_ball_end(const PlannedShot& shot, int cue_id) {
@@ -37,31 +29,87 @@ struct Candidate {
   PlannedShot shot;
   Leave leave;
   Scenario left;
-  int next_id = -1;          // the ball planned next on the table it leaves; -1: none left
-  double next_window = 0.0;  // the best next shot's window probability (1: no ball left)
+  std::vector<int> next_ids;  // the balls the next shot may pot on the table it leaves; empty: none left
+  double next_window = 0.0;   // the best next shot's window probability (1: no ball left)
 };
 
-// One position plan: the request, the next shot's request and the engine
-// runs counted so far.
+// One position plan: the request, the next targets in turn, the next shot's
+// request and the engine runs counted so far.
 struct Lookahead {
   const Scenario& s;
   const PositionRequest& q;
   int cue_id = 0;
-  PlanRequest next;      // the next shot's request (its target set per leave)
+  std::vector<std::vector<int>> next_targets;  // PositionRequest::next_targets, resolved
+  PlanRequest next;      // the next shot's request (its targets set per leave)
   int simulations = 0;   // engine runs of every plan made
 };
 
-// The next target: the request's, checked, or the lowest id other than the
-// cue ball and the target (9-ball's rule); -1 when none.
-int next_target_of(const Scenario& s, const PositionRequest& q, int cue_id) {
-  if (!q.next_target) return lowest_ball(s, {cue_id, q.shot.target});
-  const int next = *q.next_target;
-  if (!has_ball(s, next))
-    throw InvalidArgument("next", "next = " + std::to_string(next) + " is not the id of a ball on the table");
-  if (next == cue_id || next == q.shot.target)
-    throw InvalidArgument("next", "next = " + std::to_string(next) + " is the " +
-                                      (next == cue_id ? "cue ball" : "target") + "; choose another ball");
-  return next;
+// PositionRequest::next_targets checked: each set not empty, each id a ball
+// on the table other than the cue ball.
+void check_next_targets(const Scenario& s, const PositionRequest& q, int cue_id) {
+  if (q.next_target)
+    throw InvalidArgument("next_targets", "next_targets and next = " + std::to_string(*q.next_target) +
+                                              " are both given; allowed: one of them");
+  for (std::size_t k = 0; k < q.next_targets.size(); ++k) {
+    const std::string set = "next_targets[" + std::to_string(k) + "]";
+    if (q.next_targets[k].empty()) throw InvalidArgument("next_targets", set + " is empty; allowed: one or more ball ids");
+    for (std::size_t j = 0; j < q.next_targets[k].size(); ++j) {
+      const int id = q.next_targets[k][j];
+      const std::string name = set + "[" + std::to_string(j) + "] = " + std::to_string(id);
+      if (!has_ball(s, id)) throw InvalidArgument("next_targets", name + " is not the id of a ball on the table");
+      if (id == cue_id) throw InvalidArgument("next_targets", name + " is the cue ball; choose another ball");
+    }
+  }
+}
+
+// The next targets in turn: the request's next_targets, checked, or 9-ball's
+// rule: next_target (checked) when given, then every other object ball but
+// the shot's targets in id order, one at a time (the lowest ball left next).
+std::vector<std::vector<int>> next_targets_of(const Scenario& s, const PositionRequest& q, int cue_id) {
+  if (!q.next_targets.empty()) {
+    check_next_targets(s, q, cue_id);
+    return q.next_targets;
+  }
+  const std::vector<int> targets = target_ids(q.shot);
+  std::vector<std::vector<int>> in_turn;
+  if (q.next_target) {
+    const int next = *q.next_target;
+    if (!has_ball(s, next))
+      throw InvalidArgument("next", "next = " + std::to_string(next) + " is not the id of a ball on the table");
+    if (next == cue_id || contains(targets, next))
+      throw InvalidArgument("next", "next = " + std::to_string(next) + " is the " +
+                                        (next == cue_id ? std::string("cue ball") : q.shot.targets.empty() ? "target" : "a target") +
+                                        "; choose another ball");
+    in_turn.push_back({next});
+  }
+  std::vector<int> ids;
+  for (const SimulationBall& b : s.balls)
+    if (b.id != cue_id && !contains(targets, b.id) && !(q.next_target && b.id == *q.next_target)) ids.push_back(b.id);
+  std::sort(ids.begin(), ids.end());
+  for (int id : ids) in_turn.push_back({id});
+  return in_turn;
+}
+
+// The balls the next shot may pot on table `left`: those of the first set
+// in turn with a ball on it (other than the cue ball and `except`); empty
+// when none.
+std::vector<int> next_ids_on(const Scenario& left, const Lookahead& la, const std::vector<int>& except) {
+  for (const std::vector<int>& set : la.next_targets) {
+    std::vector<int> ids;
+    for (int id : set)
+      if (id != la.cue_id && !contains(except, id) && has_ball(left, id)) ids.push_back(id);
+    if (!ids.empty()) return ids;
+  }
+  return {};
+}
+
+// The next shot's request for those balls (one: its target, as plan_shot()
+// takes a lone target; several: its targets).
+PlanRequest next_request(const Lookahead& la, const std::vector<int>& ids) {
+  PlanRequest n = la.next;
+  n.target = ids.front();
+  n.targets = ids.size() > 1 ? ids : std::vector<int>{};
+  return n;
 }
 
 // Step 1's search: plan_shot()'s step 4 widened (every shot and variant kept).
@@ -95,7 +143,7 @@ std::vector<Candidate> candidate_leaves(std::vector<PlannedShot>& every) {
     const bool known = std::any_of(candidates.begin(), candidates.end(),
                                    [&](const Candidate& c) { return c.shot.strike == shot.strike; });
     if (!known && shot.window_probability >= kPositionKeepFraction * best_window)
-      candidates.push_back({std::move(shot), {}, {}, -1, 0.0});
+      candidates.push_back({std::move(shot), {}, {}, {}, 0.0});
   }
   std::stable_sort(candidates.begin(), candidates.end(), [](const Candidate& a, const Candidate& b) {
     return a.shot.window_probability > b.shot.window_probability;
@@ -107,18 +155,17 @@ std::vector<Candidate> candidate_leaves(std::vector<PlannedShot>& every) {
 // Step 2: each leave scored by window probabilities alone (no noisy shot):
 // this shot's, times the best next shot's on the table it leaves; the
 // kMaxPositionCandidates best kept.
-void score_leaves_by_windows(Lookahead& la, int next_target, std::vector<Candidate>& candidates) {
+void score_leaves_by_windows(Lookahead& la, std::vector<Candidate>& candidates) {
   for (Candidate& c : candidates) {
     c.leave.cue_ball = cue_ball_end(c.shot, la.cue_id);
     c.left = table_left_by(la.s, c.shot);
-    // The next target, or when the shot pots it too, the lowest ball left
-    // (9-ball's rule); none left: nothing to score.
-    PlanRequest n = la.next;
-    n.target = has_ball(c.left, next_target) ? next_target : lowest_ball(c.left, {la.cue_id});
-    c.next_id = n.target;
+    // The next targets on the table it leaves (by default the next ball, or
+    // when the shot pots it too, the lowest ball left); none left: nothing
+    // to score.
+    c.next_ids = next_ids_on(c.left, la, {});
     c.next_window = 1.0;
-    if (n.target < 0) continue;
-    c.next_window = best_window_probability(c.left, n, la.simulations);
+    if (c.next_ids.empty()) continue;
+    c.next_window = best_window_probability(c.left, next_request(la, c.next_ids), la.simulations);
   }
   std::stable_sort(candidates.begin(), candidates.end(), [](const Candidate& a, const Candidate& b) {
     return a.shot.window_probability * a.next_window > b.shot.window_probability * b.next_window;
@@ -137,16 +184,15 @@ void screen_finalists(Lookahead& la, std::vector<Candidate>& candidates) {
     c.shot.simulations += screen_shots;
     c.leave.screened_probability = c.shot.success_probability;
     la.simulations += screen_shots;
-    if (c.next_id < 0) {
+    if (c.next_ids.empty()) {
       c.leave.score = c.leave.screened_probability;
       continue;
     }
     try {
-      PlanRequest after = la.next;
-      after.target = c.next_id;
-      const ShotPlanResult n = plan_shot(c.left, after);
+      const ShotPlanResult n = plan_shot(c.left, next_request(la, c.next_ids));
       la.simulations += n.simulations;
       c.leave.next_feasible = true;
+      c.leave.next_ball = n.shot.target;
       c.leave.next_success_probability = n.shot.success_probability;
       c.leave.next_kind = to_string(n.shot.kind);
       c.leave.next_pocket = n.shot.pocket_name;
@@ -203,10 +249,11 @@ PositionPlanResult plan_shot_for_position(const Scenario& table_state, const Pos
                           "engine runs of each next-shot plan");
   PositionPlanResult result;
   // The cue ball as plan_shot() takes it (which checks it, the target and the rest).
-  Lookahead la{s, q, cue_ball_id(s, q.shot), q.shot, 0};
-  result.next_target = next_target_of(s, q, la.cue_id);
+  Lookahead la{s, q, cue_ball_id(s, q.shot), {}, q.shot, 0};
+  la.next_targets = next_targets_of(s, q, la.cue_id);
+  const std::vector<int> next_ids = next_ids_on(s, la, target_ids(q.shot));
+  result.next_target = next_ids.empty() ? -1 : next_ids.front();
   la.next.cue_ball = la.cue_id;
-  la.next.target = result.next_target;
   la.next.pocket.reset();
   la.next.simulations = q.next_simulations;
   if (result.next_target < 0) {
@@ -221,7 +268,7 @@ PositionPlanResult plan_shot_for_position(const Scenario& table_state, const Pos
   result.plan.rejected = std::move(found.plan.rejected);
   result.plan.cue_ball = la.cue_id;
   std::vector<Candidate> candidates = candidate_leaves(found.every);
-  score_leaves_by_windows(la, result.next_target, candidates);  // 2.
+  score_leaves_by_windows(la, candidates);                       // 2.
   screen_finalists(la, candidates);                              // 3.
   play_best(la, candidates, result);                             // 4.
   result.plan.simulations = la.simulations;

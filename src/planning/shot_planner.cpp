@@ -33,12 +33,26 @@ std::pair<std::size_t, std::vector<std::size_t>> validate_request(const Scenario
   if (cue == s.balls.size())
     throw InvalidArgument("cue_ball", "cue_ball = " + std::to_string(cue_id) +
                                           " is not the id of a ball on the table; allowed: " + ids);
-  const std::size_t target = index_of(s.balls, q.target);
-  if (target == s.balls.size())
-    throw InvalidArgument("target", "target = " + std::to_string(q.target) +
-                                        " is not the id of a ball on the table; allowed: " + ids);
-  if (target == cue)
-    throw InvalidArgument("target", "target = " + std::to_string(q.target) + " is the cue ball; choose another ball");
+  std::vector<std::size_t> targets;
+  if (q.targets.empty()) {
+    const std::size_t target = index_of(s.balls, q.target);
+    if (target == s.balls.size())
+      throw InvalidArgument("target", "target = " + std::to_string(q.target) +
+                                          " is not the id of a ball on the table; allowed: " + ids);
+    if (target == cue)
+      throw InvalidArgument("target", "target = " + std::to_string(q.target) + " is the cue ball; choose another ball");
+    targets.push_back(target);
+  }
+  for (std::size_t k = 0; k < q.targets.size(); ++k) {
+    const std::string name = "targets[" + std::to_string(k) + "] = " + std::to_string(q.targets[k]);
+    const std::size_t target = index_of(s.balls, q.targets[k]);
+    if (target == s.balls.size())
+      throw InvalidArgument("targets", name + " is not the id of a ball on the table; allowed: " + ids);
+    if (target == cue) throw InvalidArgument("targets", name + " is the cue ball; choose another ball");
+    if (std::find(targets.begin(), targets.end(), target) != targets.end())
+      throw InvalidArgument("targets", name + " is given twice; allowed: each ball once");
+    targets.push_back(target);
+  }
   if (s.table.pockets.empty()) throw InvalidArgument("pocket", "the table has no pockets");
   if (q.pocket && (*q.pocket < 0 || static_cast<std::size_t>(*q.pocket) >= s.table.pockets.size()))
     throw InvalidArgument("pocket", static_cast<double>(*q.pocket),
@@ -57,7 +71,7 @@ std::pair<std::size_t, std::vector<std::size_t>> validate_request(const Scenario
     throw InvalidArgument("side", q.side, "a tip offset sqrt(side^2 + height^2) <= 0.5 (height " + format_number(most_height) + ")",
                           "tip offset to the right, ball radii");
   validate(q.noise);
-  return {cue, {target}};
+  return {cue, targets};
 }
 
 void throw_no_feasible_shot(const SearchState& st) {
@@ -77,7 +91,7 @@ void throw_no_feasible_shot(const SearchState& st) {
   count("obstructed", "cue obstructed");
   count("exact simulation", "no potting aim on the exact simulation");
   if (why.empty()) why = "no candidate of the requested kinds";
-  throw NoFeasibleShot("no feasible shot pots ball " + std::to_string(st.q.target) + " (" +
+  throw NoFeasibleShot("no feasible shot pots " + targets_text(target_ids(st.q)) + " (" +
                        std::to_string(rejected.size()) + " candidates" + (summary.empty() ? "" : ": " + summary) +
                        "): " + why);
 }
@@ -232,6 +246,13 @@ SearchedShots search_shots(const Scenario& table_state, const PlanRequest& q, co
   st.result.seconds = st.seconds();
   st.out.plan = std::move(st.result);
   return std::move(st.out);
+}
+
+std::string targets_text(const std::vector<int>& ids) {
+  if (ids.size() == 1) return "ball " + std::to_string(ids.front());
+  std::string text = "any of balls ";
+  for (std::size_t k = 0; k < ids.size(); ++k) text += (k == 0 ? "" : ", ") + std::to_string(ids[k]);
+  return text;
 }
 
 double best_window_probability(const Scenario& table_state, const PlanRequest& q, int& simulations) {

@@ -6,6 +6,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <optional>
+#include <string>
 #include <vector>
 
 #include "cueball/planning/shot_planner.hpp"
@@ -82,6 +83,15 @@ inline bool pots_target(int first_contact, int first_ball, int target_pocket, st
 inline int cue_ball_id(const Scenario& s, const PlanRequest& q) {
   return q.cue_ball ? *q.cue_ball : s.cue ? s.cue->ball : 0;
 }
+
+/// The ids of the request's legal targets: PlanRequest::targets, or {target}
+/// when it is empty.
+inline std::vector<int> target_ids(const PlanRequest& q) {
+  return q.targets.empty() ? std::vector<int>{q.target} : q.targets;
+}
+
+/// "ball 1" for one target, "any of balls 1, 3, 5" for several.
+std::string targets_text(const std::vector<int>& ids);
 
 /// The best window probability of the request's shots on that table, from
 /// search_shots() without a noisy shot; 0 when no shot is feasible.

@@ -24,15 +24,13 @@ namespace cueball {
 
 namespace planning {
 
-std::pair<std::size_t, std::vector<std::size_t>> validate_request(const Scenario& s, const PlanRequest& q) {
-  validate_simulation_input(s.table, s.balls, s.settings);
-  std::string ids;
-  for (const SimulationBall& b : s.balls) ids += (ids.empty() ? "" : ", ") + std::to_string(b.id);
-  const int cue_id = cue_ball_id(s, q);
-  const std::size_t cue = index_of(s.balls, cue_id);
-  if (cue == s.balls.size())
-    throw InvalidArgument("cue_ball", "cue_ball = " + std::to_string(cue_id) +
-                                          " is not the id of a ball on the table; allowed: " + ids);
+namespace {
+
+// The indices of the request's targets (PlanRequest::targets, else its
+// target), each a ball on the table other than the cue ball, none twice.
+// `ids`: the table's ids, for the messages.
+std::vector<std::size_t> target_indices(const Scenario& s, const PlanRequest& q, std::size_t cue,
+                                        const std::string& ids) {
   std::vector<std::size_t> targets;
   if (q.targets.empty()) {
     const std::size_t target = index_of(s.balls, q.target);
@@ -53,6 +51,21 @@ std::pair<std::size_t, std::vector<std::size_t>> validate_request(const Scenario
       throw InvalidArgument("targets", name + " is given twice; allowed: each ball once");
     targets.push_back(target);
   }
+  return targets;
+}
+
+}  // namespace
+
+std::pair<std::size_t, std::vector<std::size_t>> validate_request(const Scenario& s, const PlanRequest& q) {
+  validate_simulation_input(s.table, s.balls, s.settings);
+  std::string ids;
+  for (const SimulationBall& b : s.balls) ids += (ids.empty() ? "" : ", ") + std::to_string(b.id);
+  const int cue_id = cue_ball_id(s, q);
+  const std::size_t cue = index_of(s.balls, cue_id);
+  if (cue == s.balls.size())
+    throw InvalidArgument("cue_ball", "cue_ball = " + std::to_string(cue_id) +
+                                          " is not the id of a ball on the table; allowed: " + ids);
+  std::vector<std::size_t> targets = target_indices(s, q, cue, ids);
   if (s.table.pockets.empty()) throw InvalidArgument("pocket", "the table has no pockets");
   if (q.pocket && (*q.pocket < 0 || static_cast<std::size_t>(*q.pocket) >= s.table.pockets.size()))
     throw InvalidArgument("pocket", static_cast<double>(*q.pocket),
@@ -98,7 +111,6 @@ void throw_no_feasible_shot(const SearchState& st) {
 
 }  // namespace planning
 
-using namespace planning;  // NOLINT: this file is the planning module's entry
 
 const char* to_string(ShotKind kind) {
   switch (kind) {
@@ -121,8 +133,8 @@ std::string shot_kind_names(std::string_view quote) {
 CueStrikeNoise tournament_noise() {
   CueStrikeNoise n;
   n.speed = 0.075;
-  n.aim = 0.125 * kDegree;
-  n.elevation = 0.1 * kDegree;
+  n.aim = 0.125 * planning::kDegree;
+  n.elevation = 0.1 * planning::kDegree;
   n.side_offset = 0.0005;
   n.height_offset = 0.0005;
   return n;
@@ -225,6 +237,7 @@ ShotPlanResult plan_shot(const Scenario& table_state, const PlanRequest& q) {
 
 
 SearchedShots search_shots(const Scenario& table_state, const PlanRequest& q, const ShotSearch& o) {
+  using namespace planning;  // the steps (search_state.hpp)
   auto [cue, targets] = validate_request(table_state, q);
   SearchState st(table_state, q, o, cue, std::move(targets));
   st.result.cue_ball = table_state.balls[cue].id;

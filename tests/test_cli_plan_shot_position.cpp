@@ -59,6 +59,31 @@ TEST(CliPlanShotPosition, JsonGivesEveryShotsLeaveAndPlaysTheBestScore) {
   }
 }
 
+TEST(CliPlanShotPosition, WithNoBallAfterTheTargetEveryShotHasALeaveOnItsPotAlone) {
+  // Only the cue ball and the 1 (a single-pot layout of the planner
+  // benchmark): no next ball, plan_shot()'s plan, its alternatives included.
+  const TempDir dir;
+  const std::string scenario = dir.write("two.json", R"({
+  "table": "pool_9ft",
+  "balls": [
+    {"id": 0, "position": [2.305099864712931, 0.9787961715433114]},
+    {"id": 1, "position": [0.49154198107436164, 0.9834269711414346]}
+  ]
+})");
+  const CliRun r = run_cli({"plan-shot", scenario, "--ball", "1", "--position", "--simulations", "1000", "--json"});
+  ASSERT_EQ(r.status, 0) << r.err;
+  const nlohmann::json j = nlohmann::json::parse(r.out);
+  EXPECT_TRUE(j["position"]["next"].is_null());
+  ASSERT_FALSE(j["alternatives"].empty());
+  for (const auto& a : j["alternatives"]) {
+    EXPECT_TRUE(a["position"]["next"].is_null());
+    EXPECT_EQ(a["position"]["score"], a["success_probability"]);
+  }
+  const CliRun text = run_cli({"plan-shot", scenario, "--ball", "1", "--position", "--simulations", "1000"});
+  ASSERT_EQ(text.status, 0) << text.err;
+  EXPECT_NE(text.out.find("no ball left after this one"), std::string::npos) << text.out;
+}
+
 TEST(CliPlanShotPosition, NextBallIsTheOneGivenAndTheTextSaysTheLeave) {
   const TempDir dir;
   const std::string scenario = dir.write("three.json", kThreeBalls);

@@ -195,6 +195,12 @@ TEST(PositionPlay, WithNoBallLeftAfterTheTargetThereIsNoLookahead) {
   EXPECT_EQ(r.plan.shot.success_probability, plain.shot.success_probability);
   EXPECT_EQ(r.plan.rejected, plain.rejected);
   EXPECT_EQ(r.plan.simulations, plain.simulations);
+  // Every alternative has its leave (the CLI and Python read one each), on its pot alone.
+  ASSERT_EQ(r.alternative_leaves.size(), r.plan.alternatives.size());
+  for (std::size_t k = 0; k < r.plan.alternatives.size(); ++k) {
+    EXPECT_EQ(r.alternative_leaves[k].score, r.plan.alternatives[k].success_probability);
+    EXPECT_FALSE(r.alternative_leaves[k].next_feasible);
+  }
 }
 
 TEST(PositionPlay, BadInputNamesTheField) {

@@ -123,13 +123,23 @@ ShotSearch wide_search(const PositionRequest& q) {
   return wide;
 }
 
-// With no next ball: plan_shot()'s own plan, its leave scored on this pot alone.
+// A leave with no next shot: scored on this pot alone.
+Leave leave_alone(const PlannedShot& shot, int cue_id) {
+  Leave leave;
+  leave.cue_ball = cue_ball_end(shot, cue_id);
+  leave.screened_probability = shot.success_probability;
+  leave.score = shot.success_probability;
+  return leave;
+}
+
+// With no next ball: plan_shot()'s own plan, each leave (the alternatives'
+// too) scored on its pot alone.
 void plan_without_lookahead(const Lookahead& la, PositionPlanResult& result) {
   SearchedShots found = search_shots(la.s, la.q.shot, ShotSearch{});
   result.plan = std::move(found.plan);
-  result.leave.cue_ball = cue_ball_end(result.plan.shot, la.cue_id);
-  result.leave.screened_probability = result.plan.shot.success_probability;
-  result.leave.score = result.plan.shot.success_probability;
+  result.leave = leave_alone(result.plan.shot, la.cue_id);
+  for (const PlannedShot& alternative : result.plan.alternatives)
+    result.alternative_leaves.push_back(leave_alone(alternative, la.cue_id));
 }
 
 // Step 1's candidates: every shot and variant found, once per strike, at

@@ -127,7 +127,6 @@ void choose_finalists(SearchState& st) {
         st.chosen = i;
     }
   }
-  st.finalists = std::move(finalists);
 }
 
 void estimate_chosen(SearchState& st) {

@@ -9,17 +9,21 @@
 //   3. the exact simulation, per candidate: solve aim, choose speed, windows
 //                     search_candidates(), search_candidate()
 //                                                   candidate_search.cpp,
-//                     over the engine runs of ExactTrials
-//                                                   aim_solver.cpp
+//                     over the engine runs of ExactTrials (a trial, the
+//                     aim solved, a window's edge)  aim_solver.cpp
 //   2b. aim scan      scan_for_candidates()         aim_scan.cpp
-//   4. noise: screen, vary, finalists, estimate, alternatives
-//                     screen_feasible(), vary_best(), choose_finalists(),
-//                     estimate_chosen(), collect_alternatives()
-//                                                   noise_screen.cpp, variants.cpp
+//   (none feasible)   throw_no_feasible_shot()      shot_planner.cpp
+//   4. noise          keep_most_screened(), then without noise
+//                     rank_by_windows(); with it screen_feasible(),
+//                     choose_finalists(), estimate_chosen(),
+//                     collect_alternatives()        noise_screen.cpp
+//                     and between the screens vary_best()
+//                                                   variants.cpp
 #pragma once
 
 #include <array>
 #include <chrono>
+#include <cmath>
 #include <cstddef>
 #include <limits>
 #include <numbers>
@@ -191,8 +195,7 @@ struct SearchState {
   int final_reserve = 0;    // shots kept for the final estimate
   bool variants_spent = false;
   int variant_cap = 0;      // engine runs the variants may reach
-  std::vector<std::size_t> finalists;
-  std::size_t chosen = 0;
+  std::size_t chosen = 0;   // the feasible shot played
   SearchedShots out;
 
   int search_budget() const { return q.simulations * 2 / 5; }

@@ -48,6 +48,7 @@ nlohmann::ordered_json leave_json(const Leave& l, int next) {
   j["next_success_probability"] = l.next_success_probability;
   j["next_kind"] = l.next_kind.empty() ? nlohmann::ordered_json(nullptr) : nlohmann::ordered_json(l.next_kind);
   j["next_pocket"] = l.next_pocket.empty() ? nlohmann::ordered_json(nullptr) : nlohmann::ordered_json(l.next_pocket);
+  j["next_ball"] = l.next_ball >= 0 ? nlohmann::ordered_json(l.next_ball) : nlohmann::ordered_json(nullptr);
   j["screened_probability"] = l.screened_probability;
   j["score"] = l.score;
   return j;

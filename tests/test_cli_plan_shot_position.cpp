@@ -41,10 +41,15 @@ TEST(CliPlanShotPosition, JsonGivesEveryShotsLeaveAndPlaysTheBestScore) {
   ASSERT_TRUE(j.contains("position"));
   const nlohmann::json& p = j["position"];
   for (const char* key :
-       {"next", "cue_ball", "next_feasible", "next_success_probability", "next_kind", "next_pocket",
+       {"next", "cue_ball", "next_feasible", "next_success_probability", "next_kind", "next_pocket", "next_ball",
         "screened_probability", "score"})
     EXPECT_TRUE(p.contains(key)) << key;
   EXPECT_EQ(p["next"], 2);  // the lowest id left
+  if (p["next_feasible"].get<bool>()) {
+    EXPECT_EQ(p["next_ball"], 2);  // the ball the next plan pots
+  } else {
+    EXPECT_TRUE(p["next_ball"].is_null());
+  }
   EXPECT_DOUBLE_EQ(p["score"].get<double>(),
                    p["screened_probability"].get<double>() * p["next_success_probability"].get<double>());
   // The cue ball's leave is where the noise-free shot's prediction puts it.

@@ -1092,7 +1092,7 @@ def plan_shot(
     NoFeasibleShot when nothing pots. position=True plays for position (plan-shot --position):
     next_targets: the next shots' legal targets in turn ([[2], [3], ...] for 9-ball, [[9, ..., 15], [8]]
     for 8-ball; instead of next); each shot's dict gains `position` (next, cue_ball, next_feasible, next_success_probability,
-    next_kind, next_pocket, screened_probability, score). in_hand=True places the cue ball too
+    next_kind, next_pocket, next_ball, screened_probability, score). in_hand=True places the cue ball too
     (plan-shot --in-hand; inside region=(x_min, x_max, y_min, y_max) m when given): the dict gains
     `in_hand` (cue_ball, spots, spots_played). Releases the GIL."""
 

@@ -139,6 +139,7 @@ py::dict leave_dict(const cueball::Leave& l, int next) {
   d["next_success_probability"] = l.next_success_probability;
   d["next_kind"] = l.next_kind.empty() ? py::object(py::none()) : py::object(py::str(l.next_kind));
   d["next_pocket"] = l.next_pocket.empty() ? py::object(py::none()) : py::object(py::str(l.next_pocket));
+  d["next_ball"] = l.next_ball >= 0 ? py::object(py::int_(l.next_ball)) : py::object(py::none());
   d["screened_probability"] = l.screened_probability;
   d["score"] = l.score;
   return d;
@@ -260,7 +261,7 @@ void bind_shot_planner(py::module_& m) {
       "in turn, a list of lists of ids (9-ball [[2], [3], ...]; 8-ball [[9, ..., 15], [8]]: the next shot\n"
       "pots any ball of the first list left on the table; instead of next); next_simulations: each next plan's budget;\n"
       "each shot's dict then has `position` (next, cue_ball, next_feasible, next_success_probability,\n"
-      "next_kind, next_pocket, screened_probability, score). in_hand=True: ball in hand (ball_in_hand.hpp;\n"
+      "next_kind, next_pocket, next_ball, screened_probability, score). in_hand=True: ball in hand (ball_in_hand.hpp;\n"
       "plan-shot --in-hand), the cue ball placed (its place in the scenario ignored) where the shot, played for\n"
       "position, scores best, inside region=(x_min, x_max, y_min, y_max) m when given; the dict then has\n"
       "`in_hand` (cue_ball, spots, spots_played) and `scenario` has the cue ball at its spot. Raises\n"

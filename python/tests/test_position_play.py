@@ -41,6 +41,7 @@ class PositionPlayTest(unittest.TestCase):
         given = cueball.plan_shot(CUT, 1, simulations=1000, position=True, next_targets=[[9]])
         self.assertEqual(given["cue"], self.plan["cue"])
         self.assertEqual(given["position"], self.plan["position"])
+        self.assertEqual(given["position"]["next_ball"], 9 if given["position"]["next_feasible"] else None)
         for next_targets in ([[42]], [[]], [[0]]):
             with self.subTest(next_targets=next_targets), self.assertRaises(cueball.InvalidArgument) as e:
                 cueball.plan_shot(CUT, 1, simulations=1000, position=True, next_targets=next_targets)

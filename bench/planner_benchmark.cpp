@@ -175,12 +175,6 @@ Scenario single_layout(const Setup& st, std::uint64_t seed, int& others) {
   return s;
 }
 
-std::size_t index_of(const Scenario& s, int id) {
-  for (std::size_t i = 0; i < s.balls.size(); ++i)
-    if (s.balls[i].id == id) return i;
-  return s.balls.size();
-}
-
 // The lowest elevation of kElevationsDeg at which the cue clears, or NaN.
 double clear_elevation(const Setup& st, const Scenario& s, ShotAction a) {
   for (const double e : kElevationsDeg) {
@@ -212,7 +206,7 @@ Hits noisy_hits(const Scenario& s, const ShotAction& a, int shots, std::uint64_t
   const ManyResult m = simulate_many(s, actions, {}, o);
   Hits h;
   h.shots = shots;
-  const std::size_t cue = index_of(s, 0), target = index_of(s, target_id);
+  const std::size_t cue = index_of(s.balls, 0), target = index_of(s.balls, target_id);
   for (std::size_t k = 0; k < static_cast<std::size_t>(shots); ++k) h.hits += success(m, k, cue, target, target_id) ? 1 : 0;
   return h;
 }
@@ -230,8 +224,22 @@ struct Choice {
   double next_success_probability = -1.0;  // position play: the leave's next-shot estimate; -1: none
 };
 
+// 9-ball's next targets after `target` (PositionRequest::next_targets): each
+// object ball other than the target, one at a time in id order (the lowest
+// ball next; where the shot pots it too, the lowest left).
+std::vector<std::vector<int>> nine_ball_next_targets(const Scenario& s, int target) {
+  std::vector<int> ids;
+  for (const SimulationBall& b : s.balls)
+    if (b.id != 0 && b.id != target) ids.push_back(b.id);
+  std::sort(ids.begin(), ids.end());
+  std::vector<std::vector<int>> in_turn;
+  for (int id : ids) in_turn.push_back({id});
+  return in_turn;
+}
+
 // position_simulations > 0: plan_shot_for_position (position_play.hpp) with
-// that budget for each next-shot plan, the next target 9-ball's lowest ball.
+// that budget for each next-shot plan, the next targets 9-ball's
+// (nine_ball_next_targets).
 // placed: the cue ball in hand placed first by plan_ball_in_hand
 // (ball_in_hand.hpp), played for position (1,000 runs a next-shot plan
 // without position_simulations), the table with the cue ball at its spot
@@ -252,6 +260,7 @@ Choice planner_choice(const Scenario& s, int target, std::uint64_t seed, int sim
     if (placed || position_simulations > 0) {
       PositionRequest p;
       p.shot = q;
+      p.next_targets = nine_ball_next_targets(s, target);
       p.next_simulations = position_simulations > 0 ? position_simulations : 1000;
       PositionPlanResult pr;
       if (placed) {
@@ -293,7 +302,7 @@ struct GhostAim {
 GhostAim ghost_aim(const Setup& st, const Scenario& s, int target_id, double speed) {
   GhostAim best;
   const double R = st.radius;
-  const Vec2 C = s.balls[index_of(s, 0)].state.position, O = s.balls[index_of(s, target_id)].state.position;
+  const Vec2 C = s.balls[index_of(s.balls, 0)].state.position, O = s.balls[index_of(s.balls, target_id)].state.position;
   double best_score = -1.0;
   for (std::size_t p = 0; p < s.table.pockets.size(); ++p) {
     const Vec2 P = s.table.pockets[p].centre;
@@ -351,7 +360,7 @@ Choice exhaustive_choice(const Setup& st, const Scenario& s, int target_id, std:
   const auto start = std::chrono::steady_clock::now();
   const double cpu_start = thread_cpu_seconds();
   const double R = st.radius;
-  const Vec2 C = s.balls[index_of(s, 0)].state.position, O = s.balls[index_of(s, target_id)].state.position;
+  const Vec2 C = s.balls[index_of(s.balls, 0)].state.position, O = s.balls[index_of(s.balls, target_id)].state.position;
   const double d = norm(O - C);
   const double half = std::asin(std::min(1.0, 2.0 * R / d)) / kDeg;
   const int J = static_cast<int>(std::floor(half / kGridAimStepDeg));
@@ -383,7 +392,7 @@ Choice exhaustive_choice(const Setup& st, const Scenario& s, int target_id, std:
   stats.simulated = static_cast<int>(actions.size());
   if (!actions.empty()) {
     const ManyResult m = simulate_many(s, actions, {}, ManyOptions{});
-    const std::size_t cue = index_of(s, 0), target = index_of(s, target_id);
+    const std::size_t cue = index_of(s.balls, 0), target = index_of(s.balls, target_id);
     for (std::size_t k = 0; k < actions.size(); ++k) {
       const auto cell = static_cast<std::size_t>(cell_of[k]);
       cell_action[cell] = actions[k];
@@ -526,9 +535,9 @@ Scenario broken_rack(const Setup& st, std::uint64_t seed, int& on_break) {
   ro.seed = rng.bits() & 0x7fffffffULL;
   Scenario s = st.base;
   for (const PlacedBall& b : rack_nine_ball(s.table, ro)) add_ball(s.balls, b.id, b.position);
-  SimulationBall& cue = s.balls[index_of(s, 0)];
+  SimulationBall& cue = s.balls[index_of(s.balls, 0)];
   cue.state.position.y += rng.uniform(-0.25, 0.25);
-  const Vec2 one = s.balls[index_of(s, 1)].state.position;
+  const Vec2 one = s.balls[index_of(s.balls, 1)].state.position;
   ShotAction brk;
   brk.speed = rng.uniform(6.5, 8.5);
   brk.aim_deg = angle_deg(one - cue.state.position) + rng.uniform(-0.5, 0.5);
@@ -556,7 +565,7 @@ Scenario broken_rack(const Setup& st, std::uint64_t seed, int& on_break) {
     if (b.id != 0) objects.push_back(b);
   int lowest = 99;
   for (const SimulationBall& b : objects) lowest = std::min(lowest, b.id);
-  const Vec2 O = after.balls[index_of(after, lowest)].state.position;
+  const Vec2 O = after.balls[index_of(after.balls, lowest)].state.position;
   struct Place {
     double score;
     Vec2 p;
@@ -650,7 +659,7 @@ RackRecord run_rack(const Setup& st, std::uint64_t seed, int planner_simulations
       rec.detail = fmt("aimed at the %d, hit %d first", target, m.first_contact[0]);
       return rec;
     }
-    if (m.pocketed[index_of(s, 0)]) {
+    if (m.pocketed[index_of(s.balls, 0)]) {
       rec.stop = Stop::scratch;
       rec.detail = fmt("scratch on the %d", target);
       return rec;

@@ -24,7 +24,8 @@ namespace {
 
 struct PlanShotFlags {
   std::string scenario;
-  int ball = -1;
+  std::optional<int> ball;
+  std::string targets;            // "1,3,5": the legal targets, instead of --ball
   std::string pocket = "any";
   std::string kinds = "direct,bank";
   std::string noise = "tournament";
@@ -49,6 +50,7 @@ nlohmann::ordered_json leave_json(const Leave& l, int next) {
   j["next_success_probability"] = l.next_success_probability;
   j["next_kind"] = l.next_kind.empty() ? nlohmann::ordered_json(nullptr) : nlohmann::ordered_json(l.next_kind);
   j["next_pocket"] = l.next_pocket.empty() ? nlohmann::ordered_json(nullptr) : nlohmann::ordered_json(l.next_pocket);
+  j["next_ball"] = l.next_ball >= 0 ? nlohmann::ordered_json(l.next_ball) : nlohmann::ordered_json(nullptr);
   j["screened_probability"] = l.screened_probability;
   j["score"] = l.score;
   return j;
@@ -72,6 +74,7 @@ nlohmann::ordered_json shot_json(const Scenario& s, int cue_ball, const PlannedS
   const nlohmann::ordered_json scenario = nlohmann::ordered_json::parse(scenario_to_json(scenario_with_shot(s, cue_ball, shot, noise)));
   nlohmann::ordered_json j;
   j["cue"] = scenario["cue"];
+  j["target"] = shot.target;
   j["kind"] = to_string(shot.kind);
   j["pocket"] = shot.pocket_name;
   if (!shot.cushion.empty()) j["cushion"] = shot.cushion;
@@ -108,7 +111,40 @@ std::string describe(const PlannedShot& shot) {
   return std::string(to_string(shot.kind)) + off + " into " + shot.pocket_name;
 }
 
+// --ball, or --targets (a comma-separated list of ball ids): one of them.
+void set_targets(const PlanShotFlags& f, const Scenario& s, PlanRequest& q) {
+  if (f.ball) {
+    q.target = *f.ball;
+    return;
+  }
+  std::string ids;
+  for (const SimulationBall& b : s.balls) ids += (ids.empty() ? "" : ", ") + std::to_string(b.id);
+  std::stringstream parts(f.targets);
+  for (std::string part; std::getline(parts, part, ',');) {
+    std::size_t used = 0;
+    long long id = -1;
+    try {
+      id = std::stoll(part, &used);
+    } catch (const std::exception&) {
+      used = 0;
+    }
+    if (used == 0 || used != part.size() || id < 0 || id > 1'000'000'000)
+      throw UsageError("--targets = " + quote_input(f.targets) + ": " + quote_input(part) +
+                       " is not a ball id; allowed: a comma-separated list of ids of balls on the table (" + ids + ")");
+    q.targets.push_back(static_cast<int>(id));
+  }
+  if (q.targets.empty())
+    throw UsageError("--targets = " + quote_input(f.targets) +
+                     " names no ball; allowed: a comma-separated list of ids of balls on the table (" + ids + ")");
+  q.target = q.targets.front();
+}
+
 void run_plan_shot(const PlanShotFlags& f, std::ostream& out, std::ostream& err) {
+  if (f.ball && !f.targets.empty())
+    throw UsageError("--targets = " + quote_input(f.targets) + " and --ball = " + std::to_string(*f.ball) +
+                     " are both given; allowed: one of them");
+  if (!f.ball && f.targets.empty())
+    throw UsageError("--ball is required: the id of the ball to pot (or --targets, the ids of the legal targets)");
   check_flag("--seed", static_cast<double>(f.seed), 0, 9.0e15, "random seed");
   check_flag("--simulations", f.simulations, kMinPlanSimulations, kMaxPlanSimulations,
              "engine runs the plan may use");
@@ -118,7 +154,7 @@ void run_plan_shot(const PlanShotFlags& f, std::ostream& out, std::ostream& err)
                          ? default_scenario()
                          : scenario_from_document(read_text_file(f.scenario, "the scenario file", kMaxScenarioBytes));
   PlanRequest q;
-  q.target = f.ball;
+  set_targets(f, s, q);
   q.seed = static_cast<std::uint64_t>(f.seed);
   q.simulations = static_cast<int>(f.simulations);
   if (f.noise == "none") q.noise = CueStrikeNoise{};
@@ -203,6 +239,7 @@ void run_plan_shot(const PlanShotFlags& f, std::ostream& out, std::ostream& err)
     // The library's "target = 4 ..." is the flag's "--ball = 4 ...", "next = ..." is "--next = ...".
     const std::string message = e.what();
     if (e.field() == "target" && message.rfind("target", 0) == 0) throw UsageError("--ball" + message.substr(6));
+    if (e.field() == "targets") throw UsageError("--targets = " + quote_input(f.targets) + ": " + message);
     if (e.field() == "next" && message.rfind("next", 0) == 0) throw UsageError("--next" + message.substr(4));
     if (e.field() == "region") throw UsageError("--region = " + quote_input(f.region) + ": " + message);
     throw;
@@ -231,7 +268,7 @@ void run_plan_shot(const PlanShotFlags& f, std::ostream& out, std::ostream& err)
   }
   const PlannedShot& b = plan.shot;
   const ShotAction& a = b.strike;
-  out << "plan-shot: ball " << f.ball << ", " << describe(b) << ": P(success) = " << fixed(b.success_probability, 3)
+  out << "plan-shot: ball " << b.target << ", " << describe(b) << ": P(success) = " << fixed(b.success_probability, 3)
       << " +- " << fixed(b.success_standard_error, 3) << " (" << b.noisy_shots << " noisy shots, " << noise_label(f)
       << ", seed " << f.seed << ")\n";
   out << "  strike     speed " << fixed(a.speed, 3) << " m/s, aim " << fixed(a.aim_deg, 3) << " deg, elevation "
@@ -261,7 +298,8 @@ void run_plan_shot(const PlanShotFlags& f, std::ostream& out, std::ostream& err)
       << fixed(plan.seconds, 3) << " s\n";
   for (std::size_t k = 0; k < plan.alternatives.size(); ++k) {
     const PlannedShot& alt = plan.alternatives[k];
-    out << "  also       " << describe(alt) << ": P = " << fixed(alt.success_probability, 3) << " +- "
+    out << "  also       " << (f.targets.empty() ? "" : "ball " + std::to_string(alt.target) + ", ") << describe(alt)
+        << ": P = " << fixed(alt.success_probability, 3) << " +- "
         << fixed(alt.success_standard_error, 3) << " (" << alt.noisy_shots << " shots), aim "
         << fixed(alt.strike.aim_deg, 3) << " deg, speed " << fixed(alt.strike.speed, 3) << " m/s, height "
         << fixed(alt.strike.height, 2) << "\n";
@@ -278,7 +316,7 @@ Command add_plan_shot_command(CLI::App& app) {
   auto flags = std::make_shared<PlanShotFlags>();
   CLI::App* sub = app.add_subcommand(
       "plan-shot",
-      "Plans the strike that pots ball --ball: ghost-ball (direct, combination) and mirror-point (bank\n"
+      "Plans the strike that pots ball --ball (or any of --targets): ghost-ball (direct, combination) and mirror-point (bank\n"
       "off one or two cushions, kick) geometry for a first aim, and a scan of aims for pots geometry\n"
       "misses; blocked paths and an obstructed cue skipped, the aim then corrected on the exact\n"
       "simulation (throw, the cloth, the cushions), the aim and speed windows that still pot found,\n"
@@ -293,7 +331,10 @@ Command add_plan_shot_command(CLI::App& app) {
       "--in-hand places the cue ball too (ball in hand), played for position.\n"
       "Exit status 3 when no shot is feasible.");
   sub->add_option("scenario", flags->scenario, "Scenario JSON file (default: the built-in 9-ball break)");
-  sub->add_option("--ball", flags->ball, "Id of the ball to pot")->required();
+  sub->add_option("--ball", flags->ball, "Id of the ball to pot (or --targets)");
+  sub->add_option("--targets", flags->targets,
+                  "Ids of the legal targets, comma-separated (e.g. 1,3,5), instead of --ball: the plan pots any one\n"
+                  "of them, the best shot of all");
   sub->add_option("--pocket", flags->pocket, "Pocket name (e.g. top-right), or any")->capture_default_str();
   sub->add_option("--kinds", flags->kinds,
                   "Kinds of shot to consider, comma-separated: direct, bank (off one or two cushions), kick (the "

@@ -117,6 +117,36 @@ TEST(BallInHand, ATargetWithEveryPathBlockedHasNoSpotOnTheGridEither) {
   }
 }
 
+TEST(BallInHand, AmongLegalTargetsPlacesTheCueBallForTheOneThatCanBePotted) {
+  // The 1 ringed as above, the 9 open: with both legal, the cue ball goes
+  // behind a ghost ball of the 9 and the shot drops it.
+  const double R = layout({}).settings.parameters.ball.radius;
+  const Vec2 O{1.27, 0.635};
+  std::vector<test::Placed> balls{{0, {0.3, 0.3}}, {1, O}, {9, {2.0, 0.4}}};
+  for (int k = 0; k < 6; ++k) {
+    const double a = k * std::acos(-1.0) / 3.0 + 0.3;
+    balls.push_back({2 + k, O + (2.0 * R + 1e-3) * Vec2{std::cos(a), std::sin(a)}});
+  }
+  const Scenario s = layout(balls);
+  BallInHandRequest q = request_for(1);
+  q.position.shot.targets = {1, 9};
+  const BallInHandResult r = plan_ball_in_hand(s, q);
+  EXPECT_EQ(r.plan.plan.shot.target, 9);
+  const SimulationResult played = run_scenario(scenario_with_shot(r.table, 0, r.plan.plan.shot, q.position.shot.noise));
+  for (const BallTrajectory& b : played.balls) {
+    if (b.id == 9 || b.id == 0) {
+      EXPECT_EQ(b.pocketed, b.id == 9) << "ball " << b.id;
+    }
+  }
+  q.position.shot.targets = {1, 12};
+  try {
+    plan_ball_in_hand(s, q);
+    ADD_FAILURE() << "expected InvalidArgument";
+  } catch (const InvalidArgument& e) {
+    EXPECT_EQ(e.field(), "targets") << e.what();
+  }
+}
+
 TEST(BallInHand, BadInputNamesTheField) {
   const Scenario s = two_balls();
   const auto field = [&](const BallInHandRequest& q) -> std::string {

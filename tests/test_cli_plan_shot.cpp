@@ -1,7 +1,7 @@
 // Tests of `cueball plan-shot` (cli/command_plan_shot.cpp): the JSON's keys,
 // the replay of --scenario-out by `simulate`, the kinds kick and combination,
-// bad input (exit 2, one line naming the flag) and an infeasible layout
-// (exit 3).
+// --targets (the only pottable legal target chosen), bad input (exit 2, one
+// line naming the flag) and an infeasible layout (exit 3).
 #include <gtest/gtest.h>
 
 #include <nlohmann/json.hpp>
@@ -58,6 +58,7 @@ TEST(CliPlanShot, JsonHasTheDocumentedKeys) {
   const CliRun r = run_cli({"plan-shot", scenario, "--ball", "1", "--seed", "3", "--json"});
   ASSERT_EQ(r.status, 0) << r.err;
   const nlohmann::json j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["target"], 1);
   for (const char* key : {"cue", "kind", "pocket", "success_probability", "success_standard_error", "aim_window_deg",
                           "speed_window", "robot", "simulations", "seconds", "alternatives"})
     EXPECT_TRUE(j.contains(key)) << key;
@@ -155,6 +156,44 @@ TEST(CliPlanShot, BadInputExits2NamingTheFlag) {
   expect_usage_error({"plan-shot", scenario, "--ball", "1", "--simulations", "10"}, "--simulations");
   expect_usage_error({"plan-shot", scenario, "--ball", "1", "--seed", "-1"}, "--seed");
   expect_usage_error({"plan-shot", scenario}, "--ball");
+  expect_usage_error({"plan-shot", scenario, "--targets", "1,x"}, "--targets");
+  expect_usage_error({"plan-shot", scenario, "--targets", "1,7"}, "--targets");
+  expect_usage_error({"plan-shot", scenario, "--targets", "0,1"}, "--targets");
+  expect_usage_error({"plan-shot", scenario, "--targets", "1,1"}, "--targets");
+  expect_usage_error({"plan-shot", scenario, "--targets", ","}, "--targets");
+  expect_usage_error({"plan-shot", scenario, "--targets", "1", "--ball", "1"}, "--targets");
+  // The value and the allowed ids in the one line.
+  const CliRun r = run_cli({"plan-shot", scenario, "--targets", "1,7"});
+  EXPECT_NE(r.err.find("--targets = \"1,7\": targets[1] = 7 is not the id of a ball on the table; allowed: 0, 1, 9"),
+            std::string::npos)
+      << r.err;
+}
+
+TEST(CliPlanShot, TargetsPotsTheOnlyPottableLegalTargetAndSaysWhich) {
+  const TempDir dir;
+  // docs/example-blocked.json: with direct shots only, the 3 is the one of 1, 3, 4 that pots.
+  const std::string scenario = dir.write("crowded.json", R"({
+  "table": "pool_9ft",
+  "balls": [
+    {"id": 0, "position": [1.985, 0.281]},
+    {"id": 1, "position": [1.683, 0.623]},
+    {"id": 2, "position": [1.805, 0.603]},
+    {"id": 3, "position": [1.586, 0.527]},
+    {"id": 4, "position": [1.608, 0.677]}
+  ]
+})");
+  const CliRun r = run_cli({"plan-shot", scenario, "--targets", "1,3,4", "--kinds", "direct", "--simulations", "1000",
+                            "--json"});
+  ASSERT_EQ(r.status, 0) << r.err;
+  const nlohmann::json j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["target"], 3);
+  for (const auto& a : j["alternatives"]) EXPECT_EQ(a["target"], 3);
+  const CliRun text = run_cli({"plan-shot", scenario, "--targets", "1,3,4", "--kinds", "direct", "--simulations", "1000"});
+  ASSERT_EQ(text.status, 0) << text.err;
+  EXPECT_EQ(text.out.rfind("plan-shot: ball 3, direct into ", 0), 0u) << text.out;
+  const CliRun none = run_cli({"plan-shot", scenario, "--targets", "1,4", "--kinds", "direct", "--simulations", "1000"});
+  EXPECT_EQ(none.status, 3);
+  EXPECT_NE(none.err.find("no feasible shot pots any of balls 1, 4"), std::string::npos) << none.err;
 }
 
 TEST(CliPlanShot, KindsKickAndCombinationArePlannedAndSaidInTheJson) {

@@ -41,10 +41,15 @@ TEST(CliPlanShotPosition, JsonGivesEveryShotsLeaveAndPlaysTheBestScore) {
   ASSERT_TRUE(j.contains("position"));
   const nlohmann::json& p = j["position"];
   for (const char* key :
-       {"next", "cue_ball", "next_feasible", "next_success_probability", "next_kind", "next_pocket",
+       {"next", "cue_ball", "next_feasible", "next_success_probability", "next_kind", "next_pocket", "next_ball",
         "screened_probability", "score"})
     EXPECT_TRUE(p.contains(key)) << key;
   EXPECT_EQ(p["next"], 2);  // the lowest id left
+  if (p["next_feasible"].get<bool>()) {
+    EXPECT_EQ(p["next_ball"], 2);  // the ball the next plan pots
+  } else {
+    EXPECT_TRUE(p["next_ball"].is_null());
+  }
   EXPECT_DOUBLE_EQ(p["score"].get<double>(),
                    p["screened_probability"].get<double>() * p["next_success_probability"].get<double>());
   // The cue ball's leave is where the noise-free shot's prediction puts it.
@@ -57,6 +62,31 @@ TEST(CliPlanShotPosition, JsonGivesEveryShotsLeaveAndPlaysTheBestScore) {
     ASSERT_TRUE(a.contains("position"));
     EXPECT_LE(a["position"]["score"].get<double>(), p["score"].get<double>());
   }
+}
+
+TEST(CliPlanShotPosition, WithNoBallAfterTheTargetEveryShotHasALeaveOnItsPotAlone) {
+  // Only the cue ball and the 1 (a single-pot layout of the planner
+  // benchmark): no next ball, plan_shot()'s plan, its alternatives included.
+  const TempDir dir;
+  const std::string scenario = dir.write("two.json", R"({
+  "table": "pool_9ft",
+  "balls": [
+    {"id": 0, "position": [2.305099864712931, 0.9787961715433114]},
+    {"id": 1, "position": [0.49154198107436164, 0.9834269711414346]}
+  ]
+})");
+  const CliRun r = run_cli({"plan-shot", scenario, "--ball", "1", "--position", "--simulations", "1000", "--json"});
+  ASSERT_EQ(r.status, 0) << r.err;
+  const nlohmann::json j = nlohmann::json::parse(r.out);
+  EXPECT_TRUE(j["position"]["next"].is_null());
+  ASSERT_FALSE(j["alternatives"].empty());
+  for (const auto& a : j["alternatives"]) {
+    EXPECT_TRUE(a["position"]["next"].is_null());
+    EXPECT_EQ(a["position"]["score"], a["success_probability"]);
+  }
+  const CliRun text = run_cli({"plan-shot", scenario, "--ball", "1", "--position", "--simulations", "1000"});
+  ASSERT_EQ(text.status, 0) << text.err;
+  EXPECT_NE(text.out.find("no ball left after this one"), std::string::npos) << text.out;
 }
 
 TEST(CliPlanShotPosition, NextBallIsTheOneGivenAndTheTextSaysTheLeave) {

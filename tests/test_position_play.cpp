@@ -2,7 +2,9 @@
 // the choice maximising P(this pot) x P(next pot), each leave's next
 // probability reproduced by an independent plan on that table, the
 // lookahead doing at least as well as the shot planned without it (and
-// better somewhere), the default next ball, and bad input.
+// better somewhere), the default next ball, an explicit next target played
+// for (PositionRequest::next_targets), 9-ball's next targets given
+// explicitly the same plan as the default, and bad input.
 #include "cueball/planning/position_play.hpp"
 
 #include <gtest/gtest.h>
@@ -193,6 +195,12 @@ TEST(PositionPlay, WithNoBallLeftAfterTheTargetThereIsNoLookahead) {
   EXPECT_EQ(r.plan.shot.success_probability, plain.shot.success_probability);
   EXPECT_EQ(r.plan.rejected, plain.rejected);
   EXPECT_EQ(r.plan.simulations, plain.simulations);
+  // Every alternative has its leave (the CLI and Python read one each), on its pot alone.
+  ASSERT_EQ(r.alternative_leaves.size(), r.plan.alternatives.size());
+  for (std::size_t k = 0; k < r.plan.alternatives.size(); ++k) {
+    EXPECT_EQ(r.alternative_leaves[k].score, r.plan.alternatives[k].success_probability);
+    EXPECT_FALSE(r.alternative_leaves[k].next_feasible);
+  }
 }
 
 TEST(PositionPlay, BadInputNamesTheField) {
@@ -217,6 +225,86 @@ TEST(PositionPlay, BadInputNamesTheField) {
   EXPECT_EQ(field(q), "next_simulations");
   q = request_for(5);
   EXPECT_EQ(field(q), "target");
+  q = request_for(1);
+  q.next_targets = {{7}};
+  EXPECT_EQ(field(q), "next_targets");
+  q.next_targets = {{2}, {}};
+  EXPECT_EQ(field(q), "next_targets");
+  q.next_targets = {{0}};  // the cue ball
+  EXPECT_EQ(field(q), "next_targets");
+  q.next_targets = {{2}};
+  q.next_target = 2;  // not both
+  EXPECT_EQ(field(q), "next_targets");
+}
+
+// Cue ball 0, target 1 and the balls 2 and 3, by hand, the 2 and the 3
+// each open from somewhere.
+Scenario four_balls(int k) {
+  if (k == 0) return layout({{0, {0.9, 0.5}}, {1, {1.5, 0.8}}, {2, {2.0, 0.35}}, {3, {0.6, 0.95}}});
+  return layout({{0, {1.2, 0.3}}, {1, {1.9, 0.7}}, {2, {0.7, 0.9}}, {3, {2.1, 1.0}}});
+}
+
+TEST(PositionPlay, AnExplicitNextTargetIsPlayedFor) {
+  int checked = 0, played_for = 0;  // layouts planned; leaves whose next shot on the 3 is feasible
+  for (int which = 0; which < 2; ++which) {
+    const Scenario s = four_balls(which);
+    PositionRequest q = request_for(1);
+    q.next_targets = {{3}};  // a rule says: the 3 next, though the 2 is lower
+    PositionPlanResult r;
+    try {
+      r = plan_shot_for_position(s, q);
+    } catch (const NoFeasibleShot&) {
+      continue;
+    }
+    EXPECT_EQ(r.next_target, 3);
+    // Every leave is scored on the 3: its next plan is the 3's, bit for bit,
+    // from the table the shot leaves.
+    std::vector<std::pair<const PlannedShot*, const Leave*>> leaves{{&r.plan.shot, &r.leave}};
+    for (std::size_t k = 0; k < r.plan.alternatives.size(); ++k)
+      leaves.push_back({&r.plan.alternatives[k], &r.alternative_leaves[k]});
+    for (const auto& [shot, leave] : leaves) {
+      const Scenario left = table_left_by(s, *shot);
+      if (std::none_of(left.balls.begin(), left.balls.end(), [](const SimulationBall& b) { return b.id == 3; })) {
+        EXPECT_FALSE(leave->next_feasible);  // the 3 went down too: no next shot
+        continue;
+      }
+      PlanRequest n;
+      n.cue_ball = 0;
+      n.target = 3;
+      n.simulations = q.next_simulations;
+      try {
+        const ShotPlanResult next = plan_shot(left, n);
+        EXPECT_TRUE(leave->next_feasible);
+        EXPECT_EQ(leave->next_ball, 3);
+        ++played_for;
+        EXPECT_EQ(leave->next_success_probability, next.shot.success_probability);
+        EXPECT_EQ(leave->next_pocket, next.shot.pocket_name);
+      } catch (const NoFeasibleShot&) {
+        EXPECT_FALSE(leave->next_feasible);
+      }
+    }
+    // The default plays for the 2 instead.
+    EXPECT_EQ(plan_shot_for_position(s, request_for(1)).next_target, 2);
+    ++checked;
+  }
+  EXPECT_EQ(checked, 2);
+  EXPECT_GT(played_for, 2);
+}
+
+TEST(PositionPlay, NineBallsNextTargetsGivenExplicitlyAreTheDefaultPlan) {
+  const Scenario s = four_balls(1);
+  PositionRequest q = request_for(1);
+  const PositionPlanResult by_default = plan_shot_for_position(s, q);
+  q.next_targets = {{2}, {3}};  // the lowest ball, and where the shot pots it too, the next lowest
+  const PositionPlanResult given = plan_shot_for_position(s, q);
+  EXPECT_EQ(given.next_target, by_default.next_target);
+  EXPECT_EQ(given.plan.shot.strike, by_default.plan.shot.strike);
+  EXPECT_EQ(given.plan.shot.success_probability, by_default.plan.shot.success_probability);
+  EXPECT_EQ(given.leave.score, by_default.leave.score);
+  EXPECT_EQ(given.plan.simulations, by_default.plan.simulations);
+  ASSERT_EQ(given.alternative_leaves.size(), by_default.alternative_leaves.size());
+  for (std::size_t k = 0; k < given.alternative_leaves.size(); ++k)
+    EXPECT_EQ(given.alternative_leaves[k].score, by_default.alternative_leaves[k].score);
 }
 
 }  // namespace

@@ -6,7 +6,9 @@
 // returned, the success probability against an independent noisy batch, the
 // window probability as its formula and against noisy repeats, the aim scan
 // finding what geometry misses, a pot in any pocket counted when no pocket
-// is asked for, determinism, input validation and infeasible layouts.
+// is asked for, legal targets (PlanRequest::targets: the only pottable one
+// chosen though it is not the lowest, one target the same plan as `target`),
+// determinism, input validation and infeasible layouts.
 #include "cueball/planning/shot_planner.hpp"
 
 #include <gtest/gtest.h>
@@ -716,6 +718,83 @@ TEST(ShotPlanner, ARequestWithoutAPocketCountsAPotInAnyPocket) {
   }
   EXPECT_EQ(plan.shot.success_probability, static_cast<double>(anywhere) / plan.shot.noisy_shots);
   EXPECT_GT(anywhere, there) << "no noisy shot dropped elsewhere: the test cannot tell the two counts apart";
+}
+
+// docs/example-blocked.json: balls 2, 3 and 4 crowd the 1. With direct
+// shots only, the 1 and the 4 have none (blocked or too thin); the 3 has one
+// into the top side pocket.
+Scenario crowded_one() {
+  return layout({{0, {1.985, 0.281}}, {1, {1.683, 0.623}}, {2, {1.805, 0.603}}, {3, {1.586, 0.527}}, {4, {1.608, 0.677}}});
+}
+
+TEST(ShotPlanner, AmongLegalTargetsPotsTheOnlyPottableOneThoughNotTheLowest) {
+  const Scenario s = crowded_one();
+  PlanRequest q;
+  q.kinds = {ShotKind::direct};
+  q.simulations = 1000;
+  q.target = 1;
+  EXPECT_THROW(plan_shot(s, q), NoFeasibleShot);
+  q.targets = {1, 3, 4};  // 9-ball after a push, say: any of them is legal
+  const ShotPlanResult plan = plan_shot(s, q);
+  EXPECT_EQ(plan.shot.target, 3);
+  EXPECT_EQ(plan.shot.kind, ShotKind::direct);
+  for (const PlannedShot& a : plan.alternatives) EXPECT_EQ(a.target, 3);
+  // The replay drops the 3 in the planned pocket, the cue ball meeting it first.
+  const SimulationResult r = replay(s, plan, q);
+  EXPECT_TRUE(ball(r, 3).pocketed);
+  EXPECT_EQ(ball(r, 3).pocket, plan.shot.pocket);
+  EXPECT_FALSE(ball(r, 0).pocketed);
+  // The other targets' candidates are rejected under their ball's name.
+  EXPECT_TRUE(std::any_of(plan.rejected.begin(), plan.rejected.end(),
+                          [](const std::string& why) { return why.rfind("ball 1: direct into ", 0) == 0; }));
+  EXPECT_TRUE(std::any_of(plan.rejected.begin(), plan.rejected.end(),
+                          [](const std::string& why) { return why.rfind("ball 4: direct into ", 0) == 0; }));
+  // None of them pottable: one line naming them all.
+  q.targets = {1, 4};
+  try {
+    plan_shot(s, q);
+    ADD_FAILURE() << "expected NoFeasibleShot";
+  } catch (const NoFeasibleShot& e) {
+    EXPECT_EQ(std::string(e.what()).rfind("no feasible shot pots any of balls 1, 4 (", 0), 0u) << e.what();
+  }
+}
+
+TEST(ShotPlanner, OneLegalTargetIsThePlanOfThatTargetBitForBit) {
+  const Scenario s = corner_shot(20.0, {{2, {0.8, 0.4}}});
+  PlanRequest q;
+  q.simulations = 1000;
+  q.target = 1;
+  const ShotPlanResult by_target = plan_shot(s, q);
+  q.target = 2;  // ignored: targets is given
+  q.targets = {1};
+  const ShotPlanResult by_targets = plan_shot(s, q);
+  EXPECT_EQ(by_targets.shot.target, 1);
+  EXPECT_EQ(by_targets.shot.strike, by_target.shot.strike);
+  EXPECT_EQ(by_targets.shot.success_probability, by_target.shot.success_probability);
+  EXPECT_EQ(by_targets.simulations, by_target.simulations);
+  EXPECT_EQ(by_targets.rejected, by_target.rejected);
+  ASSERT_EQ(by_targets.alternatives.size(), by_target.alternatives.size());
+  for (std::size_t k = 0; k < by_target.alternatives.size(); ++k)
+    EXPECT_EQ(by_targets.alternatives[k].strike, by_target.alternatives[k].strike);
+}
+
+TEST(ShotPlanner, TargetsWithAMissingIdTheCueBallOrAnIdTwiceNameTheField) {
+  const Scenario s = corner_shot(0.0, {{2, {0.8, 0.4}}});
+  const auto message = [&](std::vector<int> targets) -> std::string {
+    PlanRequest q;
+    q.targets = std::move(targets);
+    try {
+      plan_shot(s, q);
+    } catch (const InvalidArgument& e) {
+      EXPECT_EQ(e.field(), "targets") << e.what();
+      return e.what();
+    }
+    ADD_FAILURE() << "expected InvalidArgument";
+    return "";
+  };
+  EXPECT_NE(message({1, 7}).find("targets[1] = 7 is not the id of a ball on the table"), std::string::npos);
+  EXPECT_NE(message({0, 1}).find("targets[0] = 0 is the cue ball"), std::string::npos);
+  EXPECT_NE(message({2, 1, 2}).find("targets[2] = 2 is given twice"), std::string::npos);
 }
 
 }  // namespace

@@ -1070,8 +1070,9 @@ def simulate_many(
 
 def plan_shot(
     scenario: _Scenario,
-    target: _Int,
+    target: _Int | None = None,
     *,
+    targets: Sequence[_Int] | None = None,
     cue_ball: _Int | None = None,
     pocket: str | _Int = "any",
     kinds: Sequence[str] = ("direct", "bank"),
@@ -1082,19 +1083,22 @@ def plan_shot(
     height: _Float | None = None,
     position: bool = False,
     next: _Int | None = None,
+    next_targets: Sequence[Sequence[_Int]] | None = None,
     next_simulations: _Int = 500,
     in_hand: bool = False,
     region: tuple[_Float, _Float, _Float, _Float] | None = None,
 ) -> dict[str, Any]:
-    """The strike that pots ball `target` (cueball plan-shot): the dict of `plan-shot --json`
-    (cue in degrees and ball radii, kind ('direct', 'bank' off one or two cushions, 'kick',
+    """The strike that pots ball `target`, or any ball of `targets` (the legal targets; give one of
+    the two) (cueball plan-shot): the dict of `plan-shot --json`
+    (cue in degrees and ball radii, target (the ball it pots), kind ('direct', 'bank' off one or two cushions, 'kick',
     'combination'), pocket, cushion, cushions, intermediate_ball, success_probability and its standard error,
     window_probability, aim_window_deg, speed_window m/s, robot, predicted, alternatives, rejected) and `scenario`,
     the Scenario with the planned cue. noise 'tournament', 'none', 'scenario' or a dict of sigmas
     as the scenario's "noise" (speed m/s, aim_deg, elevation_deg, side, height ball radii); raises
     NoFeasibleShot when nothing pots. position=True plays for position (plan-shot --position):
-    each shot's dict gains `position` (next, cue_ball, next_feasible, next_success_probability,
-    next_kind, next_pocket, screened_probability, score). in_hand=True places the cue ball too
+    next_targets: the next shots' legal targets in turn ([[2], [3], ...] for 9-ball, [[9, ..., 15], [8]]
+    for 8-ball; instead of next); each shot's dict gains `position` (next, cue_ball, next_feasible, next_success_probability,
+    next_kind, next_pocket, next_ball, screened_probability, score). in_hand=True places the cue ball too
     (plan-shot --in-hand; inside region=(x_min, x_max, y_min, y_max) m when given): the dict gains
     `in_hand` (cue_ball, spots, spots_played). Releases the GIL."""
 

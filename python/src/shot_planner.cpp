@@ -81,6 +81,7 @@ py::dict shot_dict(const Scenario& s, int cue_ball, const PlannedShot& shot, con
   cue["end_mass"] = s.cue_parameters.end_mass;
   py::dict d;
   d["cue"] = cue;
+  d["target"] = shot.target;
   d["kind"] = cueball::to_string(shot.kind);
   d["pocket"] = shot.pocket_name;
   d["cushion"] = shot.cushion.empty() ? py::object(py::none()) : py::object(py::str(shot.cushion));
@@ -116,6 +117,22 @@ py::dict shot_dict(const Scenario& s, int cue_ball, const PlannedShot& shot, con
   return d;
 }
 
+// target or targets (one of them) into the request.
+void set_targets(std::optional<int> target, const std::optional<std::vector<int>>& targets, cueball::PlanRequest& q) {
+  if (target && targets)
+    throw cueball::InvalidArgument("targets", "targets and target = " + std::to_string(*target) +
+                                                  " are both given; allowed: one of them");
+  if (!target && !targets)
+    throw cueball::InvalidArgument("target", "target is required: the id of the ball to pot (or targets, the ids of the legal targets)");
+  if (target) {
+    q.target = *target;
+    return;
+  }
+  if (targets->empty()) throw cueball::InvalidArgument("targets", "targets is empty; allowed: one or more ball ids");
+  q.targets = *targets;
+  q.target = targets->front();
+}
+
 py::dict leave_dict(const cueball::Leave& l, int next) {
   py::dict d;
   d["next"] = next >= 0 ? py::object(py::int_(next)) : py::object(py::none());
@@ -124,6 +141,7 @@ py::dict leave_dict(const cueball::Leave& l, int next) {
   d["next_success_probability"] = l.next_success_probability;
   d["next_kind"] = l.next_kind.empty() ? py::object(py::none()) : py::object(py::str(l.next_kind));
   d["next_pocket"] = l.next_pocket.empty() ? py::object(py::none()) : py::object(py::str(l.next_pocket));
+  d["next_ball"] = l.next_ball >= 0 ? py::object(py::int_(l.next_ball)) : py::object(py::none());
   d["screened_probability"] = l.screened_probability;
   d["score"] = l.score;
   return d;
@@ -134,9 +152,10 @@ py::dict leave_dict(const cueball::Leave& l, int next) {
 void bind_shot_planner(py::module_& m) {
   m.def(
       "plan_shot",
-      [](const py::object& scenario, int target, std::optional<int> cue_ball, const py::object& pocket,
-         const std::vector<std::string>& kinds, const py::object& noise, std::uint64_t seed, long long simulations,
-         double side, std::optional<double> height, bool position, std::optional<int> next,
+      [](const py::object& scenario, std::optional<int> target, std::optional<std::vector<int>> targets,
+         std::optional<int> cue_ball, const py::object& pocket, const std::vector<std::string>& kinds,
+         const py::object& noise, std::uint64_t seed, long long simulations, double side, std::optional<double> height,
+         bool position, std::optional<int> next, std::optional<std::vector<std::vector<int>>> next_targets,
          long long next_simulations, bool in_hand, std::optional<std::array<double, 4>> region) {
         if (simulations < cueball::kMinPlanSimulations || simulations > cueball::kMaxPlanSimulations)
           throw cueball::InvalidArgument("simulations", static_cast<double>(simulations),
@@ -147,7 +166,7 @@ void bind_shot_planner(py::module_& m) {
         const std::shared_ptr<const Scenario> s = load_scenario(input);
         cueball::PlanRequest q;
         q.cue_ball = cue_ball;
-        q.target = target;
+        set_targets(target, targets, q);
         q.pocket = pocket_index(pocket, *s);
         q.kinds = shot_kinds(kinds);
         q.noise = noise_model(noise, *s);
@@ -158,6 +177,8 @@ void bind_shot_planner(py::module_& m) {
         const bool position_play = position || in_hand;
         if (!position_play && next)
           throw cueball::InvalidArgument("next", "next = " + std::to_string(*next) + " needs position=True");
+        if (!position_play && next_targets)
+          throw cueball::InvalidArgument("next_targets", "next_targets needs position=True");
         if (!in_hand && region) throw cueball::InvalidArgument("region", "region needs in_hand=True");
         if (next_simulations < cueball::kMinPlanSimulations || next_simulations > cueball::kMaxPlanSimulations)
           throw cueball::InvalidArgument("next_simulations", static_cast<double>(next_simulations),
@@ -173,6 +194,7 @@ void bind_shot_planner(py::module_& m) {
             cueball::PositionRequest p;
             p.shot = q;
             p.next_target = next;
+            if (next_targets) p.next_targets = *next_targets;
             p.next_simulations = static_cast<int>(next_simulations);
             if (in_hand) {
               cueball::BallInHandRequest h{p, std::nullopt};
@@ -209,11 +231,14 @@ void bind_shot_planner(py::module_& m) {
         out["rejected"] = plan.rejected;
         return out;
       },
-      "scenario"_a, "target"_a, py::kw_only(), "cue_ball"_a = py::none(), "pocket"_a = "any",
+      "scenario"_a, "target"_a = py::none(), py::kw_only(), "targets"_a = py::none(), "cue_ball"_a = py::none(),
+      "pocket"_a = "any",
       "kinds"_a = std::vector<std::string>{"direct", "bank"}, "noise"_a = "tournament", "seed"_a = 0,
       "simulations"_a = 4000, "side"_a = 0.0, "height"_a = py::none(), "position"_a = false, "next"_a = py::none(),
-      "next_simulations"_a = cueball::kMinPlanSimulations, "in_hand"_a = false, "region"_a = py::none(),
-      "Plans the strike that pots ball `target` (cueball plan-shot, shot_planner.hpp): ghost-ball\n"
+      "next_targets"_a = py::none(), "next_simulations"_a = cueball::kMinPlanSimulations, "in_hand"_a = false, "region"_a = py::none(),
+      "Plans the strike that pots ball `target` (cueball plan-shot, shot_planner.hpp), or any ball of\n"
+      "`targets` (a list of ids, the legal targets: plan-shot --targets; give one of the two; each\n"
+      "shot's dict says its `target`): ghost-ball\n"
       "(direct, combination) and mirror-point (bank off one or two cushions, kick) geometry for a\n"
       "first aim, blocked paths and an obstructed cue skipped, the aim then solved on the exact simulation (throw, the cloth, the\n"
       "cushion), the aim and speed windows that still pot, and the success probability from noisy\n"
@@ -234,9 +259,11 @@ void bind_shot_planner(py::module_& m) {
       "variants at five tip heights and six speeds, the leaves scored by window probabilities, the three\n"
       "best screened and the next ball planned on the table each leaves; the one played maximises\n"
       "P(pot, screened) x P(next ball's pot), its success_probability then measured on fresh draws;\n"
-      "next: the next ball's id (None: the lowest id left); next_simulations: each next plan's budget;\n"
+      "next: the next ball's id (None: the lowest id left); next_targets: the next shots' legal targets\n"
+      "in turn, a list of lists of ids (9-ball [[2], [3], ...]; 8-ball [[9, ..., 15], [8]]: the next shot\n"
+      "pots any ball of the first list left on the table; instead of next); next_simulations: each next plan's budget;\n"
       "each shot's dict then has `position` (next, cue_ball, next_feasible, next_success_probability,\n"
-      "next_kind, next_pocket, screened_probability, score). in_hand=True: ball in hand (ball_in_hand.hpp;\n"
+      "next_kind, next_pocket, next_ball, screened_probability, score). in_hand=True: ball in hand (ball_in_hand.hpp;\n"
       "plan-shot --in-hand), the cue ball placed (its place in the scenario ignored) where the shot, played for\n"
       "position, scores best, inside region=(x_min, x_max, y_min, y_max) m when given; the dict then has\n"
       "`in_hand` (cue_ball, spots, spots_played) and `scenario` has the cue ball at its spot. Raises\n"

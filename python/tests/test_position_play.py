@@ -36,6 +36,20 @@ class PositionPlayTest(unittest.TestCase):
             nxt = cueball.plan_shot(left, 9, cue_ball=0, simulations=500)
             self.assertEqual(nxt["success_probability"], p["next_success_probability"])
 
+    def test_next_targets_given_explicitly(self) -> None:
+        # 9-ball's next targets given by the rule: the same plan as the default.
+        given = cueball.plan_shot(CUT, 1, simulations=1000, position=True, next_targets=[[9]])
+        self.assertEqual(given["cue"], self.plan["cue"])
+        self.assertEqual(given["position"], self.plan["position"])
+        self.assertEqual(given["position"]["next_ball"], 9 if given["position"]["next_feasible"] else None)
+        for next_targets in ([[42]], [[]], [[0]]):
+            with self.subTest(next_targets=next_targets), self.assertRaises(cueball.InvalidArgument) as e:
+                cueball.plan_shot(CUT, 1, simulations=1000, position=True, next_targets=next_targets)
+            self.assertEqual(e.exception.field, "next_targets")
+        with self.assertRaises(cueball.InvalidArgument) as e:
+            cueball.plan_shot(CUT, 1, next_targets=[[9]])
+        self.assertEqual(e.exception.field, "next_targets")
+
     def test_the_same_plan_as_the_cli(self) -> None:
         binary = os.environ.get("CUEBALL_BIN")
         if not binary:

@@ -97,6 +97,29 @@ class PlanShotTest(unittest.TestCase):
         with self.assertRaises(cueball.InvalidArgument) as e:
             cueball.plan_shot(CUT, 42)
         self.assertEqual(e.exception.field, "target")
+        for kwargs, field in (({"targets": [1, 42]}, "targets"), ({"targets": [0, 1]}, "targets"),
+                              ({"targets": [9, 9]}, "targets"), ({"targets": []}, "targets"),
+                              ({"target": 1, "targets": [9]}, "targets"), ({}, "target")):
+            with self.subTest(kwargs=kwargs), self.assertRaises(cueball.InvalidArgument) as e:
+                cueball.plan_shot(CUT, **kwargs)
+            self.assertEqual(e.exception.field, field)
+        with self.assertRaises(cueball.InvalidArgument) as e:
+            cueball.plan_shot(CUT, targets=[1, 42])
+        self.assertIn("targets[1] = 42 is not the id of a ball on the table", str(e.exception))
+
+    def test_targets_pots_the_only_pottable_legal_target(self) -> None:
+        # With direct shots only, of the 1, 3 and 4 of the blocked example only the 3 pots.
+        with self.assertRaises(cueball.NoFeasibleShot):
+            cueball.plan_shot(BLOCKED, targets=[1, 4], kinds=["direct"], simulations=1000)
+        plan = cueball.plan_shot(BLOCKED, targets=[1, 3, 4], kinds=["direct"], simulations=1000)
+        self.assertEqual(plan["target"], 3)
+        r = cueball.simulate(plan["scenario"])
+        three = list(r.balls["id"]).index(3)
+        self.assertTrue(r.balls["pocketed"][three])
+        # One target is the plan of that target.
+        alone = cueball.plan_shot(BLOCKED, 3, kinds=["direct"], simulations=1000)
+        self.assertEqual(alone["cue"], plan["cue"])
+        self.assertEqual(alone["target"], 3)
 
     def test_noise_as_a_dict_of_sigmas(self) -> None:
         # The scenario's "noise" keys and units; missing keys are 0.

@@ -3,7 +3,6 @@
 
 #include <algorithm>
 #include <chrono>
-#include <initializer_list>
 #include <string>
 #include <utility>
 
@@ -14,17 +13,15 @@ namespace cueball {
 
 namespace {
 
-bool has_ball(const Scenario& s, int id) {
-  return std::any_of(s.balls.begin(), s.balls.end(), [&](const SimulationBall& b) { return b.id == id; });
-}
+bool has_ball(const Scenario& s, int id) { return index_of(s.balls, id) < s.balls.size(); }
 
-// The lowest id on the table other than those of `except` (9-ball's next
-// ball); -1 when none.
-int lowest_ball(const Scenario& s, std::initializer_list<int> except) {
-  int next = -1;
-  for (const SimulationBall& b : s.balls)
-    if (std::find(except.begin(), except.end(), b.id) == except.end() && (next < 0 || b.id < next)) next = b.id;
-  return next;
+bool contains(const std::vector<int>& ids, int id) { return std::find(ids.begin(), ids.end(), id) != ids.end(); }
+
+// Where the noise-free shot leaves the cue ball.
+Vec2 cue_ball_end(const PlannedShot& shot, int cue_id) {
+  const auto cue_end = std::find_if(shot.predicted.begin(), shot.predicted.end(),
+                                    [&](const PredictedBall& p) { return p.id == cue_id; });
+  return cue_end->position;
 }
 
 // A candidate shot, the table it leaves and its leave's scores.
@@ -32,9 +29,208 @@ struct Candidate {
   PlannedShot shot;
   Leave leave;
   Scenario left;
-  int next_id = -1;          // the ball planned next on the table it leaves; -1: none left
-  double next_window = 0.0;  // the best next shot's window probability (1: no ball left)
+  std::vector<int> next_ids;  // the balls the next shot may pot on the table it leaves; empty: none left
+  double next_window = 0.0;   // the best next shot's window probability (1: no ball left)
 };
+
+// One position plan: the request, the next targets in turn, the next shot's
+// request and the engine runs counted so far.
+struct Lookahead {
+  const Scenario& s;
+  const PositionRequest& q;
+  int cue_id = 0;
+  std::vector<std::vector<int>> next_targets;  // PositionRequest::next_targets, resolved
+  PlanRequest next;      // the next shot's request (its targets set per leave)
+  int simulations = 0;   // engine runs of every plan made
+};
+
+// PositionRequest::next_targets checked: each set not empty, each id a ball
+// on the table other than the cue ball.
+void check_next_targets(const Scenario& s, const PositionRequest& q, int cue_id) {
+  if (q.next_target)
+    throw InvalidArgument("next_targets", "next_targets and next = " + std::to_string(*q.next_target) +
+                                              " are both given; allowed: one of them");
+  for (std::size_t k = 0; k < q.next_targets.size(); ++k) {
+    const std::string set = "next_targets[" + std::to_string(k) + "]";
+    if (q.next_targets[k].empty()) throw InvalidArgument("next_targets", set + " is empty; allowed: one or more ball ids");
+    for (std::size_t j = 0; j < q.next_targets[k].size(); ++j) {
+      const int id = q.next_targets[k][j];
+      const std::string name = set + "[" + std::to_string(j) + "] = " + std::to_string(id);
+      if (!has_ball(s, id)) throw InvalidArgument("next_targets", name + " is not the id of a ball on the table");
+      if (id == cue_id) throw InvalidArgument("next_targets", name + " is the cue ball; choose another ball");
+    }
+  }
+}
+
+// The next targets in turn: the request's next_targets, checked, or 9-ball's
+// rule: next_target (checked) when given, then every other object ball but
+// the shot's targets in id order, one at a time (the lowest ball left next).
+std::vector<std::vector<int>> next_targets_of(const Scenario& s, const PositionRequest& q, int cue_id) {
+  if (!q.next_targets.empty()) {
+    check_next_targets(s, q, cue_id);
+    return q.next_targets;
+  }
+  const std::vector<int> targets = target_ids(q.shot);
+  std::vector<std::vector<int>> in_turn;
+  if (q.next_target) {
+    const int next = *q.next_target;
+    if (!has_ball(s, next))
+      throw InvalidArgument("next", "next = " + std::to_string(next) + " is not the id of a ball on the table");
+    if (next == cue_id || contains(targets, next))
+      throw InvalidArgument("next", "next = " + std::to_string(next) + " is the " +
+                                        (next == cue_id ? std::string("cue ball") : q.shot.targets.empty() ? "target" : "a target") +
+                                        "; choose another ball");
+    in_turn.push_back({next});
+  }
+  std::vector<int> ids;
+  for (const SimulationBall& b : s.balls)
+    if (b.id != cue_id && !contains(targets, b.id) && !(q.next_target && b.id == *q.next_target)) ids.push_back(b.id);
+  std::sort(ids.begin(), ids.end());
+  for (int id : ids) in_turn.push_back({id});
+  return in_turn;
+}
+
+// The balls the next shot may pot on table `left`: those of the first set
+// in turn with a ball on it (other than the cue ball and `except`); empty
+// when none.
+std::vector<int> next_ids_on(const Scenario& left, const Lookahead& la, const std::vector<int>& except) {
+  for (const std::vector<int>& set : la.next_targets) {
+    std::vector<int> ids;
+    for (int id : set)
+      if (id != la.cue_id && !contains(except, id) && has_ball(left, id)) ids.push_back(id);
+    if (!ids.empty()) return ids;
+  }
+  return {};
+}
+
+// The next shot's request for those balls (one: its target, as plan_shot()
+// takes a lone target; several: its targets).
+PlanRequest next_request(const Lookahead& la, const std::vector<int>& ids) {
+  PlanRequest n = la.next;
+  n.target = ids.front();
+  n.targets = ids.size() > 1 ? ids : std::vector<int>{};
+  return n;
+}
+
+// Step 1's search: plan_shot()'s step 4 widened (every shot and variant kept).
+ShotSearch wide_search(const PositionRequest& q) {
+  ShotSearch wide;
+  wide.variant_heights = {kPositionHeights.begin(), kPositionHeights.end()};
+  wide.variant_speeds = {kPositionSpeedFactors.begin(), kPositionSpeedFactors.end()};
+  wide.vary_easy = true;
+  wide.keep_every = true;
+  wide.variant_runs = kPositionVariantBudgets * q.shot.simulations;
+  return wide;
+}
+
+// A leave with no next shot: scored on this pot alone.
+Leave leave_alone(const PlannedShot& shot, int cue_id) {
+  Leave leave;
+  leave.cue_ball = cue_ball_end(shot, cue_id);
+  leave.screened_probability = shot.success_probability;
+  leave.score = shot.success_probability;
+  return leave;
+}
+
+// With no next ball: plan_shot()'s own plan, each leave (the alternatives'
+// too) scored on its pot alone.
+void plan_without_lookahead(const Lookahead& la, PositionPlanResult& result) {
+  SearchedShots found = search_shots(la.s, la.q.shot, ShotSearch{});
+  result.plan = std::move(found.plan);
+  result.leave = leave_alone(result.plan.shot, la.cue_id);
+  for (const PlannedShot& alternative : result.plan.alternatives)
+    result.alternative_leaves.push_back(leave_alone(alternative, la.cue_id));
+}
+
+// Step 1's candidates: every shot and variant found, once per strike, at
+// least kPositionKeepFraction of the best's window probability, best first,
+// at most kPositionLeaves.
+std::vector<Candidate> candidate_leaves(std::vector<PlannedShot>& every) {
+  std::vector<Candidate> candidates;
+  double best_window = 0.0;
+  for (const PlannedShot& shot : every) best_window = std::max(best_window, shot.window_probability);
+  for (PlannedShot& shot : every) {
+    const bool known = std::any_of(candidates.begin(), candidates.end(),
+                                   [&](const Candidate& c) { return c.shot.strike == shot.strike; });
+    if (!known && shot.window_probability >= kPositionKeepFraction * best_window)
+      candidates.push_back({std::move(shot), {}, {}, {}, 0.0});
+  }
+  std::stable_sort(candidates.begin(), candidates.end(), [](const Candidate& a, const Candidate& b) {
+    return a.shot.window_probability > b.shot.window_probability;
+  });
+  if (candidates.size() > kPositionLeaves) candidates.resize(kPositionLeaves);
+  return candidates;
+}
+
+// Step 2: each leave scored by window probabilities alone (no noisy shot):
+// this shot's, times the best next shot's on the table it leaves; the
+// kMaxPositionCandidates best kept.
+void score_leaves_by_windows(Lookahead& la, std::vector<Candidate>& candidates) {
+  for (Candidate& c : candidates) {
+    c.leave.cue_ball = cue_ball_end(c.shot, la.cue_id);
+    c.left = table_left_by(la.s, c.shot);
+    // The next targets on the table it leaves (by default the next ball, or
+    // when the shot pots it too, the lowest ball left); none left: nothing
+    // to score.
+    c.next_ids = next_ids_on(c.left, la, {});
+    c.next_window = 1.0;
+    if (c.next_ids.empty()) continue;
+    c.next_window = best_window_probability(c.left, next_request(la, c.next_ids), la.simulations);
+  }
+  std::stable_sort(candidates.begin(), candidates.end(), [](const Candidate& a, const Candidate& b) {
+    return a.shot.window_probability * a.next_window > b.shot.window_probability * b.next_window;
+  });
+  if (candidates.size() > kMaxPositionCandidates) candidates.resize(kMaxPositionCandidates);
+}
+
+// Step 3: the finalists, each shot screened on the same noisy draws and the
+// next shot planned in full on the table it leaves; best score first.
+void screen_finalists(Lookahead& la, std::vector<Candidate>& candidates) {
+  const PositionRequest& q = la.q;
+  const int screen_shots = std::max(1, q.shot.simulations / kPositionScreenFraction);
+  for (Candidate& c : candidates) {
+    set_estimate(c.shot, noisy_successes(la.s, q.shot, la.cue_id, c.shot, screen_shots, kScreenFirstShot),
+                 screen_shots);
+    c.shot.simulations += screen_shots;
+    c.leave.screened_probability = c.shot.success_probability;
+    la.simulations += screen_shots;
+    if (c.next_ids.empty()) {
+      c.leave.score = c.leave.screened_probability;
+      continue;
+    }
+    try {
+      const ShotPlanResult n = plan_shot(c.left, next_request(la, c.next_ids));
+      la.simulations += n.simulations;
+      c.leave.next_feasible = true;
+      c.leave.next_ball = n.shot.target;
+      c.leave.next_success_probability = n.shot.success_probability;
+      c.leave.next_kind = to_string(n.shot.kind);
+      c.leave.next_pocket = n.shot.pocket_name;
+    } catch (const NoFeasibleShot&) {
+      la.simulations += q.next_simulations;
+    }
+    c.leave.score = c.leave.screened_probability * c.leave.next_success_probability;
+  }
+  std::stable_sort(candidates.begin(), candidates.end(),
+                   [](const Candidate& a, const Candidate& b) { return a.leave.score > b.leave.score; });
+}
+
+// Step 4: the one played measured on fresh draws (those plan_shot()'s final
+// estimate takes), so its estimate carries no selection bias; the others
+// its alternatives.
+void play_best(Lookahead& la, std::vector<Candidate>& candidates, PositionPlanResult& result) {
+  PlannedShot& played = candidates.front().shot;
+  const int final_shots = std::max(1, la.q.shot.simulations / kPositionEstimateFraction);
+  set_estimate(played, noisy_successes(la.s, la.q.shot, la.cue_id, played, final_shots, 0), final_shots);
+  played.simulations += final_shots;
+  la.simulations += final_shots;
+  result.plan.shot = std::move(played);
+  result.leave = candidates.front().leave;
+  for (std::size_t k = 1; k < candidates.size(); ++k) {
+    result.plan.alternatives.push_back(std::move(candidates[k].shot));
+    result.alternative_leaves.push_back(candidates[k].leave);
+  }
+}
 
 }  // namespace
 
@@ -63,136 +259,29 @@ PositionPlanResult plan_shot_for_position(const Scenario& table_state, const Pos
                           "engine runs of each next-shot plan");
   PositionPlanResult result;
   // The cue ball as plan_shot() takes it (which checks it, the target and the rest).
-  const int cue_id = q.shot.cue_ball ? *q.shot.cue_ball : s.cue ? s.cue->ball : 0;
-  if (q.next_target) {
-    const int next = *q.next_target;
-    if (!has_ball(s, next))
-      throw InvalidArgument("next", "next = " + std::to_string(next) + " is not the id of a ball on the table");
-    if (next == cue_id || next == q.shot.target)
-      throw InvalidArgument("next", "next = " + std::to_string(next) + " is the " +
-                                        (next == cue_id ? "cue ball" : "target") + "; choose another ball");
-    result.next_target = next;
-  } else {
-    result.next_target = lowest_ball(s, {cue_id, q.shot.target});
-  }
-
-  PlanRequest next = q.shot;
-  next.cue_ball = cue_id;
-  next.target = result.next_target;
-  next.pocket.reset();
-  next.simulations = q.next_simulations;
-
-  // 1. The shot planned with the wide variant search: every feasible shot
-  // and variant is a candidate leave.
-  ShotSearch wide;
-  wide.variant_heights = {kPositionHeights.begin(), kPositionHeights.end()};
-  wide.variant_speeds = {kPositionSpeedFactors.begin(), kPositionSpeedFactors.end()};
-  wide.vary_easy = true;
-  wide.keep_every = true;
-  wide.variant_runs = kPositionVariantBudgets * q.shot.simulations;
-  if (result.next_target < 0) wide = ShotSearch{};  // no lookahead: plan_shot()'s own plan
-  SearchedShots found = search_shots(s, q.shot, wide);
-  int simulations = found.plan.simulations;
+  Lookahead la{s, q, cue_ball_id(s, q.shot), {}, q.shot, 0};
+  la.next_targets = next_targets_of(s, q, la.cue_id);
+  const std::vector<int> next_ids = next_ids_on(s, la, target_ids(q.shot));
+  result.next_target = next_ids.empty() ? -1 : next_ids.front();
+  la.next.cue_ball = la.cue_id;
+  la.next.pocket.reset();
+  la.next.simulations = q.next_simulations;
   if (result.next_target < 0) {
-    result.plan = std::move(found.plan);
-    const auto cue_end = std::find_if(result.plan.shot.predicted.begin(), result.plan.shot.predicted.end(),
-                                      [&](const PredictedBall& p) { return p.id == cue_id; });
-    result.leave.cue_ball = cue_end->position;
-    result.leave.screened_probability = result.plan.shot.success_probability;
-    result.leave.score = result.plan.shot.success_probability;
+    plan_without_lookahead(la, result);
     result.plan.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     return result;
   }
+  // 1. The shot planned with the wide variant search: every feasible shot
+  // and variant is a candidate leave.
+  SearchedShots found = search_shots(s, q.shot, wide_search(q));
+  la.simulations = found.plan.simulations;
   result.plan.rejected = std::move(found.plan.rejected);
-  result.plan.cue_ball = cue_id;
-
-  // 2. The leaves scored by window probabilities alone (no noisy shot): this
-  // shot's, times the best next shot's on the table it leaves.
-  std::vector<Candidate> candidates;
-  double best_window = 0.0;
-  for (const PlannedShot& shot : found.every) best_window = std::max(best_window, shot.window_probability);
-  for (PlannedShot& shot : found.every) {
-    const bool known = std::any_of(candidates.begin(), candidates.end(),
-                                   [&](const Candidate& c) { return c.shot.strike == shot.strike; });
-    if (!known && shot.window_probability >= kPositionKeepFraction * best_window)
-      candidates.push_back({std::move(shot), {}, {}, -1, 0.0});
-  }
-  std::stable_sort(candidates.begin(), candidates.end(), [](const Candidate& a, const Candidate& b) {
-    return a.shot.window_probability > b.shot.window_probability;
-  });
-  if (candidates.size() > kPositionLeaves) candidates.resize(kPositionLeaves);
-  ShotSearch windows_only;
-  windows_only.noisy = false;
-  for (Candidate& c : candidates) {
-    const auto cue_end = std::find_if(c.shot.predicted.begin(), c.shot.predicted.end(),
-                                      [&](const PredictedBall& p) { return p.id == cue_id; });
-    c.leave.cue_ball = cue_end->position;
-    c.left = table_left_by(s, c.shot);
-    // The next target, or when the shot pots it too, the lowest ball left
-    // (9-ball's rule); none left: nothing to score.
-    PlanRequest n = next;
-    n.target = has_ball(c.left, result.next_target) ? result.next_target : lowest_ball(c.left, {cue_id});
-    c.next_id = n.target;
-    c.next_window = 1.0;
-    if (n.target < 0) continue;
-    c.next_window = 0.0;
-    try {
-      const SearchedShots w = search_shots(c.left, n, windows_only);
-      simulations += w.plan.simulations;
-      c.next_window = w.plan.shot.window_probability;
-    } catch (const NoFeasibleShot&) {
-      simulations += q.next_simulations;  // counted at its budget (the error does not say what it spent)
-    }
-  }
-  std::stable_sort(candidates.begin(), candidates.end(), [](const Candidate& a, const Candidate& b) {
-    return a.shot.window_probability * a.next_window > b.shot.window_probability * b.next_window;
-  });
-  if (candidates.size() > kMaxPositionCandidates) candidates.resize(kMaxPositionCandidates);
-
-  // 3. The finalists: each shot screened on the same noisy draws, the next
-  // shot planned in full on the table it leaves.
-  const int screen_shots = std::max(1, q.shot.simulations / kPositionScreenFraction);
-  for (Candidate& c : candidates) {
-    set_estimate(c.shot, noisy_successes(s, q.shot, cue_id, c.shot, screen_shots, kScreenFirstShot), screen_shots);
-    c.shot.simulations += screen_shots;
-    c.leave.screened_probability = c.shot.success_probability;
-    simulations += screen_shots;
-    if (c.next_id < 0) {
-      c.leave.score = c.leave.screened_probability;
-      continue;
-    }
-    try {
-      PlanRequest after = next;
-      after.target = c.next_id;
-      const ShotPlanResult n = plan_shot(c.left, after);
-      simulations += n.simulations;
-      c.leave.next_feasible = true;
-      c.leave.next_success_probability = n.shot.success_probability;
-      c.leave.next_kind = to_string(n.shot.kind);
-      c.leave.next_pocket = n.shot.pocket_name;
-    } catch (const NoFeasibleShot&) {
-      simulations += q.next_simulations;
-    }
-    c.leave.score = c.leave.screened_probability * c.leave.next_success_probability;
-  }
-  std::stable_sort(candidates.begin(), candidates.end(),
-                   [](const Candidate& a, const Candidate& b) { return a.leave.score > b.leave.score; });
-
-  // 4. The one played measured on fresh draws (those plan_shot()'s final
-  // estimate takes), so its estimate carries no selection bias.
-  PlannedShot& played = candidates.front().shot;
-  const int final_shots = std::max(1, q.shot.simulations / kPositionEstimateFraction);
-  set_estimate(played, noisy_successes(s, q.shot, cue_id, played, final_shots, 0), final_shots);
-  played.simulations += final_shots;
-  simulations += final_shots;
-
-  result.plan.shot = std::move(played);
-  result.leave = candidates.front().leave;
-  for (std::size_t k = 1; k < candidates.size(); ++k) {
-    result.plan.alternatives.push_back(std::move(candidates[k].shot));
-    result.alternative_leaves.push_back(candidates[k].leave);
-  }
-  result.plan.simulations = simulations;
+  result.plan.cue_ball = la.cue_id;
+  std::vector<Candidate> candidates = candidate_leaves(found.every);
+  score_leaves_by_windows(la, candidates);                       // 2.
+  screen_finalists(la, candidates);                              // 3.
+  play_best(la, candidates, result);                             // 4.
+  result.plan.simulations = la.simulations;
   result.plan.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return result;
 }

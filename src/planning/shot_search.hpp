@@ -3,7 +3,10 @@
 #pragma once
 
 #include <algorithm>
+#include <cstddef>
 #include <cstdint>
+#include <optional>
+#include <string>
 #include <vector>
 
 #include "cueball/planning/shot_planner.hpp"
@@ -47,14 +50,36 @@ int noisy_successes(const Scenario& table_state, const PlanRequest& q, int cue_b
 /// sqrt(p (1 - p) / shots) and noisy_shots to shots.
 void set_estimate(PlannedShot& shot, int hits, int shots);
 
-/// Distance from p to the segment a-b (the swept-circle test of a straight
-/// path: another ball's centre within 2R of it blocks it), m.
-inline double distance_to_path(Vec2 p, Vec2 a, Vec2 b) {
-  const Vec2 ab = b - a;
-  const double len2 = dot(ab, ab);
-  const double t = len2 > 0.0 ? std::clamp(dot(p - a, ab) / len2, 0.0, 1.0) : 0.0;
-  return norm(p - (a + t * ab));
+/// The planner's rule of success (shot_planner.hpp), on what a shot did: the
+/// cue ball's first contact is `first_ball` (the target, or a combination's
+/// ball A), the target dropped (`target_pocket`: its pocket's index, -1 when
+/// it stayed up) into `pocket`, or into any pocket when none is given, and
+/// the cue ball stayed up.
+inline bool pots_target(int first_contact, int first_ball, int target_pocket, std::optional<int> pocket,
+                        bool cue_pocketed) {
+  return first_contact == first_ball && (pocket ? target_pocket == *pocket : target_pocket >= 0) && !cue_pocketed;
 }
+
+/// The id of the ball the request strikes: PlanRequest::cue_ball, else the
+/// scenario's cue ball, else 0 (as plan_shot() takes it).
+inline int cue_ball_id(const Scenario& s, const PlanRequest& q) {
+  return q.cue_ball ? *q.cue_ball : s.cue ? s.cue->ball : 0;
+}
+
+/// The ids of the request's legal targets: PlanRequest::targets, or {target}
+/// when it is empty.
+inline std::vector<int> target_ids(const PlanRequest& q) {
+  return q.targets.empty() ? std::vector<int>{q.target} : q.targets;
+}
+
+/// "ball 1" for one target, "any of balls 1, 3, 5" for several.
+std::string targets_text(const std::vector<int>& ids);
+
+/// The best window probability of the request's shots on that table, from
+/// search_shots() without a noisy shot; 0 when no shot is feasible.
+/// `simulations` gains the engine runs spent (a plan with no feasible shot
+/// counted at its whole budget: the error does not say what it spent).
+double best_window_probability(const Scenario& table_state, const PlanRequest& q, int& simulations);
 
 /// Where plan_shot()'s noisy screen starts in the seed's stream (its final
 /// estimate starts at 0).

@@ -707,6 +707,12 @@ SimulationResult simulate_unchecked(const Table& table, const std::vector<Simula
   return Simulation(table, balls, settings).run();
 }
 
+std::size_t index_of(const std::vector<SimulationBall>& balls, int id) {
+  for (std::size_t i = 0; i < balls.size(); ++i)
+    if (balls[i].id == id) return i;
+  return balls.size();
+}
+
 const SimulationBall* find_ball(const std::vector<SimulationBall>& balls, int id) {
   for (const SimulationBall& b : balls)
     if (b.id == id) return &b;

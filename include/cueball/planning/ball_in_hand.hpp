@@ -3,7 +3,8 @@
 // leaves the next ball well, as after a foul in 9-ball or at the start of a
 // drill.
 //
-//   1. Spots. For each pocket whose straight path from the target O is clear
+//   1. Spots. For each target (PlanRequest::targets, or its target) and
+//      each pocket whose straight path from the target O is clear
 //      (no other ball's centre within 2R of the segment from O to the
 //      pocket's capture centre P), the ghost ball G = O - 2R u, u the unit
 //      vector from O to P (ghost-ball aiming: D. G. Alciatore, "The
@@ -24,7 +25,7 @@
 //      its pocket (a grid spot: of any shot asked for), plan_shot()'s
 //      noise-free search with kMinPlanSimulations runs. The kInHandSpots
 //      best are kept (window probabilities in steps of 0.02, then the shorter
-//      cue ball and object ball paths first), at most two a pocket (grid
+//      cue ball and object ball paths first), at most two a target and pocket (grid
 //      spots: no such limit).
 //   3. On each kept spot the shot is played for position
 //      (plan_shot_for_position(), the request's budgets, any pocket the

@@ -18,9 +18,11 @@
 //      the noise-free shot leaves them; plan_shot()'s geometry, aim solve and
 //      windows, `next_simulations` runs at most). The window probability is
 //      the planner's prediction of a shot's success (0.98 correlated with
-//      measured success on the planner benchmark). A shot that pots the
-//      next target too is scored on the ball after it (the lowest id left,
-//      9-ball's rule), and with no ball left on its window probability alone.
+//      measured success on the planner benchmark). The next target is the
+//      request's (PositionRequest::next_targets, as a rule gives them), by
+//      default 9-ball's: the lowest id; a shot that pots it too is scored on
+//      the ball after it (the lowest id left), and with no ball left on its
+//      window probability alone.
 //   3. The kMaxPositionCandidates best by that score are the finalists: each
 //      is screened on the same noisy draws (a kPositionScreenFraction-th of
 //      the request's budget: common random numbers, a paired comparison),
@@ -77,8 +79,18 @@ struct PositionRequest {
   PlanRequest shot;
   /// Id of the next target. None: the lowest id on the table other than the
   /// cue ball and the target (9-ball's rule); with no such ball there is no
-  /// lookahead and the shot is plan_shot()'s.
+  /// lookahead and the shot is plan_shot()'s. Where the shot pots it too,
+  /// the lowest id left is next. (A rule gives next_targets instead.)
   std::optional<int> next_target;
+  /// The next shots' legal targets, in turn, as a rule gives them: the next
+  /// shot may pot any ball of next_targets[0] that the shot leaves on the
+  /// table (PlanRequest::targets of the next plan); where it leaves none of
+  /// them, next_targets[1], and so on; where it leaves none of any, there is
+  /// no next shot and the leave scores this pot alone. 9-ball:
+  /// {{2}, {3}, ..., {9}} (the lowest ball, and where the shot pots it too,
+  /// the next lowest); 8-ball on the stripes: {{9, 10, ..., 15}, {8}}.
+  /// Empty: 9-ball's rule, from next_target when given (as above). Not both.
+  std::vector<std::vector<int>> next_targets;
   /// Engine runs of each next-shot plan, [kMinPlanSimulations, kMaxPlanSimulations].
   int next_simulations = kMinPlanSimulations;
 };
@@ -92,6 +104,7 @@ struct Leave {
   double screened_probability = 0.0;
   std::string next_kind;                   ///< the next shot's kind ("direct", ...); empty when infeasible
   std::string next_pocket;                 ///< the next shot's pocket name; empty when infeasible
+  int next_ball = -1;                      ///< the ball the next shot's plan pots; -1 when none or infeasible
   /// screened_probability x next_success_probability. When the noise-free
   /// shot pots the next target too, next_* are of the ball after it (the
   /// lowest id left); with no ball left, score = screened_probability.
@@ -100,14 +113,19 @@ struct Leave {
 
 struct PositionPlanResult {
   ShotPlanResult plan;                 ///< shot: the one played; alternatives: the others evaluated, by score
-  int next_target = -1;                ///< -1: no next ball, no lookahead
+  /// The next target on the table planned from (the first ball of the first
+  /// set of next_targets on it, other than the cue ball and the shot's
+  /// targets); -1: no next ball, no lookahead.
+  int next_target = -1;
   Leave leave;                         ///< plan.shot's
   std::vector<Leave> alternative_leaves;  ///< plan.alternatives[k]'s
 };
 
 /// Plans the shot for position (header comment). Throws what plan_shot()
 /// throws, and InvalidArgument("next") when next_target is not a ball on
-/// the table or is the cue ball or the target, InvalidArgument
+/// the table or is the cue ball or a target, InvalidArgument("next_targets")
+/// when one of its ids is not a ball on the table or is the cue ball, a set
+/// is empty or next_target is given too, InvalidArgument
 /// ("next_simulations") out of range. plan.simulations and plan.seconds
 /// count every plan made (a next plan that finds no feasible shot counted at
 /// its whole budget, so plan.simulations is an upper bound).

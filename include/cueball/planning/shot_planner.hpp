@@ -96,7 +96,9 @@
 // pocket, the cue ball's first contact is the target (for a combination: ball
 // A) and the cue ball is not pocketed (a scratch). A noisy shot succeeds on
 // the same terms, except that a request without a pocket (any pocket, as in
-// 9-ball) counts the target dropping in any pocket; a miscue or an
+// 9-ball) counts the target dropping in any pocket; with several legal
+// targets (PlanRequest::targets) each shot is planned on one of them, its
+// target, and succeeds on its own target's terms; a miscue or an
 // event-limit failure is a failure. Kinds are tried only when asked for: the default is direct
 // and bank (the kicks and combinations of a full table add about as many
 // candidates again; see the README's "Planning a 2D shot").
@@ -108,7 +110,9 @@
 // level unless the cue must be raised to clear a ball or the rail; the butt
 // of a level cue is below the rail, so most strikes come out at 2 degrees.
 // Deterministic: the same scenario, request and seed give the same plan bit
-// for bit, and the engine runs never exceed `simulations`.
+// for bit, and the engine runs never exceed `simulations`. In the library
+// each step above is a function of its own over one search state
+// (src/planning/search_state.hpp names them and their files).
 //
 // Cue obstruction: cue_obstructed() (table/cue_obstruction.hpp).
 #pragma once
@@ -183,10 +187,19 @@ bool cue_obstructed(const Table& table, const std::vector<SimulationBall>& balls
                     const BallParameters& ball);
 
 
+/// What the plan is asked to pot. A rule drives it through `targets` (the
+/// legal balls: 9-ball's lowest, an 8-ball group, snooker's reds) and
+/// `pocket` (a called pocket); a called ball is a single target. Existing
+/// callers give `target` alone: `targets` empty means {target}.
 struct PlanRequest {
   std::optional<int> cue_ball;           ///< id; default: the scenario's cue ball, else 0
-  int target = 1;                        ///< id of the ball to pot
-  std::optional<int> pocket;             ///< index into table.pockets; none: any pocket
+  int target = 1;                        ///< id of the ball to pot, when `targets` is empty
+  /// Ids of the legal targets: the plan pots any one of them (each target's
+  /// candidates searched as a lone target's are, in one order of ease and
+  /// one budget; the best shot of all chosen, PlannedShot::target naming its
+  /// ball). Empty: {target}. No id twice, none the cue ball.
+  std::vector<int> targets;
+  std::optional<int> pocket;             ///< index into table.pockets (a called pocket); none: any pocket
   std::vector<ShotKind> kinds{ShotKind::direct, ShotKind::bank};
   CueStrikeNoise noise = tournament_noise();  ///< m/s, rad, rad, m, m
   std::uint64_t seed = 0;
@@ -216,6 +229,7 @@ struct RobotForm {
 };
 
 struct PlannedShot {
+  int target = -1;                  ///< id of the ball it pots
   ShotKind kind = ShotKind::direct;
   int pocket = -1;                  ///< index into table.pockets
   std::string pocket_name;
@@ -259,7 +273,7 @@ struct ShotPlanResult {
 /// Plans the shot (header comment). The scenario's own "cue" strike is
 /// ignored (its cue mass and tip restitution are used). Throws
 /// InvalidArgument naming the field for bad input ("cue_ball", "target",
-/// "pocket", "kinds", "simulations", "side", "height", "sigma ...", the
+/// "targets", "pocket", "kinds", "simulations", "side", "height", "sigma ...", the
 /// scenario as the simulator checks it) and NoFeasibleShot when no
 /// candidate pots.
 ShotPlanResult plan_shot(const Scenario& table_state, const PlanRequest& request);

@@ -122,6 +122,8 @@ class SimulationError : public std::runtime_error {
 
 /// The ball with id `id`, or nullptr.
 const SimulationBall* find_ball(const std::vector<SimulationBall>& balls, int id);
+/// Index in `balls` of the ball with id `id`; balls.size() when none has it.
+std::size_t index_of(const std::vector<SimulationBall>& balls, int id);
 
 /// Throws InvalidArgument for bad input: parameters out of range, duplicate
 /// ids, a ball off the table or overlapping a cushion, two balls overlapping

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "common.hpp"
+#include "cueball/io/plan_json.hpp"
 #include "cueball/io/scenario_json.hpp"
 #include "cueball/io/result_json.hpp"
 #include "cueball/planning/ball_in_hand.hpp"
@@ -42,20 +43,6 @@ struct PlanShotFlags {
   double next_simulations = kMinPlanSimulations;
 };
 
-nlohmann::ordered_json leave_json(const Leave& l, int next) {
-  nlohmann::ordered_json j;
-  j["next"] = next >= 0 ? nlohmann::ordered_json(next) : nlohmann::ordered_json(nullptr);
-  j["cue_ball"] = {l.cue_ball.x, l.cue_ball.y};
-  j["next_feasible"] = l.next_feasible;
-  j["next_success_probability"] = l.next_success_probability;
-  j["next_kind"] = l.next_kind.empty() ? nlohmann::ordered_json(nullptr) : nlohmann::ordered_json(l.next_kind);
-  j["next_pocket"] = l.next_pocket.empty() ? nlohmann::ordered_json(nullptr) : nlohmann::ordered_json(l.next_pocket);
-  j["next_ball"] = l.next_ball >= 0 ? nlohmann::ordered_json(l.next_ball) : nlohmann::ordered_json(nullptr);
-  j["screened_probability"] = l.screened_probability;
-  j["score"] = l.score;
-  return j;
-}
-
 // The viewer page of the planned shot, noise-free, with its aim line and
 // ghost ball drawn (aim_overlay_json, viewer_page.hpp).
 void write_plan_page(const std::string& path, const Scenario& planned, int cue_ball) {
@@ -69,40 +56,6 @@ std::string noise_label(const PlanShotFlags& f) {
   return f.noise + (f.sigma.any() ? " noise with the --sigma-* flags" : " noise");
 }
 
-
-nlohmann::ordered_json shot_json(const Scenario& s, int cue_ball, const PlannedShot& shot, const CueStrikeNoise& noise) {
-  const nlohmann::ordered_json scenario = nlohmann::ordered_json::parse(scenario_to_json(scenario_with_shot(s, cue_ball, shot, noise)));
-  nlohmann::ordered_json j;
-  j["cue"] = scenario["cue"];
-  j["target"] = shot.target;
-  j["kind"] = to_string(shot.kind);
-  j["pocket"] = shot.pocket_name;
-  if (!shot.cushion.empty()) j["cushion"] = shot.cushion;
-  j["cushions"] = shot.cushions;
-  j["intermediate_ball"] = shot.intermediate_ball >= 0 ? nlohmann::ordered_json(shot.intermediate_ball)
-                                                       : nlohmann::ordered_json(nullptr);
-  j["success_probability"] = shot.success_probability;
-  j["success_standard_error"] = shot.success_standard_error;
-  j["noisy_shots"] = shot.noisy_shots;
-  j["window_probability"] = shot.window_probability;
-  j["aim_window_deg"] = {shot.aim_window_deg[0], shot.aim_window_deg[1]};
-  j["speed_window"] = {shot.speed_window[0], shot.speed_window[1]};
-  j["robot"] = {{"tip_height", shot.robot.tip_height}, {"cue_speed", shot.robot.cue_speed}};
-  j["ball_speed"] = shot.ball_speed;
-  j["geometric_aim_deg"] = shot.geometric_aim_deg;
-  j["cut_deg"] = shot.cut_deg;
-  if (shot.kind == ShotKind::combination) j["combination_cut_deg"] = shot.combination_cut_deg;
-  nlohmann::ordered_json predicted = nlohmann::ordered_json::array();
-  for (const PredictedBall& b : shot.predicted) {
-    nlohmann::ordered_json p{{"id", b.id}, {"position", {b.position.x, b.position.y}}, {"pocketed", b.pocketed}};
-    p["pocket"] = b.pocketed ? nlohmann::ordered_json(s.table.pockets[static_cast<std::size_t>(b.pocket)].name)
-                             : nlohmann::ordered_json(nullptr);
-    predicted.push_back(p);
-  }
-  j["predicted"] = predicted;
-  j["simulations"] = shot.simulations;
-  return j;
-}
 
 std::string describe(const PlannedShot& shot) {
   std::string off;
@@ -249,21 +202,7 @@ void run_plan_shot(const PlanShotFlags& f, std::ostream& out, std::ostream& err)
                     "--scenario-out", "the scenario file");
   if (!f.html.empty()) write_plan_page(f.html, scenario_with_shot(on, plan.cue_ball, plan.shot, q.noise), plan.cue_ball);
   if (f.json) {
-    nlohmann::ordered_json j = shot_json(on, plan.cue_ball, plan.shot, q.noise);
-    if (in_hand) j["in_hand"] = {{"cue_ball", {in_hand->cue_ball.x, in_hand->cue_ball.y}},
-                                 {"spots", in_hand->spots},
-                                 {"spots_played", in_hand->spots_played}};
-    if (position_play) j["position"] = leave_json(position.leave, position.next_target);
-    j["simulations"] = plan.simulations;
-    j["seconds"] = plan.seconds;
-    nlohmann::ordered_json alternatives = nlohmann::ordered_json::array();
-    for (std::size_t k = 0; k < plan.alternatives.size(); ++k) {
-      alternatives.push_back(shot_json(on, plan.cue_ball, plan.alternatives[k], q.noise));
-      if (position_play) alternatives.back()["position"] = leave_json(position.alternative_leaves[k], position.next_target);
-    }
-    j["alternatives"] = alternatives;
-    j["rejected"] = plan.rejected;
-    out << j.dump(2) << '\n';
+    out << plan_to_json(on, plan, q.noise, position_play ? &position : nullptr, in_hand ? &*in_hand : nullptr) << '\n';
     return;
   }
   const PlannedShot& b = plan.shot;

@@ -20,6 +20,7 @@
 #include <unistd.h>
 
 #include "common.hpp"
+#include "cueball/io/cushion_fit_data.hpp"
 #include "cueball/models/cushion/fit.hpp"
 #include "cueball/models/cushion/impact.hpp"
 #include "cueball/models/cushion/model.hpp"
@@ -30,7 +31,6 @@ namespace cueball::cli {
 namespace {
 
 constexpr double kDegree = std::numbers::pi / 180.0;
-constexpr std::size_t kMinFitResiduals = 3;
 
 // Solver and constants flags shared by both commands.
 struct CushionFlags {
@@ -631,99 +631,12 @@ struct FitFlags {
   ParameterFlags parameters;
 };
 
-// Reads measured impacts: per line either "v0,v_out" (head-on, rolling, no
-// side spin: the paper's experiment) or "v0,alpha_deg,topspin_k,sidespin_k,
-// v_out,beta_deg" (oblique). '#' starts a comment; a UTF-8 byte-order mark at
-// the start is skipped; the first line is a header when none of its cells is
-// a number. Every other line is data: an empty or non-numeric cell is an error
-// naming the file, the line and the cell.
-CushionFitData read_fit_data(const std::string& path, double radius) {
-  std::string text = read_text_file(path, "the data file", kMaxDataFileBytes);
-  if (text.rfind("\xEF\xBB\xBF", 0) == 0) text.erase(0, 3);
-  const std::string file = quote_input(path, kMaxEchoedPathChars);
-  CushionFitData data;
-  std::istringstream in(text);
-  std::string line;
-  const auto blank = [](const std::string& t, std::size_t from = 0) {
-    return t.find_first_not_of(" \t\r", from) == std::string::npos;
-  };
-  for (int number = 1; std::getline(in, line); ++number) {
-    if (const auto hash = line.find('#'); hash != std::string::npos) line.erase(hash);
-    if (blank(line)) continue;
-    const std::string where = file + ":" + std::to_string(number);
-    std::vector<double> values;
-    std::vector<std::string> cells;
-    {
-      std::size_t start = 0;
-      for (;;) {
-        const std::size_t comma = line.find(',', start);
-        cells.push_back(line.substr(start, comma == std::string::npos ? std::string::npos : comma - start));
-        if (comma == std::string::npos) break;
-        start = comma + 1;
-      }
-    }
-    std::size_t numeric = 0;
-    std::size_t bad = cells.size();  // the first cell that is not a number
-    for (std::size_t i = 0; i < cells.size(); ++i) {
-      const std::string& cell = cells[i];
-      char* end = nullptr;
-      errno = 0;
-      const double v = std::strtod(cell.c_str(), &end);
-      const bool ok = !blank(cell) && end != cell.c_str() && blank(cell, static_cast<std::size_t>(end - cell.c_str()));
-      if (ok) {
-        ++numeric;
-        values.push_back(v);
-      } else if (bad == cells.size()) {
-        bad = i;
-      }
-    }
-    if (bad < cells.size()) {
-      if (number == 1 && numeric == 0 && data.head_on.empty() && data.oblique.empty()) continue;  // a header
-      throw UsageError(where + ": cell " + std::to_string(bad + 1) + " = " + quote_input(cells[bad]) +
-                       (blank(cells[bad]) ? " is empty" : " is not a number") +
-                       "; expected v0,v_out or v0,alpha_deg,topspin_k,sidespin_k,v_out,beta_deg");
-    }
-    for (std::size_t i = 0; i < values.size(); ++i)
-      if (!std::isfinite(values[i]))
-        throw UsageError(where + ": cell " + std::to_string(i + 1) + " = " + quote_input(cells[i]) +
-                         " is not a finite number");
-    if (values.size() == 2) {
-      check_flag((where + ": v0").c_str(), values[0], 1e-6, kMaxSpeed, "incoming speed, m/s");
-      check_flag((where + ": v_out").c_str(), values[1], 0.0, kMaxSpeed, "measured rebound speed, m/s");
-      data.head_on.push_back({values[0], values[1]});
-    } else if (values.size() == 6) {
-      check_flag((where + ": v0").c_str(), values[0], 1e-6, kMaxSpeed, "incoming speed, m/s");
-      check_flag((where + ": alpha_deg").c_str(), values[1], 1e-9, 90.0, "angle of incidence, degrees");
-      check_flag((where + ": topspin_k").c_str(), values[2], -20.0, 20.0, "topspin as K V0/R");
-      check_flag((where + ": sidespin_k").c_str(), values[3], -20.0, 20.0, "sidespin as K V0/R");
-      check_flag((where + ": v_out").c_str(), values[4], 0.0, kMaxSpeed, "measured rebound speed, m/s");
-      check_flag((where + ": beta_deg").c_str(), values[5], 0.0, 180.0, "measured rebound angle, degrees");
-      ObliqueRebound o;
-      o.incidence = {values[0], values[1] * kDegree, values[2] * values[0] / radius, values[3] * values[0] / radius};
-      o.rebound_speed = values[4];
-      o.rebound_angle = values[5] * kDegree;
-      data.oblique.push_back(o);
-    } else {
-      throw UsageError(where + ": expected 2 numbers (v0,v_out) or 6 (v0,alpha_deg,topspin_k,sidespin_k,v_out,beta_deg), got " +
-                       std::to_string(values.size()));
-    }
-  }
-  // Two constants and an error estimate: at least 3 residuals (an oblique
-  // impact gives two, its rebound's two velocity components).
-  const std::size_t residuals = data.head_on.size() + 2 * data.oblique.size();
-  if (residuals < kMinFitResiduals)
-    throw UsageError(file + ": " + std::to_string(data.head_on.size()) + " head-on and " +
-                     std::to_string(data.oblique.size()) + " oblique measurements are too few; allowed: at least " +
-                     std::to_string(kMinFitResiduals) + " head-on, or 2 oblique, or 1 oblique and 1 head-on " +
-                     "(e_e, mu_w and the error need 3 residuals)");
-  return data;
-}
-
 void run_fit(const FitFlags& f, std::ostream& out, std::ostream& err) {
   check_flag("--steps", f.steps, 1, 1e7, "paper solver steps N");
   check_flag("--grid-step", f.grid_step, 0.001, 0.5, "grid spacing over (0, 1]^2");
   const Parameters p = resolve_parameters(f.parameters);
-  const CushionFitData data = read_fit_data(f.data, p.ball.radius);
+  const CushionFitData data = cushion_fit_data_from_csv(read_text_file(f.data, "the data file", kMaxDataFileBytes),
+                                                        quote_input(f.data, kMaxEchoedPathChars), p.ball.radius);
   CushionFitOptions options;
   options.solver = solver_named(f.solver);
   options.paper_steps = f.steps;

@@ -10,6 +10,7 @@
 
 #include "common.hpp"
 #include "cueball/io/plan_json.hpp"
+#include "cueball/io/viewer_json.hpp"
 #include "cueball/io/scenario_json.hpp"
 #include "cueball/io/result_json.hpp"
 #include "cueball/planning/ball_in_hand.hpp"
@@ -44,7 +45,7 @@ struct PlanShotFlags {
 };
 
 // The viewer page of the planned shot, noise-free, with its aim line and
-// ghost ball drawn (aim_overlay_json, viewer_page.hpp).
+// ghost ball drawn (aim_overlay_json, io/viewer_json.hpp).
 void write_plan_page(const std::string& path, const Scenario& planned, int cue_ball) {
   const SimulationResult r = run_scenario(planned);
   const std::string overlay = aim_overlay_json(r, planned.settings.parameters, cue_ball);

@@ -2,6 +2,7 @@
 #include <memory>
 
 #include "common.hpp"
+#include "cueball/io/viewer_json.hpp"
 #include "viewer_page.hpp"
 
 namespace cueball::cli {

@@ -1,6 +1,6 @@
 // Tests of `cueball plan-shot --html` and of the plan's --sigma-* noise flags
 // (cli/command_plan_shot.cpp), and of the aim overlay the page carries
-// (aim_overlay_json, cli/viewer_page.cpp): the page is written with the
+// (aim_overlay_json, src/io/viewer_json.cpp): the page is written with the
 // overlay, the ghost ball where the cue ball's centre is at first contact, a
 // kick's path through its cushion contact, `cueball view` keeps and checks
 // an overlay, bad input exits 2 naming the flag.
@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "cli_runner.hpp"
+#include "cueball/io/viewer_json.hpp"
 #include "cueball/io/scenario_json.hpp"
 #include "cueball/simulation/scenario.hpp"
 #include "plan_shot_scenarios.hpp"
@@ -129,7 +130,7 @@ TEST(CliPlanShotHtml, AKicksAimLineBendsAtTheCushion) {
     "cue": {"ball": 0, "speed": 3.0, "aim_deg": 90}
   })");
   const SimulationResult r = run_scenario(s);
-  const nlohmann::json overlay = nlohmann::json::parse(cli::aim_overlay_json(r, s.settings.parameters, 0));
+  const nlohmann::json overlay = nlohmann::json::parse(aim_overlay_json(r, s.settings.parameters, 0));
   const nlohmann::json& line = overlay["aim_line"];
   ASSERT_EQ(line.size(), 3u) << overlay;
   EXPECT_EQ(line[0], nlohmann::json::array({1.0, 0.635}));
@@ -147,7 +148,7 @@ TEST(CliPlanShotHtml, AKicksAimLineBendsAtTheCushion) {
     "cue": {"ball": 0, "speed": 0.2, "aim_deg": 180}
   })");
   const SimulationResult ra = run_scenario(alone);
-  const nlohmann::json none = nlohmann::json::parse(cli::aim_overlay_json(ra, alone.settings.parameters, 0));
+  const nlohmann::json none = nlohmann::json::parse(aim_overlay_json(ra, alone.settings.parameters, 0));
   EXPECT_TRUE(none["ghost_ball"].is_null());
   ASSERT_EQ(none["aim_line"].size(), 2u) << none;
   EXPECT_NEAR(distance(none["aim_line"][1], ra.balls[0].final_state.position.x, ra.balls[0].final_state.position.y), 0.0,

@@ -1,7 +1,8 @@
 // Benchmarks of whole shots (src/simulation/simulator.cpp): the built-in 9-ball break
 // under each ball-ball model and under each cushion model, a one-ball shot
 // with five cushion hits under each cushion model (the exact one also at the
-// planners' tolerance 1e-7), and batch throughput on one and
+// planners' tolerance 1e-7), what ShotFacts cost beside the simulation
+// they read (BM_ShotFacts), and batch throughput on one and
 // two threads (their ratio is the parallel speed-up), and simulate_many of
 // the same noisy breaks against simulate_batch (their throughput ratio, the
 // two run alternately in one process). Counters report events and
@@ -16,6 +17,7 @@
 #include "cueball/io/scenario_json.hpp"
 #include "cueball/simulation/batch.hpp"
 #include "cueball/simulation/scenario.hpp"
+#include "cueball/simulation/shot_facts.hpp"
 
 namespace {
 
@@ -155,5 +157,42 @@ void BM_ManyVsBatchBreaks(benchmark::State& st) {
   st.counters["many_over_batch"] = batch_seconds / many_seconds;
 }
 BENCHMARK(BM_ManyVsBatchBreaks)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->UseRealTime();
+
+// What a shot's facts cost beside its simulation (shot_facts.hpp), timed
+// alternately in one process: the events-only facts that every batch shot's
+// outcome reads (outcome_from_result, into storage it reuses) and the full facts a game rule reads
+// (head-string crossings on the exact paths, frozen balls). Counters are the
+// ratios to one simulate_unchecked() of the same shot: the built-in break
+// (arg 0) and a planner's cut shot among three other balls (arg 1).
+void BM_ShotFacts(benchmark::State& st) {
+  const Scenario s = st.range(0) == 0 ? default_scenario() : scenario_from_json(R"({"table": "pool_9ft",
+      "balls": [{"id": 0, "position": [0.8, 0.4]}, {"id": 1, "position": [1.6, 0.7]}, {"id": 2, "position": [1.2, 1.0]},
+                {"id": 3, "position": [2.0, 0.3]}, {"id": 4, "position": [0.5, 1.0]}],
+      "cue": {"ball": 0, "aim_deg": 18, "speed": 2.0}})");
+  const std::vector<SimulationBall> balls = balls_after_strike(s);
+  const Parameters& p = s.settings.parameters;
+  double simulate_s = 0.0, events_s = 0.0, full_s = 0.0;
+  ShotFacts reused;  // as a batch's worker keeps it (outcome_from_result)
+  for (auto _ : st) {
+    const auto t0 = std::chrono::steady_clock::now();
+    const SimulationResult r = simulate_unchecked(s.table, balls, s.settings);
+    const auto t1 = std::chrono::steady_clock::now();
+    shot_facts_into(r, 0, reused);
+    benchmark::DoNotOptimize(reused.contacts.size());
+    const auto t2 = std::chrono::steady_clock::now();
+    benchmark::DoNotOptimize(shot_facts(s.table, p, r, 0).head_string_crossings.size());
+    const auto t3 = std::chrono::steady_clock::now();
+    simulate_s += std::chrono::duration<double>(t1 - t0).count();
+    events_s += std::chrono::duration<double>(t2 - t1).count();
+    full_s += std::chrono::duration<double>(t3 - t2).count();
+  }
+  const double n = static_cast<double>(st.iterations());
+  st.counters["simulate_us"] = 1e6 * simulate_s / n;
+  st.counters["events_facts_us"] = 1e6 * events_s / n;
+  st.counters["full_facts_us"] = 1e6 * full_s / n;
+  st.counters["events_facts_over_simulate"] = events_s / simulate_s;
+  st.counters["full_facts_over_simulate"] = full_s / simulate_s;
+}
+BENCHMARK(BM_ShotFacts)->Arg(0)->Arg(1)->Unit(benchmark::kMicrosecond);
 
 }  // namespace

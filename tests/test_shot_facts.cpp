@@ -224,6 +224,33 @@ TEST(ShotFacts, BreakFactsAgreeWithEventsTrajectoriesAndShotOutcome) {
   for (int id : railed) EXPECT_GT(f.cushion_count_after_first_contact(id), 0);
 }
 
+// A batch worker's reused record: after another shot's facts, the same as fresh.
+TEST(ShotFacts, IntoAReusedRecordGivesTheFreshFacts) {
+  const Scenario brk = default_scenario();
+  const SimulationResult a = run_scenario(brk);
+  const Scenario kick = shot({{0, {1.0, 0.3}}, {1, {1.0, 0.9}}}, R"("aim_deg": -90, "speed": 2.0)");
+  const SimulationResult b = run_scenario(kick);
+  ShotFacts reused;
+  shot_facts_into(a, 0, reused);
+  ASSERT_FALSE(reused.contacts.empty());
+  shot_facts_into(b, 0, reused);
+  const ShotFacts fresh = shot_facts(b, 0);
+  EXPECT_EQ(reused.first_contact, fresh.first_contact);
+  EXPECT_EQ(reused.first_contact_time, fresh.first_contact_time);
+  EXPECT_EQ(reused.first_contact_simultaneous, fresh.first_contact_simultaneous);
+  EXPECT_EQ(reused.contacts.size(), fresh.contacts.size());
+  EXPECT_EQ(reused.cushions.size(), fresh.cushions.size());
+  EXPECT_EQ(reused.pots.size(), fresh.pots.size());
+  EXPECT_EQ(reused.jaws.size(), fresh.jaws.size());
+  EXPECT_EQ(reused.cue_cushions_before_contact.size(), fresh.cue_cushions_before_contact.size());
+  // A shot without a contact after one with: first_contact is reset.
+  const SimulationResult none = run_scenario(shot({{0, {1.0, 0.3}}, {1, {2.0, 0.9}}}, R"("aim_deg": 0, "speed": 0.5)"));
+  shot_facts_into(none, 0, reused);
+  EXPECT_EQ(reused.first_contact, -1);
+  EXPECT_TRUE(std::isnan(reused.first_contact_time));
+  EXPECT_TRUE(reused.contacts.empty());
+}
+
 TEST(ShotFacts, ResultJsonCarriesTheFacts) {
   const Scenario s = default_scenario();
   const SimulationResult r = run_scenario(s);

@@ -370,7 +370,8 @@ void outcome_from_result(const SimulationResult& r, int cue_ball, ShotOutcome& o
     out.pocket[i] = b.pocketed ? b.pocket : -1;
     out.final_position[i] = b.final_state.position;
   }
-  const ShotFacts facts = shot_facts(r, cue_ball);
+  thread_local ShotFacts facts;  // each worker's, its lists' storage reused shot after shot
+  shot_facts_into(r, cue_ball, facts);
   out.first_contact = facts.first_contact;
   for (const CushionHit& c : facts.cushions) {
     const auto i = static_cast<std::size_t>(

@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "cueball/physics/contact_prediction.hpp"
 #include "cueball/table/placement.hpp"
@@ -103,10 +104,25 @@ void frozen_at_start(const Table& table, const Parameters& p, const SimulationRe
 
 }  // namespace
 
+void shot_facts_into(const SimulationResult& result, int cue_ball, ShotFacts& f) {
+  f.cue_ball = cue_ball;
+  f.first_contact = -1;
+  f.first_contact_time = std::numeric_limits<double>::quiet_NaN();
+  f.first_contact_simultaneous = -1;
+  f.contacts.clear();
+  f.pots.clear();
+  f.cushions.clear();
+  f.cue_cushions_before_contact.clear();
+  f.jaws.clear();
+  f.head_string_crossings.clear();
+  f.frozen_balls.clear();
+  f.frozen_to_cushion.clear();
+  read_events(result, f);
+}
+
 ShotFacts shot_facts(const SimulationResult& result, int cue_ball) {
   ShotFacts f;
-  f.cue_ball = cue_ball;
-  read_events(result, f);
+  shot_facts_into(result, cue_ball, f);
   return f;
 }
 

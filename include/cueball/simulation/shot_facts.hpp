@@ -144,4 +144,8 @@ ShotFacts shot_facts(const Table& table, const Parameters& parameters, const Sim
 /// What batches use (outcome_from_result, batch.hpp).
 ShotFacts shot_facts(const SimulationResult& result, int cue_ball);
 
+/// shot_facts(result, cue_ball) into `facts`, reusing its lists' storage: no
+/// allocation once they have grown (a batch's worker keeps one).
+void shot_facts_into(const SimulationResult& result, int cue_ball, ShotFacts& facts);
+
 }  // namespace cueball

@@ -142,8 +142,11 @@ void run_plan_shot(const PlanShotFlags& f, std::ostream& out, std::ostream& err)
   const bool position_play = f.position || f.in_hand;
   if (!position_play && f.next) throw UsageError("--next = " + std::to_string(*f.next) + " needs --position");
   if (!f.in_hand && !f.region.empty()) throw UsageError("--region = " + quote_input(f.region) + " needs --in-hand");
-  std::optional<InHandRegion> region;
-  if (!f.region.empty()) {
+  std::optional<PlacementRegion> region;
+  if (const std::optional<PlacementRegion::Kind> kind = placement_region_from_string(f.region);
+      kind && *kind != PlacementRegion::Kind::rectangle) {
+    region = PlacementRegion{*kind};
+  } else if (!f.region.empty()) {
     std::vector<double> v;
     std::stringstream parts(f.region);
     for (std::string part; std::getline(parts, part, ',');) {
@@ -156,13 +159,14 @@ void run_plan_shot(const PlanShotFlags& f, std::ostream& out, std::ostream& err)
       }
       if (used == 0 || used != part.size() || !std::isfinite(x))
         throw UsageError("--region = " + quote_input(f.region) + ": " + quote_input(part) +
-                         " is not a finite number; allowed: x_min,x_max,y_min,y_max in m");
+                         " is not a finite number; allowed: x_min,x_max,y_min,y_max in m, or one of " +
+                         placement_region_names());
       v.push_back(x);
     }
     if (v.size() != 4)
       throw UsageError("--region = " + quote_input(f.region) + " has " + std::to_string(v.size()) +
                        " numbers; allowed: 4, x_min,x_max,y_min,y_max in m");
-    region = InHandRegion{v[0], v[1], v[2], v[3]};
+    region = PlacementRegion{PlacementRegion::Kind::rectangle, v[0], v[1], v[2], v[3]};
   }
   check_flag("--next-simulations", f.next_simulations, kMinPlanSimulations, kMaxPlanSimulations,
              "engine runs of each next-shot plan");
@@ -297,7 +301,8 @@ Command add_plan_shot_command(CLI::App& app) {
                 "Ball in hand: place the cue ball (its place in the scenario ignored) where the shot, played for\n"
                 "position, scores best; spots behind the target's ghost ball for each clear pocket");
   sub->add_option("--region", flags->region,
-                  "With --in-hand: where the cue ball may go, x_min,x_max,y_min,y_max in m (default: anywhere)");
+                  "With --in-hand: where the cue ball may go: x_min,x_max,y_min,y_max in m, or kitchen (behind the\n"
+                  "head string), d (snooker's D) or anywhere (the default)");
   sub->add_option("--next", flags->next, "With --position: id of the next ball (default: the lowest id left)");
   sub->add_option("--next-simulations", flags->next_simulations,
                   "With --position: engine runs of each next-shot plan, [500, 1e6]")

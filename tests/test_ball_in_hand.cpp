@@ -16,6 +16,8 @@
 #include "cueball/core/errors.hpp"
 #include "cueball/simulation/scenario.hpp"
 #include "cueball/simulation/simulator.hpp"
+#include "cueball/io/scenario_json.hpp"
+#include "cueball/table/rack.hpp"
 
 namespace cueball {
 namespace {
@@ -96,6 +98,29 @@ TEST(BallInHand, StaysInTheRegionAndIsDeterministic) {
   EXPECT_EQ(a.plan.plan.shot.strike.aim_deg, b.plan.plan.shot.strike.aim_deg);
   EXPECT_EQ(a.plan.plan.shot.strike.speed, b.plan.plan.shot.strike.speed);
   EXPECT_EQ(a.plan.plan.simulations, b.plan.plan.simulations);
+}
+
+// The table-level regions (placement.hpp): the kitchen on a pool table, the
+// D on a snooker table; the old rectangle type converts to the same plan.
+TEST(BallInHand, PlacesInTheKitchenAndInTheD) {
+  const Scenario s = two_balls();
+  BallInHandRequest q = request_for(1);
+  q.region = PlacementRegion{PlacementRegion::Kind::behind_head_string};
+  const BallInHandResult kitchen = plan_ball_in_hand(s, q);
+  EXPECT_LE(kitchen.cue_ball.x, head_string_x(s.table) + kPlacementTolerance);
+
+  const Scenario snooker = scenario_from_json(R"({"table": "snooker_12ft",
+      "balls": [{"id": 0, "position": [0.3, 0.9]}, {"id": 1, "position": [2.6, 1.2]}]})");
+  q.region = PlacementRegion{PlacementRegion::Kind::inside_d};
+  const BallInHandResult d = plan_ball_in_hand(snooker, q);
+  EXPECT_TRUE(in_region(snooker.table, *q.region, d.cue_ball));
+  const SnookerSpots spots = snooker_spots(snooker.table);
+  EXPECT_LE(norm(d.cue_ball - spots.brown), spots.d_radius + 1e-9);
+
+  BallInHandRequest old = request_for(1), now = request_for(1);
+  old.region = InHandRegion{0.0, 1.3, 0.0, 1.3};
+  now.region = PlacementRegion{PlacementRegion::Kind::rectangle, 0.0, 1.3, 0.0, 1.3};
+  EXPECT_EQ(plan_ball_in_hand(s, old).cue_ball.x, plan_ball_in_hand(s, now).cue_ball.x);
 }
 
 TEST(BallInHand, ATargetWithEveryPathBlockedHasNoSpotOnTheGridEither) {

@@ -104,6 +104,16 @@ TEST(CliPlanShotPosition, NextBallIsTheOneGivenAndTheTextSaysTheLeave) {
   EXPECT_EQ(plain.out.find("  position   "), std::string::npos);
 }
 
+TEST(CliPlanShotPosition, InHandTakesARegionByName) {
+  const TempDir dir;
+  const std::string scenario = dir.write("three.json", kThreeBalls);
+  const CliRun r = run_cli({"plan-shot", scenario, "--ball", "1", "--in-hand", "--region", "kitchen", "--simulations",
+                            "1000", "--json"});
+  ASSERT_EQ(r.status, 0) << r.err;
+  const nlohmann::json j = nlohmann::json::parse(r.out);
+  EXPECT_LE(j["in_hand"]["cue_ball"][0].get<double>(), 2.54 / 4 + 1e-9);  // behind the head string
+}
+
 TEST(CliPlanShotPosition, InHandPlacesTheCueBallAndTheWrittenScenarioReplaysFromThere) {
   const TempDir dir;
   const std::string scenario = dir.write("three.json", kThreeBalls);
@@ -145,6 +155,7 @@ TEST(CliPlanShotPosition, BadRegionIsAUsageErrorNamingTheFlag) {
   expect_usage_error({"plan-shot", scenario, "--ball", "1", "--region", "0,1,0,1"}, "--region");  // needs --in-hand
   expect_usage_error({"plan-shot", scenario, "--ball", "1", "--in-hand", "--region", "0,1,0"}, "--region");
   expect_usage_error({"plan-shot", scenario, "--ball", "1", "--in-hand", "--region", "0,1,0,x"}, "--region");
+  expect_usage_error({"plan-shot", scenario, "--ball", "1", "--in-hand", "--region", "nowhere"}, "--region");  // not a name
   expect_usage_error({"plan-shot", scenario, "--ball", "1", "--in-hand", "--region", "1,0,0,1"}, "--region");
   expect_usage_error({"plan-shot", scenario, "--ball", "1", "--in-hand", "--region", "0,1,0,nan"}, "--region");
   // Issue 24: wholly off the table was exit status 3 ("no spot for the cue ball").

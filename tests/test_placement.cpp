@@ -65,6 +65,17 @@ TEST(Placement, RegionsFollowTheirLines) {
   EXPECT_DOUBLE_EQ(b.y_max - b.y_min, 2.0 * s.d_radius);
 }
 
+TEST(Placement, RegionNames) {
+  EXPECT_EQ(placement_region_from_string("kitchen"), PlacementRegion::Kind::behind_head_string);
+  EXPECT_EQ(placement_region_from_string("behind_head_string"), PlacementRegion::Kind::behind_head_string);
+  EXPECT_EQ(placement_region_from_string("d"), PlacementRegion::Kind::inside_d);
+  EXPECT_EQ(placement_region_from_string("anywhere"), PlacementRegion::Kind::anywhere);
+  EXPECT_FALSE(placement_region_from_string("nowhere"));
+  for (const auto k : {PlacementRegion::Kind::anywhere, PlacementRegion::Kind::behind_head_string,
+                       PlacementRegion::Kind::inside_d, PlacementRegion::Kind::rectangle})
+    EXPECT_EQ(placement_region_from_string(to_string(k)), k);
+}
+
 TEST(Placement, RandomFreeSpotsAreFreeInTheRegionAndSeeded) {
   const Table snooker = preset_table("snooker_12ft");
   const double r = snooker.ball.radius;

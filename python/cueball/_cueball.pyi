@@ -1086,7 +1086,7 @@ def plan_shot(
     next_targets: Sequence[Sequence[_Int]] | None = None,
     next_simulations: _Int = 500,
     in_hand: bool = False,
-    region: tuple[_Float, _Float, _Float, _Float] | None = None,
+    region: tuple[_Float, _Float, _Float, _Float] | str | None = None,
 ) -> dict[str, Any]:
     """The strike that pots ball `target`, or any ball of `targets` (the legal targets; give one of
     the two) (cueball plan-shot): the dict of `plan-shot --json`
@@ -1099,7 +1099,7 @@ def plan_shot(
     next_targets: the next shots' legal targets in turn ([[2], [3], ...] for 9-ball, [[9, ..., 15], [8]]
     for 8-ball; instead of next); each shot's dict gains `position` (next, cue_ball, next_feasible, next_success_probability,
     next_kind, next_pocket, next_ball, screened_probability, score). in_hand=True places the cue ball too
-    (plan-shot --in-hand; inside region=(x_min, x_max, y_min, y_max) m when given): the dict gains
+    (plan-shot --in-hand; inside region=(x_min, x_max, y_min, y_max) m, or 'kitchen', 'd', 'anywhere', when given): the dict gains
     `in_hand` (cue_ball, spots, spots_played). Releases the GIL."""
 
 def _time_run_scenario(scenario: _Scenario = None, repetitions: _Int = 100) -> float:

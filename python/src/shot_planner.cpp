@@ -4,6 +4,8 @@
 // with the planned cue as a Scenario object.
 #include <array>
 #include <memory>
+#include <optional>
+#include <variant>
 #include <string>
 #include <vector>
 
@@ -65,6 +67,19 @@ std::optional<int> pocket_index(const py::object& pocket, const Scenario& s) {
                                                  "; allowed: 'any'" + names + " or an index");
   }
   return cast_argument<int>(pocket, "pocket", "a pocket's name, 'any' or an index");  // plan_shot checks the index's range
+}
+
+// region=: a name (placement.hpp: "kitchen", "d", "anywhere", ...) or a
+// rectangle (x_min, x_max, y_min, y_max), m.
+cueball::PlacementRegion placement_region(const std::variant<std::string, std::array<double, 4>>& region) {
+  if (const auto* r = std::get_if<std::array<double, 4>>(&region))
+    return {cueball::PlacementRegion::Kind::rectangle, (*r)[0], (*r)[1], (*r)[2], (*r)[3]};
+  const std::string& name = std::get<std::string>(region);
+  const std::optional<cueball::PlacementRegion::Kind> kind = cueball::placement_region_from_string(name);
+  if (!kind || *kind == cueball::PlacementRegion::Kind::rectangle)
+    throw cueball::InvalidArgument("region", "region = " + cueball::quote_input(name) + " is not known; allowed: (x_min, x_max, y_min, y_max) in m, or one of " +
+                                                 cueball::placement_region_names());
+  return {*kind};
 }
 
 py::dict shot_dict(const Scenario& s, int cue_ball, const PlannedShot& shot, const cueball::CueStrikeNoise& noise) {
@@ -156,7 +171,8 @@ void bind_shot_planner(py::module_& m) {
          std::optional<int> cue_ball, const py::object& pocket, const std::vector<std::string>& kinds,
          const py::object& noise, std::uint64_t seed, long long simulations, double side, std::optional<double> height,
          bool position, std::optional<int> next, std::optional<std::vector<std::vector<int>>> next_targets,
-         long long next_simulations, bool in_hand, std::optional<std::array<double, 4>> region) {
+         long long next_simulations, bool in_hand,
+         std::optional<std::variant<std::string, std::array<double, 4>>> region) {
         if (simulations < cueball::kMinPlanSimulations || simulations > cueball::kMaxPlanSimulations)
           throw cueball::InvalidArgument("simulations", static_cast<double>(simulations),
                                          "[" + std::to_string(cueball::kMinPlanSimulations) + ", " +
@@ -198,7 +214,7 @@ void bind_shot_planner(py::module_& m) {
             p.next_simulations = static_cast<int>(next_simulations);
             if (in_hand) {
               cueball::BallInHandRequest h{p, std::nullopt};
-              if (region) h.region = cueball::InHandRegion{(*region)[0], (*region)[1], (*region)[2], (*region)[3]};
+              if (region) h.region = placement_region(*region);
               placed = cueball::plan_ball_in_hand(*s, h);
               played = placed->plan;
             } else {
@@ -265,7 +281,8 @@ void bind_shot_planner(py::module_& m) {
       "each shot's dict then has `position` (next, cue_ball, next_feasible, next_success_probability,\n"
       "next_kind, next_pocket, next_ball, screened_probability, score). in_hand=True: ball in hand (ball_in_hand.hpp;\n"
       "plan-shot --in-hand), the cue ball placed (its place in the scenario ignored) where the shot, played for\n"
-      "position, scores best, inside region=(x_min, x_max, y_min, y_max) m when given; the dict then has\n"
+      "position, scores best, inside region (a rectangle (x_min, x_max, y_min, y_max) m, or 'kitchen', 'd',\n"
+      "'anywhere') when given; the dict then has\n"
       "`in_hand` (cue_ball, spots, spots_played) and `scenario` has the cue ball at its spot. Raises\n"
       "NoFeasibleShot when no candidate pots. Releases the GIL while planning.");
 }

@@ -61,6 +61,20 @@ class PositionPlayTest(unittest.TestCase):
             self.assertEqual(cli[key], self.plan[key], key)
         self.assertEqual(cli["position"]["score"], self.plan["position"]["score"])
 
+    def test_in_hand_takes_a_region_by_name_as_the_cli_does(self) -> None:
+        plan = cueball.plan_shot(CUT, 1, simulations=1000, in_hand=True, region="kitchen")
+        x, _ = plan["in_hand"]["cue_ball"]
+        self.assertLessEqual(x, 2.54 / 4 + 1e-9)  # behind the head string of the 9-ft table
+        with self.assertRaises(cueball.InvalidArgument) as caught:
+            cueball.plan_shot(CUT, 1, in_hand=True, region="nowhere")
+        self.assertEqual(caught.exception.field, "region")
+        self.assertIn("kitchen", str(caught.exception))
+        binary = os.environ.get("CUEBALL_BIN")
+        if binary:
+            out = subprocess.run([binary, "plan-shot", str(CUT), "--ball", "1", "--simulations", "1000", "--in-hand",
+                                  "--region", "kitchen", "--json"], check=True, capture_output=True, text=True).stdout
+            self.assertEqual(json.loads(out)["in_hand"]["cue_ball"], list(plan["in_hand"]["cue_ball"]))
+
     def test_in_hand_places_the_cue_ball_inside_the_region_and_the_scenario_replays_from_there(self) -> None:
         plan = cueball.plan_shot(CUT, 1, simulations=1000, in_hand=True, region=(0.0, 1.27, 0.0, 1.27))
         x, y = plan["in_hand"]["cue_ball"]

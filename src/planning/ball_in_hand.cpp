@@ -44,7 +44,7 @@ void check_bounds(const char* lo_name, double lo, const char* hi_name, double hi
 
 // InvalidArgument("region") for a region wholly off the playing surface: bad
 // input, not a shot without an answer.
-void check_on_table(const InHandRegion& r, const Table& t) {
+void check_on_table(const PlacementRegion& r, const Table& t) {
   if (r.x_max <= 0.0 || r.x_min >= t.length || r.y_max <= 0.0 || r.y_min >= t.width)
     throw InvalidArgument("region", "region [" + format_number(r.x_min) + ", " + format_number(r.x_max) + "] x [" +
                                         format_number(r.y_min) + ", " + format_number(r.y_max) +
@@ -76,8 +76,7 @@ struct Hand {
   }
   // A place for the cue ball: inside the region, on the bed, kInHandGap clear of every ball.
   bool placeable(Vec2 p) const {
-    if (q.region && (p.x < q.region->x_min || p.x > q.region->x_max || p.y < q.region->y_min || p.y > q.region->y_max))
-      return false;
+    if (q.region && !in_region(s.table, *q.region, p)) return false;
     if (!ball_on_table(s.table, p, R)) return false;
     return std::all_of(without.balls.begin(), without.balls.end(), [&](const SimulationBall& o) {
       return norm(o.state.position - p) >= 2.0 * R + kInHandGap;
@@ -124,7 +123,7 @@ Hand hand_of(const Scenario& s, const BallInHandRequest& q) {
 // The distances behind G along -w that a region adds: where the line first
 // lies inside it (a kInHandGap in), and the middle of its stretch inside,
 // up to kInHandFarthest.
-void add_region_distances(const InHandRegion& region, Vec2 G, Vec2 w, std::vector<double>& distances) {
+void add_region_distances(const PlacementRegion& region, Vec2 G, Vec2 w, std::vector<double>& distances) {
   double lo = 0.0, hi = kInHandFarthest;
   const auto slab = [&](double g, double dir, double min, double max) {
     if (dir == 0.0) {
@@ -151,7 +150,7 @@ void add_ghost_ball_spots(const Hand& h, const Target& target, std::size_t k, st
   for (const double cut : kInHandCutsDeg) {
     const Vec2 w = rotated(u, cut * kDegree);  // the cue ball's direction to G
     std::vector<double> distances(kInHandDistances.begin(), kInHandDistances.end());
-    if (h.q.region) add_region_distances(*h.q.region, G, w, distances);
+    if (h.q.region) add_region_distances(bounding_rectangle(h.s.table, *h.q.region), G, w, distances);
     for (const double d : distances) {
       const Vec2 C = G - d * w;
       if (h.placeable(C) && h.clear(C, G, target.id)) spots.push_back(h.spot_at(C, target.id, static_cast<int>(k), d + op));
@@ -176,9 +175,8 @@ std::vector<Spot> ghost_ball_spots(const Hand& h) {
 // bed (or the region), each free place a spot for any shot asked for.
 std::vector<Spot> grid_spots(const Hand& h) {
   std::vector<Spot> spots;
-  const std::optional<InHandRegion>& region = h.q.region;
-  const double x0 = region ? region->x_min : 0.0, x1 = region ? region->x_max : h.s.table.length;
-  const double y0 = region ? region->y_min : 0.0, y1 = region ? region->y_max : h.s.table.width;
+  const PlacementRegion box = bounding_rectangle(h.s.table, h.q.region ? *h.q.region : PlacementRegion{});
+  const double x0 = box.x_min, x1 = box.x_max, y0 = box.y_min, y1 = box.y_max;
   for (int i = 0; i < kInHandGrid[0]; ++i)
     for (int j = 0; j < kInHandGrid[1]; ++j) {
       const Vec2 C{x0 + (x1 - x0) * (i + 0.5) / kInHandGrid[0], y0 + (y1 - y0) * (j + 0.5) / kInHandGrid[1]};
@@ -250,7 +248,7 @@ void play_kept_spots(const Hand& h, const std::vector<const Spot*>& kept, BallIn
 
 BallInHandResult plan_ball_in_hand(const Scenario& table_state, const BallInHandRequest& q) {
   const auto start = std::chrono::steady_clock::now();
-  if (q.region) {
+  if (q.region && q.region->kind == PlacementRegion::Kind::rectangle) {
     check_bounds("x_min", q.region->x_min, "x_max", q.region->x_max);
     check_bounds("y_min", q.region->y_min, "y_max", q.region->y_max);
     check_on_table(*q.region, table_state.table);

@@ -64,6 +64,17 @@ const char* to_string(PlacementRegion::Kind kind) {
   return "?";
 }
 
+std::optional<PlacementRegion::Kind> placement_region_from_string(std::string_view name) {
+  using Kind = PlacementRegion::Kind;
+  for (const Kind k : {Kind::anywhere, Kind::behind_head_string, Kind::inside_d, Kind::rectangle})
+    if (name == to_string(k)) return k;
+  if (name == "kitchen") return Kind::behind_head_string;
+  if (name == "d") return Kind::inside_d;
+  return std::nullopt;
+}
+
+std::string placement_region_names() { return "anywhere, behind_head_string (kitchen), inside_d (d)"; }
+
 bool in_region(const Table& table, const PlacementRegion& r, Vec2 p) {
   constexpr double tol = kPlacementTolerance;
   switch (r.kind) {

@@ -37,6 +37,7 @@
 #include <optional>
 
 #include "cueball/planning/position_play.hpp"
+#include "cueball/table/placement.hpp"
 
 namespace cueball {
 
@@ -53,17 +54,21 @@ inline constexpr std::size_t kInHandSpots = 4;
 /// Least gap between the placed cue ball and any other ball, m.
 inline constexpr double kInHandGap = 0.002;
 
-/// Where the cue ball may go: [x_min, x_max] x [y_min, y_max], m (e.g. the
-/// kitchen, behind the head string).
+/// A rectangle [x_min, x_max] x [y_min, y_max], m, as earlier releases took
+/// the region; it converts to a PlacementRegion of kind rectangle. Kept for
+/// one release: use PlacementRegion (table/placement.hpp).
 struct InHandRegion {
   double x_min = 0.0, x_max = 0.0, y_min = 0.0, y_max = 0.0;
+  operator PlacementRegion() const { return {PlacementRegion::Kind::rectangle, x_min, x_max, y_min, y_max}; }
 };
 
 struct BallInHandRequest {
   /// The shot and its lookahead (position_play.hpp); the cue ball's own
   /// place on the table, if any, is ignored.
   PositionRequest position;
-  std::optional<InHandRegion> region;  ///< none: anywhere on the bed
+  /// Where the cue ball may go (table/placement.hpp: anywhere, behind the
+  /// head string, inside the D, a rectangle); none: anywhere on the bed.
+  std::optional<PlacementRegion> region;
 };
 
 struct BallInHandResult {

@@ -9,6 +9,8 @@
 #pragma once
 
 #include <optional>
+#include <string>
+#include <string_view>
 #include <vector>
 
 #include "cueball/core/random.hpp"
@@ -54,6 +56,13 @@ struct PlacementRegion {
 /// The region's name, as the JSON and the CLI write it: "anywhere",
 /// "behind_head_string", "inside_d", "rectangle".
 const char* to_string(PlacementRegion::Kind kind);
+
+/// The kind named `name` (to_string's names; "kitchen" for
+/// behind_head_string and "d" for inside_d too), or none.
+std::optional<PlacementRegion::Kind> placement_region_from_string(std::string_view name);
+/// The names of the kinds without a rectangle's bounds, for messages:
+/// "anywhere, behind_head_string (kitchen), inside_d (d)".
+std::string placement_region_names();
 
 /// True when the centre p lies in the region, its lines included (to within
 /// kPlacementTolerance, so that a spot computed on a line, such as the D's

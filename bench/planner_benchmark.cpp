@@ -511,19 +511,15 @@ struct RackRecord {
 };
 
 Scenario with_balls_at(const Scenario& s, const ManyResult& m, std::size_t shot, std::vector<int>& potted_ids) {
-  Scenario out = s;
-  out.balls.clear();
   const auto n = static_cast<std::size_t>(m.balls);
+  std::vector<BallAfterShot> after;
   for (std::size_t j = 0; j < n; ++j) {
-    if (m.pocketed[shot * n + j]) {
-      potted_ids.push_back(s.balls[j].id);
-      continue;
-    }
-    SimulationBall b = s.balls[j];
-    b.state = BallState{};
-    b.state.position = {m.final_position[(shot * n + j) * 2], m.final_position[(shot * n + j) * 2 + 1]};
-    out.balls.push_back(b);
+    const std::size_t e = shot * n + j;
+    if (m.pocketed[e]) potted_ids.push_back(s.balls[j].id);
+    after.push_back({s.balls[j].id, {m.final_position[2 * e], m.final_position[2 * e + 1]}, m.pocketed[e] != 0, m.pocket[e]});
   }
+  Scenario out = table_after(s, after);
+  out.cue = s.cue;  // the break's scenario keeps its strike for the caller to replace
   return out;
 }
 

@@ -391,5 +391,37 @@ TEST(ScenarioNoise, NoiseFromJsonIsTheScenariosReader) {
   }
 }
 
+// The table a shot leaves (scenario.hpp table_after): the balls not pocketed
+// at rest where they stopped, in their order, no cue; the next shot plays on it.
+TEST(Scenario, TableAfterIsWhereTheBallsStopped) {
+  const Scenario s = default_scenario();
+  const SimulationResult r = run_scenario(s);
+  const Scenario after = table_after(s, r);
+  EXPECT_FALSE(after.cue);
+  std::size_t k = 0;
+  for (const BallTrajectory& b : r.balls) {
+    if (b.pocketed) continue;
+    ASSERT_LT(k, after.balls.size());
+    EXPECT_EQ(after.balls[k].id, b.id);
+    EXPECT_EQ(after.balls[k].state.position.x, b.final_state.position.x);
+    EXPECT_EQ(after.balls[k].state.position.y, b.final_state.position.y);
+    EXPECT_EQ(after.balls[k].state.velocity.x, 0.0);
+    ++k;
+  }
+  EXPECT_EQ(k, after.balls.size());
+  // A pocketed ball is left off; a ball `after` does not name is too.
+  std::vector<BallAfterShot> ends = balls_after_shot(r);
+  ends[1].pocketed = true;
+  ends.pop_back();
+  const Scenario fewer = table_after(s, ends);
+  EXPECT_EQ(fewer.balls.size() + 2, s.balls.size() - static_cast<std::size_t>(std::count_if(
+                                         r.balls.begin(), r.balls.end(), [](const BallTrajectory& b) { return b.pocketed; })));
+  // The next shot plays on it: the cue ball struck from where it stopped.
+  Scenario next = after;
+  next.cue = s.cue;
+  next.cue->target.reset();
+  EXPECT_NO_THROW((void)run_scenario(next));
+}
+
 }  // namespace
 }  // namespace cueball

@@ -1019,6 +1019,8 @@ class Result:
     @property
     def jaw_names(self) -> list[str]:
         """the table's jaws, indexed by events['jaw'] (the result JSON's jaw_name)"""
+    def table_after(self) -> Scenario:
+        """The table this shot leaves: balls not pocketed at rest where they stopped, no cue strike."""
     def state_at(self, times: _Float | Sequence[_Float] | NDArray[Any]) -> StateArrays:
         """Every ball at each time (s, finite, >= 0; a number or 1-D); releases the GIL."""
     def sample(self, rate: _Float) -> StateArrays:

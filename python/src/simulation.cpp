@@ -329,6 +329,12 @@ void bind_simulation(py::module_& m) {
           },
           "the table's jaw names (as the result JSON's events give them), indexed by events['jaw']")
       .def(
+          "table_after",
+          [](const Result& r) { return std::make_shared<cueball::Scenario>(cueball::table_after(*r.scenario, r.result)); },
+          "The table this shot leaves, as a Scenario to plan or play the next shot on: the same table and\n"
+          "settings, every ball not pocketed at rest where it stopped, no cue strike (result.scenario is\n"
+          "the table before the shot).")
+      .def(
           "state_at", [](const Result& r, const py::object& times) { return states_dict(r, checked_times(times)); },
           "times"_a,
           "Every ball's state at each time (s; a number or a 1-D array, finite, >= 0; after end_time the\n"

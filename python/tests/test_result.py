@@ -133,6 +133,19 @@ class ResultTest(unittest.TestCase):
             self.assertEqual(facts["first_contact"]["ball"], first)
         self.assertEqual(self.result.facts["first_contact"]["ball"], 1)  # the break, aimed at the 1
 
+    def test_table_after_is_where_the_balls_stopped(self):
+        after = self.cut.table_after()
+        d = after.to_dict()
+        self.assertNotIn("cue", d)
+        balls = self.cut.balls
+        left = [int(i) for i, p in zip(balls["id"], balls["pocketed"]) if not p]
+        self.assertEqual([b["id"] for b in d["balls"]], left)
+        for b in d["balls"]:
+            k = list(balls["id"]).index(b["id"])
+            self.assertEqual(tuple(b["position"]), tuple(balls["position"][k]))
+            self.assertEqual(tuple(b["velocity"]), (0.0, 0.0))
+        self.assertEqual(d["table"], self.cut.scenario.to_dict()["table"])
+
     def test_balls_are_the_jsons(self):
         for r in (self.result, self.cut):
             b, js = r.balls, r.to_dict()["balls"]

@@ -235,19 +235,7 @@ void play_best(Lookahead& la, std::vector<Candidate>& candidates, PositionPlanRe
 }  // namespace
 
 Scenario table_left_by(const Scenario& table_state, const PlannedShot& shot) {
-  Scenario left = table_state;
-  left.cue.reset();
-  left.balls.clear();
-  for (const SimulationBall& b : table_state.balls) {
-    const auto it = std::find_if(shot.predicted.begin(), shot.predicted.end(),
-                                 [&](const PredictedBall& p) { return p.id == b.id; });
-    if (it == shot.predicted.end() || it->pocketed) continue;
-    SimulationBall at_rest = b;
-    at_rest.state = BallState{};
-    at_rest.state.position = it->position;
-    left.balls.push_back(std::move(at_rest));
-  }
-  return left;
+  return table_after(table_state, shot.predicted);
 }
 
 PositionPlanResult plan_shot_for_position(const Scenario& table_state, const PositionRequest& q) {

@@ -2,6 +2,7 @@
 // (its JSON: io/scenario_json.hpp, io/result_json.hpp).
 #include "cueball/simulation/scenario.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <optional>
 #include <vector>
@@ -48,5 +49,29 @@ bool cue_strike_obstructed(const Scenario& s) {
   return cue_obstructed(s.table, cue->state.position, others, resolved_strike(s, s.cue->strike),
                         s.settings.parameters.ball.radius);
 }
+
+std::vector<BallAfterShot> balls_after_shot(const SimulationResult& r) {
+  std::vector<BallAfterShot> out;
+  out.reserve(r.balls.size());
+  for (const BallTrajectory& b : r.balls) out.push_back({b.id, b.final_state.position, b.pocketed, b.pocketed ? b.pocket : -1});
+  return out;
+}
+
+Scenario table_after(const Scenario& before, const std::vector<BallAfterShot>& after) {
+  Scenario left = before;
+  left.cue.reset();
+  left.balls.clear();
+  for (const SimulationBall& b : before.balls) {
+    const auto it = std::find_if(after.begin(), after.end(), [&](const BallAfterShot& a) { return a.id == b.id; });
+    if (it == after.end() || it->pocketed) continue;
+    SimulationBall at_rest = b;
+    at_rest.state = BallState{};
+    at_rest.state.position = it->position;
+    left.balls.push_back(std::move(at_rest));
+  }
+  return left;
+}
+
+Scenario table_after(const Scenario& before, const SimulationResult& r) { return table_after(before, balls_after_shot(r)); }
 
 }  // namespace cueball

@@ -213,12 +213,8 @@ struct PlanRequest {
 };
 
 /// A ball where the noise-free shot leaves it.
-struct PredictedBall {
-  int id = 0;
-  Vec2 position;      ///< final position (a pocketed ball: where it was captured), m
-  bool pocketed = false;
-  int pocket = -1;    ///< index into table.pockets
-};
+/// A ball's end of the planned shot, noise-free (simulation/scenario.hpp).
+using PredictedBall = BallAfterShot;
 
 /// The robot's form of the strike (paper 001 relations, cue_strike.hpp): the
 /// level cue's tip height and cue speed that give the cue ball the same

@@ -74,6 +74,25 @@ std::vector<SimulationBall> balls_after_strike(const Scenario& s, const std::opt
 /// Runs the scenario's shot. The result's first event is the cue strike.
 SimulationResult run_scenario(const Scenario& s);
 
+/// Where a ball ended a shot.
+struct BallAfterShot {
+  int id = 0;
+  Vec2 position;      ///< where it came to rest (a pocketed ball: where it was captured), m
+  bool pocketed = false;
+  int pocket = -1;    ///< index into table.pockets when pocketed
+};
+
+/// Every ball's end of the shot `r`, in its order.
+std::vector<BallAfterShot> balls_after_shot(const SimulationResult& r);
+
+/// The table a shot leaves, to plan or play the next shot on: `before`'s
+/// table and settings, its balls that `after` names and not pocketed, at
+/// rest where `after` puts them, in `before`'s order, the "cue" cleared (a
+/// ball `after` does not name is left off).
+Scenario table_after(const Scenario& before, const std::vector<BallAfterShot>& after);
+/// table_after(before, balls_after_shot(r)): the table the simulated shot left.
+Scenario table_after(const Scenario& before, const SimulationResult& r);
+
 /// True when the scenario's cue strike (its aim resolved) is obstructed: the
 /// cue, aligned for it, passes through another ball or below the rail
 /// (cue_obstructed(), table/cue_obstruction.hpp). False without a cue. A flag only:

@@ -15,9 +15,7 @@
 namespace cueball {
 namespace {
 
-using test::CliRun;
-using test::expect_usage_error;
-using test::run_cli;
+using namespace test;  // the CLI tests' helpers (tests/support/)
 
 TEST(Cli, RollJsonHasThePhasesInSiUnits) {
   const CliRun r = run_cli({"roll", "--v0", "2", "--w0", "-40", "--json"});

@@ -25,13 +25,7 @@
 namespace cueball {
 namespace {
 
-using test::batch_json;
-using test::CliRun;
-using test::count_lines;
-using test::expect_usage_error;
-using test::run_cli;
-using test::read_text;
-using test::TempDir;
+using namespace test;  // the CLI tests' helpers (tests/support/)
 using Json = nlohmann::json;
 
 

@@ -17,9 +17,7 @@
 namespace cueball {
 namespace {
 
-using test::CliRun;
-using test::expect_usage_error;
-using test::run_cli;
+using namespace test;  // the CLI tests' helpers (tests/support/)
 
 constexpr double kDeg = 3.14159265358979323846 / 180.0;
 

@@ -24,10 +24,7 @@
 namespace cueball {
 namespace {
 
-using test::CliRun;
-using test::expect_usage_error;
-using test::run_cli;
-using test::TempDir;
+using namespace test;  // the CLI tests' helpers (tests/support/)
 
 using test::kCutShot;
 

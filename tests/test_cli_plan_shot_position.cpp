@@ -15,10 +15,7 @@
 namespace cueball {
 namespace {
 
-using test::CliRun;
-using test::expect_usage_error;
-using test::run_cli;
-using test::TempDir;
+using namespace test;  // the CLI tests' helpers (tests/support/)
 
 // The 1 ball 0.5 m from the top-right pocket, cut about 20 degrees; the 2
 // and the 9 elsewhere on the table.

@@ -15,11 +15,7 @@
 namespace cueball {
 namespace {
 
-using test::CliRun;
-using test::expect_usage_error;
-using test::read_text;
-using test::run_cli;
-using test::TempDir;
+using namespace test;  // the CLI tests' helpers (tests/support/)
 using Json = nlohmann::json;
 
 constexpr std::string_view kOpen = R"(<script type="application/json" id="cueball-result">)";

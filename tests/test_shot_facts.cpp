@@ -183,6 +183,29 @@ TEST(ShotFacts, FrozenToACushionAtTheStart) {
   EXPECT_TRUE(f.frozen_balls.empty());
 }
 
+// A ball sent along the top rail into the corner pocket's jaws: the jaw
+// contacts are facts of their own, not cushions (WPA 6.3 counts rails).
+TEST(ShotFacts, JawContactsAreNamedAndAreNotCushions) {
+  const Table table = preset_table("pool_9ft");
+  const Parameters p = pool_parameters();
+  SimulationBall ball{0, "cue", {}};
+  ball.state.position = {2.0, 1.20};
+  ball.state.velocity = {1.0, 0.0};
+  SimulationSettings settings;
+  settings.parameters = p;
+  const SimulationResult r = simulate(table, {ball}, settings);
+  const ShotFacts f = shot_facts(table, p, r, 0);
+  ASSERT_GE(f.jaws.size(), 2u);
+  EXPECT_EQ(jaw_name(table, static_cast<std::size_t>(f.jaws[0].jaw)), "top-right pocket, right jaw");
+  EXPECT_EQ(jaw_name(table, static_cast<std::size_t>(f.jaws[1].jaw)), "top-right pocket, top jaw");
+  EXPECT_LT(f.jaws[0].time, f.jaws[1].time);
+  for (const JawHit& j : f.jaws) EXPECT_EQ(j.ball, 0);
+  ASSERT_FALSE(f.cushions.empty());
+  EXPECT_GT(f.cushions[0].time, f.jaws[1].time);  // the right rail after the jaws
+  EXPECT_EQ(f.cushion_count(0), static_cast<int>(f.cushions.size()));
+  EXPECT_TRUE(f.pots.empty());
+}
+
 // Every fact of the 9-ball break, against the events and trajectories.
 TEST(ShotFacts, BreakFactsAgreeWithEventsTrajectoriesAndShotOutcome) {
   const Scenario s = default_scenario();

@@ -92,8 +92,8 @@ void estimate_strike(Preparation& p) {
   p.out.origin = std::max(c.t[k] - back, p.rest_time);
   p.out.strike_min = std::max(p.rest_time - p.out.origin, -0.05);
   p.out.strike_max = c.t[k] - p.out.origin - 1e-4;
-  if (p.rest_time < c.t[k] - 1.0)
-    p.out.notes.push_back("the record starts " + num(c.t[k] - c.t[0]) + " s before the cue ball moves; samples before " +
+  if (c.t[k] - c.t[0] > 0.5)
+    p.out.notes.push_back("the record starts " + num(c.t[k] - c.t[0]) + " s before the cue ball moves; samples up to " +
                           num(p.rest_time) + " s are the layout");
 }
 

@@ -19,7 +19,8 @@ struct CalibrateFlags {
   double held_out = 0.25;
   long long seed = 0;
   int threads = 1;
-  int max_evaluations = 60;
+  int max_evaluations = ConstantsFitOptions{}.max_evaluations;
+  int max_iterations = ConstantsFitOptions{}.max_iterations;
   int starts = StrikeFitOptions{}.starts;
   std::optional<std::string> cushion_model;
   std::optional<std::string> constants;
@@ -46,7 +47,8 @@ void add_summary(Report& report, const std::string& section, const std::string& 
 void run_calibrate(const CalibrateFlags& f, std::ostream& out, std::ostream& err) {
   check_flag("--held-out", f.held_out, 0.0, 0.9, "fraction of the shots held out");
   check_flag("--threads", f.threads, 1, 256, "worker threads");
-  check_flag("--max-evaluations", f.max_evaluations, 1, 10000, "evaluations of the constants' objective");
+  check_flag("--max-evaluations", f.max_evaluations, 1, 100000, "evaluations of the constants fit's simplex");
+  check_flag("--max-iterations", f.max_iterations, 0, 10000, "iterations of the joint fit of constants and strikes");
   check_flag("--starts", f.starts, 1, 64, "refined starts per strike fit");
   if (f.seed < 0) check_flag("--seed", static_cast<double>(f.seed), 0, 9.007199254740992e15, "random seed");
   if (f.evaluate && !f.constants) throw UsageError("--evaluate needs --constants FILE (the constants to evaluate)");
@@ -66,6 +68,7 @@ void run_calibrate(const CalibrateFlags& f, std::ostream& out, std::ostream& err
   options.threads = f.threads;
   options.strike.starts = f.starts;
   options.constants.max_evaluations = f.max_evaluations;
+  options.constants.max_iterations = f.max_iterations;
   const CalibrationReport r = calibrate(shots, start, options);
   if (f.output) write_text_file(*f.output, constants_to_json(r.model, r.table_name) + "\n", "-o", "the constants");
   if (f.json) {
@@ -82,7 +85,8 @@ void run_calibrate(const CalibrateFlags& f, std::ostream& out, std::ostream& err
   report.add_text("cushion_model", to_string(r.model.settings.cushion.model));
   report.add("cushion_restitution", r.model.settings.cushion.restitution, "");
   report.add("cushion_friction", r.model.settings.cushion.friction, "");
-  report.add_count("evaluations", r.constant_evaluations, "of the constants' objective");
+  report.add_count("evaluations", r.constant_evaluations, "of the simplex (stage 1)");
+  report.add_count("iterations", r.constant_iterations, "of the joint fit (stage 2)");
   report.end_section();
   add_summary(report, "training", "training shots", r.training);
   if (r.held_out.shots > 0) add_summary(report, "held_out", "held-out shots", r.held_out);
@@ -106,7 +110,9 @@ Command add_calibrate_command(CLI::App& app) {
   sub->add_option("--held-out", flags->held_out, "Fraction of the shots held out, [0, 0.9]")->capture_default_str();
   sub->add_option("--seed", flags->seed, "Random seed of the held-out draw")->capture_default_str();
   sub->add_option("--threads", flags->threads, "Worker threads, [1, 256]")->capture_default_str();
-  sub->add_option("--max-evaluations", flags->max_evaluations, "Evaluations of the constants' objective, [1, 10000]")
+  sub->add_option("--max-evaluations", flags->max_evaluations, "Evaluations of the constants fit's simplex (stage 1), [1, 100000]")
+      ->capture_default_str();
+  sub->add_option("--max-iterations", flags->max_iterations, "Iterations of the joint fit of constants and strikes (stage 2), [0, 10000]")
       ->capture_default_str();
   sub->add_option("--starts", flags->starts, "Refined starts per strike fit, [1, 64]")->capture_default_str();
   sub->add_option("--cushion-model", flags->cushion_model, "Cushion model to fit (default: the constants' or the table's)");

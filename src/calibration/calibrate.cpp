@@ -73,6 +73,7 @@ void fit_training(CalibrationContext& c) {
   const ConstantsFit fit = fit_constants(shots, c.report.start, strikes, o);
   c.report.model = fit.model;
   c.report.constant_evaluations = fit.evaluations;
+  c.report.constant_iterations = fit.iterations;
   // The training shots refitted from scratch under the final constants
   // (a strike the warm starts kept in a wrong basin gets its chance again);
   // the better of that and the warm-started strike is kept.

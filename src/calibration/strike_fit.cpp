@@ -7,6 +7,7 @@
 #include <numeric>
 
 #include "calibration/levenberg_marquardt.hpp"
+#include "calibration/strike_bounds.hpp"
 #include "cueball/core/errors.hpp"
 #include "cueball/simulation/scenario.hpp"
 
@@ -14,12 +15,7 @@ namespace cueball {
 
 namespace {
 
-// Parameter vector of the least-squares problems: the ShotAction's five
-// values, then the strike time.
-enum Param { kSpeed, kAim, kElevation, kSide, kHeight, kStrike, kParams };
-
-constexpr double kMaxTipOffset = 0.45;  // ball radii; the miscue limit is 0.5
-constexpr double kMaxElevationDeg = 60.0;
+using namespace detail;  // StrikeParam, bounds and steps (strike_bounds.hpp)
 
 Scenario scenario_of(const PreparedShot& shot, const FitModel& model) {
   Scenario s;
@@ -35,11 +31,6 @@ std::vector<double> to_vector(const ShotAction& a, double strike) {
   return {a.speed, a.aim_deg, a.elevation_deg, a.side, a.height, strike};
 }
 ShotAction to_action(const std::vector<double>& q) { return {q[kSpeed], q[kAim], q[kElevation], q[kSide], q[kHeight]}; }
-
-void project_tip(std::vector<double>& q) {
-  const double r = std::hypot(q[kSide], q[kHeight]);
-  if (r > kMaxTipOffset) q[kSide] *= kMaxTipOffset / r, q[kHeight] *= kMaxTipOffset / r;
-}
 
 // The simulation of one strike, or nothing when the engine refuses it.
 std::optional<SimulationResult> play(const Scenario& scenario, const ShotAction& action) {
@@ -79,10 +70,10 @@ struct FitContext {
 
 detail::LeastSquaresProblem problem_of(FitContext& c, double window) {
   detail::LeastSquaresProblem p;
-  const double aim = c.shot.aim_estimate_deg;
-  p.lower = {0.05, aim - 30, 0.0, -kMaxTipOffset, -kMaxTipOffset, c.shot.strike_min};
-  p.upper = {kMaxCueSpeed, aim + 30, kMaxElevationDeg, kMaxTipOffset, kMaxTipOffset, c.shot.strike_max};
-  p.step = {1e-3, 1e-3, 0.02, 1e-3, 1e-3, 1e-4};
+  const StrikeBounds b = strike_bounds(c.shot);
+  p.lower = b.lower;
+  p.upper = b.upper;
+  p.step.assign(kStrikeSteps.begin(), kStrikeSteps.end());
   p.project = project_tip;
   p.residuals = [&c, window](const std::vector<double>& q, std::vector<double>& r) {
     ++c.simulations;

@@ -220,6 +220,7 @@ std::string calibration_report_to_json(const CalibrationReport& r, int indent) {
   j["start_constants"] = constants_json(r.start, r.table_name);
   j["summary"] = {{"training", summary_json(r.training)}, {"held_out", summary_json(r.held_out)}};
   j["constant_evaluations"] = r.constant_evaluations;
+  j["constant_iterations"] = r.constant_iterations;
   j["seconds"] = r.seconds;
   ordered_json shots = ordered_json::array();
   for (const ShotReport& s : r.shots) shots.push_back(shot_json(s));

@@ -35,7 +35,8 @@ struct CalibrationReport {
   std::string table_name;
   std::vector<ShotReport> shots;   ///< in the file's order
   FitSummary training, held_out;
-  int constant_evaluations = 0;
+  int constant_evaluations = 0;   ///< the constants fit's stage 1 (simplex)
+  int constant_iterations = 0;    ///< its stage 2 (joint LM)
   double seconds = 0.0;
 };
 

@@ -45,7 +45,7 @@ FitModel fit_model_from_json(std::string_view json_text, const TrackedShots& sho
 ///     "summary": { "training": S, "held_out": S }, with S = { "shots", "cue_rmse_median",
 ///       "cue_rmse_p90", "cue_rmse_mean", "all_rmse_median", "all_rmse_p90", "all_rmse_mean",
 ///       "object_rmse_median", "object_rmse_p90", "contact_mismatches", "seconds_per_shot" } (m, s),
-///     "constant_evaluations": n, "seconds": s,
+///     "constant_evaluations": n, "constant_iterations": n, "seconds": s,
 ///     "shots": [ { "id", "held_out", "strike": { "speed", "aim_deg", "elevation_deg", "side",
 ///                  "height", "strike_time" }, "cue_rmse", "all_rmse",
 ///                  "balls": { name: { "rmse", "moved", "moved_simulated" } },

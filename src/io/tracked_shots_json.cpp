@@ -171,7 +171,18 @@ TrackedShots tracked_shots_from_json(std::string_view text) {
   if (text.size() > kMaxTrackedShotsBytes)
     throw InvalidArgument("shots", "the tracked shots are " + std::to_string(text.size()) + " bytes; allowed: at most " +
                                        std::to_string(kMaxTrackedShotsBytes));
-  const json root = detail::parse_json(text, "shots file");
+  // The reader names paths from the document's root ("shots[0].balls.red.t[1]").
+  const std::string root_name = "shots file";
+  json root;
+  try {
+    root = detail::parse_json(text, root_name);
+  } catch (const InvalidArgument& e) {
+    const std::string prefix = root_name + ".";
+    if (e.field().rfind(prefix, 0) != 0) throw;
+    std::string message = e.what();
+    if (message.rfind(prefix, 0) == 0) message.erase(0, prefix.size());
+    throw InvalidArgument(e.field().substr(prefix.size()), message);
+  }
   if (!root.is_object()) wrong_type(root, "shots file", "an object {\"table\": .., \"shots\": [..]}");
   for (const auto& [k, v] : root.items())
     if (k != "table" && k != "shots" && !v.is_string())

@@ -488,7 +488,7 @@ def calibrate(
     evaluate: bool = False,
     cushion_model: str | None = None,
     threads: int = 1,
-    starts: int = 8,
+    starts: int = 32,
     max_evaluations: int = 300,
     max_iterations: int = 20,
 ) -> dict[str, Any]:

@@ -59,7 +59,7 @@ void bind_calibration(py::module_& m) {
         return py::module_::import("json").attr("loads")(report);
       },
       "shots"_a, py::kw_only(), "held_out"_a = 0.25, "seed"_a = 0, "constants"_a = py::none(), "evaluate"_a = false,
-      "cushion_model"_a = py::none(), "threads"_a = 1, "starts"_a = 8, "max_evaluations"_a = 300, "max_iterations"_a = 20,
+      "cushion_model"_a = py::none(), "threads"_a = 1, "starts"_a = 32, "max_evaluations"_a = 300, "max_iterations"_a = 20,
       "Fits the engine to tracked shots (README 'Calibrating from tracked shots'): shots is the JSON text of\n"
       "a tracked-shots document; constants the JSON text of a scenario whose parameters and cushion to start\n"
       "from (with evaluate=True: to use, fitting strikes only). Returns the report as `cueball calibrate\n"

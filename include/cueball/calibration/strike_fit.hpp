@@ -39,7 +39,7 @@ struct FitModel {
 };
 
 struct StrikeFitOptions {
-  int starts = 8;                                  ///< refined starts after the screen, [1, 64]
+  int starts = 32;                                 ///< refined starts after the screen, [1, 64]
   std::vector<double> windows = {0.6, 1.5, 3.0};   ///< continuation stages (s), then the whole record
   int stage_iterations = 6;                        ///< LM iterations per continuation stage
   int final_iterations = 15;                       ///< LM iterations on the whole record

@@ -29,7 +29,8 @@ struct CalibrateFlags {
   bool json = false;
 };
 
-void add_summary(Report& report, const std::string& section, const std::string& heading, const FitSummary& s) {
+void add_summary(Report& report, const std::string& section, const std::string& heading, const FitSummary& s,
+                 const std::string& mismatched) {
   report.begin_section(section, heading);
   report.add_count("shots", s.shots);
   report.add("cue_rmse_median", s.cue_rmse_median, "m", "cue ball RMSE, median over the shots");
@@ -40,8 +41,17 @@ void add_summary(Report& report, const std::string& section, const std::string& 
   report.add("object_rmse_median", s.object_rmse_median, "m", "the object balls");
   report.add("object_rmse_p90", s.object_rmse_p90, "m");
   report.add_count("contact_mismatches", s.contact_mismatches, "shots whose fit made or missed a contact");
+  if (!mismatched.empty()) report.add_text("mismatched_shots", mismatched, "their ids");
   report.add("seconds_per_shot", s.seconds_per_shot, "s", "strike fit time, mean");
   report.end_section();
+}
+
+// The ids of the shots whose fit made or missed a contact, comma-separated.
+std::string mismatched_ids(const CalibrationReport& r, bool held_out) {
+  std::string ids;
+  for (const ShotReport& s : r.shots)
+    if (s.held_out == held_out && s.fit.contact_mismatch) ids += (ids.empty() ? "" : ", ") + s.id;
+  return ids;
 }
 
 void run_calibrate(const CalibrateFlags& f, std::ostream& out, std::ostream& err) {
@@ -88,8 +98,8 @@ void run_calibrate(const CalibrateFlags& f, std::ostream& out, std::ostream& err
   report.add_count("evaluations", r.constant_evaluations, "of the simplex (stage 1)");
   report.add_count("iterations", r.constant_iterations, "of the joint fit (stage 2)");
   report.end_section();
-  add_summary(report, "training", "training shots", r.training);
-  if (r.held_out.shots > 0) add_summary(report, "held_out", "held-out shots", r.held_out);
+  add_summary(report, "training", f.evaluate ? "shots" : "training shots", r.training, mismatched_ids(r, false));
+  if (r.held_out.shots > 0) add_summary(report, "held_out", "held-out shots", r.held_out, mismatched_ids(r, true));
   report.add("seconds", r.seconds, "s", "wall-clock time");
   emit(report, false, out, err);
 }

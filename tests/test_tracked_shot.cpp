@@ -67,6 +67,11 @@ TEST(TrackedShot, PreparationPutsTheCueBallFirstAndKeepsBallsThatNeverMove) {
   EXPECT_EQ(p.moved[0], 1);
   EXPECT_EQ(p.moved[1], 0);
   EXPECT_EQ(p.samples_per_ball[1], 1);  // its last sample: it must stay put
+  // ... and held samples every 0.1 s before it (the dead band says it stayed); none for the moving ball.
+  int held_red = 0, held_white = 0;
+  for (const FitSample& q : p.samples) (q.ball == 1 ? held_red : held_white) += q.held ? 1 : 0;
+  EXPECT_GE(held_red, 8);
+  EXPECT_EQ(held_white, 0);
   // The strike: after the rest sample at 0, before the first moving one at 0.02.
   EXPECT_GE(p.origin, 0.0);
   EXPECT_LT(p.origin, 0.02);

@@ -171,20 +171,24 @@ StrikeFit evaluate_strike(const PreparedShot& shot, const FitModel& model, const
   std::vector<double> res;
   residuals_of(shot, s, *r, strike_offset, 0.0, res);
   std::vector<double> sum(nb, 0.0);
-  double total = 0.0;
+  double total = 0.0, cost = 0.0;
+  std::size_t tracked = 0;
   for (std::size_t i = 0; i < shot.samples.size(); ++i) {
     const double d2 = res[2 * i] * res[2 * i] + res[2 * i + 1] * res[2 * i + 1];
+    cost += d2;
+    if (shot.samples[i].held) continue;  // in the fit, not in the RMSEs
     sum[static_cast<std::size_t>(shot.samples[i].ball)] += d2;
     total += d2;
+    ++tracked;
   }
-  f.cost = total;
+  f.cost = cost;
   for (std::size_t j = 0; j < nb; ++j) {
     if (shot.samples_per_ball[j] > 0) f.ball_rmse[j] = std::sqrt(sum[j] / shot.samples_per_ball[j]);
     f.moved_simulated[j] = r->balls[j].segments.size() > 1 ? 1 : 0;
     if (j > 0 && f.moved_simulated[j] != shot.moved[j]) f.contact_mismatch = true;
   }
   f.cue_rmse = f.ball_rmse[0];
-  f.all_rmse = shot.samples.empty() ? 0.0 : std::sqrt(total / static_cast<double>(shot.samples.size()));
+  f.all_rmse = tracked == 0 ? 0.0 : std::sqrt(total / static_cast<double>(tracked));
   return f;
 }
 

@@ -151,10 +151,19 @@ void collect_samples(Preparation& p) {
   for (std::size_t j = 0; j < p.order.size(); ++j) {
     const TrackedBall& b = *p.order[j];
     int n = 0;
+    // The position held since the last written sample: the layout's at the strike.
+    const Vec2 start = p.out.layout[j].state.position;
+    double held_t = 0.0, held_x = start.x, held_y = start.y;
     for (std::size_t i = 0; i < b.t.size(); ++i) {
       if (b.t[i] <= p.rest_time) continue;  // the layout, before the strike
-      p.out.samples.push_back({static_cast<int>(j), b.t[i] - p.out.origin, b.x[i], b.y[i]});
-      p.out.duration = std::max(p.out.duration, b.t[i] - p.out.origin);
+      const double t = b.t[i] - p.out.origin;
+      // Dead band: until this sample the ball stayed near the last one written.
+      const bool resting = first_moving_sample(b) == b.t.size();
+      for (double h = held_t + kHoldStep; resting && h < t - kHoldStep / 2; h += kHoldStep)
+        p.out.samples.push_back({static_cast<int>(j), h, held_x, held_y, true});
+      p.out.samples.push_back({static_cast<int>(j), t, b.x[i], b.y[i], false});
+      held_t = t, held_x = b.x[i], held_y = b.y[i];
+      p.out.duration = std::max(p.out.duration, t);
       ++n;
     }
     p.out.samples_per_ball.push_back(n);

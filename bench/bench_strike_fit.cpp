@@ -1,6 +1,6 @@
 // The per-shot strike fit (src/calibration/strike_fit.cpp): one fit of a
 // synthetic three-cushion-table shot tracked at 50 Hz with a 1.5 cm dead band
-// (the goal of issue 28: <= 0.2 s a shot on one core). The shot is made by
+// (the goal of issue 28: <= 0.2 s a shot on one core; 51-145 ms with 32 starts). The shot is made by
 // the engine under the carom table's default constants.
 #include <benchmark/benchmark.h>
 

@@ -194,6 +194,7 @@ int run(int argc, const char* const* argv, std::ostream& out, std::ostream& err)
   add("many", add_many_command(app));
   add("plan-shot", add_plan_shot_command(app));
   add("view", add_view_command(app));
+  add("calibrate", add_calibrate_command(app));
 
   // Every option that takes a value: an empty value (--v0 "") is an error,
   // not 0, and so are control characters and values longer than a path.

@@ -92,6 +92,7 @@ Command add_batch_command(CLI::App& app);
 Command add_many_command(CLI::App& app);
 Command add_plan_shot_command(CLI::App& app);
 Command add_view_command(CLI::App& app);
+Command add_calibrate_command(CLI::App& app);
 
 /// Prints the report, then its warnings on stderr.
 void emit(const Report& report, bool json, std::ostream& out, std::ostream& err);

@@ -1,6 +1,6 @@
 # The layering check (ctest `layering`; docs/architecture.md):
 #   1. a library file of layer L includes only headers of layers up to L:
-#        core < physics < models < table < simulation < planning < games < agents < io
+#        core < physics < models < table < simulation < calibration < planning < games < agents < io
 #      (public "cueball/<layer>/..." and private "<layer>/..." alike; io, every
 #      JSON reader and writer, may read every layer and no layer reads io);
 #   2. nlohmann-json is included only in src/io/ (and by the tests, which
@@ -16,7 +16,7 @@
 # (-DNO_KNOWN=ON checks a tree without the KNOWN list: the check's own test.)
 
 cmake_minimum_required(VERSION 3.25)
-set(LAYERS core physics models table simulation planning games agents io)
+set(LAYERS core physics models table simulation calibration planning games agents io)
 set(KNOWN
   # The CLI's Report (its --json output of roll, cushion, plan) and the JSON
   # built inline by batch and cushion-sweep move into io/ next (issue 24,

@@ -477,6 +477,23 @@ class CushionFit:
 def fit_cushion(data: CushionFitData, params: Parameters = ..., options: CushionFitOptions = ...) -> CushionFit:
     """Fits e_e and mu_w to measured rebounds (Mathavan 2010, section 3.5); releases the GIL."""
 
+# ------------------------------------------------------------------ calibration
+
+def calibrate(
+    shots: str,
+    *,
+    held_out: float = 0.25,
+    seed: int = 0,
+    constants: str | None = None,
+    evaluate: bool = False,
+    cushion_model: str | None = None,
+    threads: int = 1,
+    starts: int = 32,
+    max_evaluations: int = 300,
+    max_iterations: int = 20,
+) -> dict[str, Any]:
+    """Fits strikes and the table's constants to tracked shots (JSON text); the report as a dict."""
+
 # ------------------------------------------------------------------ ball-ball collision
 
 class BallCollisionParameters:

@@ -44,6 +44,7 @@ void bind_table(py::module_& m);         // table.cpp: Table, its parts, TableSp
 void bind_rack(py::module_& m);          // rack.cpp: racks, spots
 void bind_ball_collision(py::module_& m);  // ball_collision.cpp
 void bind_cushion_fit(py::module_& m);   // cushion_fit.cpp: fit_cushion
+void bind_calibration(py::module_& m);   // calibration.cpp: calibrate
 void bind_scenario(py::module_& m);      // scenario.cpp: Scenario, ShotStrike, SimulationBall, SimulationSettings
 void bind_shot_planner(py::module_& m);  // shot_planner.cpp: plan_shot
 void bind_simulation(py::module_& m);    // simulation.cpp: simulate

@@ -114,7 +114,7 @@ class Reader {
 };
 
 Parameters read_parameters(const Reader& r, const Table& table) {
-  const std::string default_preset = table.name.find("snooker") != std::string::npos ? "snooker" : "pool";
+  const std::string default_preset = cloth_preset_for(table);
   const std::string preset = r.text("preset", default_preset);
   if (preset != "pool" && preset != "snooker")
     throw InvalidArgument(r.field("preset"), r.field("preset") + " = " + quote_input(preset) + " is not known; allowed: pool, snooker");

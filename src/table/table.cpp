@@ -874,6 +874,16 @@ TableSpec preset_table_spec(std::string_view name) {
 
 Table preset_table(std::string_view name) { return build_table(preset_table_spec(name)); }
 
+const char* cloth_preset_for(const Table& table) {
+  return table.name.find("snooker") != std::string::npos ? "snooker" : "pool";
+}
+
+Parameters default_parameters(const Table& table) {
+  Parameters p = preset_parameters(cloth_preset_for(table));
+  p.ball = table.ball;
+  return p;
+}
+
 // ------------------------------------------------------------------ for the JSON reader (io/table_json.cpp)
 
 namespace detail {

@@ -303,6 +303,12 @@ inline constexpr std::array<std::string_view, 3> kTablePresetNames{"pool_9ft", "
 TableSpec preset_table_spec(std::string_view name);
 Table preset_table(std::string_view name);
 
+/// The cloth preset that goes with a table: "snooker" for a table whose name
+/// says snooker, else "pool" (what a scenario uses unless it names one).
+const char* cloth_preset_for(const Table& table);
+/// preset_parameters(cloth_preset_for(table)) with the table's own ball.
+Parameters default_parameters(const Table& table);
+
 // JSON: table_from_json(), table_to_json() in io/table_json.hpp.
 
 }  // namespace cueball

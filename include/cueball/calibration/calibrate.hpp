@@ -1,0 +1,52 @@
+// The whole calibration: tracked shots in, constants and a report out
+// (README "Calibrating from tracked shots").
+//
+// Steps (calibrate()): prepare every shot (tracked_shot.hpp); draw the
+// held-out shots (a seeded shuffle: round(held_out x N) of them, at least
+// one training shot kept); fit every training shot's strike under the start
+// constants (strike_fit.hpp); fit the constants (constants_fit.hpp) unless
+// only evaluating; then fit every shot's strike afresh, multi-start, under
+// the final constants (the held-out shots only here: they never touch the
+// constants) and report.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "cueball/calibration/constants_fit.hpp"
+#include "cueball/calibration/report.hpp"
+#include "cueball/calibration/tracked_shot.hpp"
+
+namespace cueball {
+
+struct CalibrationOptions {
+  double held_out = 0.25;          ///< fraction of the shots held out, [0, 0.9]
+  std::uint64_t seed = 0;          ///< of the held-out draw
+  bool evaluate_only = false;      ///< fit strikes only, under the start constants
+  int threads = 1;                 ///< [1, 256]
+  StrikeFitOptions strike;
+  ConstantsFitOptions constants;   ///< its threads are set from `threads`
+};
+
+struct CalibrationReport {
+  FitModel model;                  ///< the fitted (or, evaluating, the given) constants
+  FitModel start;                  ///< the constants the fit started from
+  std::string table_name;
+  std::vector<ShotReport> shots;   ///< in the file's order
+  FitSummary training, held_out;
+  int constant_evaluations = 0;   ///< the constants fit's stage 1 (simplex)
+  int constant_iterations = 0;    ///< its stage 2 (joint LM)
+  double seconds = 0.0;
+};
+
+/// Calibrates `start` (table, settings, cue) on the shots. Throws
+/// InvalidArgument naming "shots[i]..." for a shot that cannot be prepared,
+/// "held_out" or "threads" for bad options.
+CalibrationReport calibrate(const TrackedShots& shots, const FitModel& start, const CalibrationOptions& options);
+
+/// The start model of a tracked-shots file: its table with the settings a
+/// scenario on that table gets by default.
+FitModel default_fit_model(const TrackedShots& shots);
+
+}  // namespace cueball

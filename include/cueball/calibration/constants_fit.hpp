@@ -1,0 +1,66 @@
+// The table's constants fitted across many tracked shots, every shot's
+// strike refitted with them.
+//
+// Fitted: the cloth's mu_s, mu_r, mu_sp and the chosen cushion model's
+// restitution and friction (the model is chosen by name, not fitted).
+//
+// Method, in two stages:
+//  1. Nelder-Mead (1965) over the constants -- logarithms of the three cloth
+//     frictions, the cushion's two constants as they are -- whose objective
+//     is the total cost of the training shots, each shot's strike refitted
+//     by 5 Levenberg-Marquardt iterations WARM-STARTED from the strikes of
+//     the best constants so far (the incumbent: so a trial's value depends
+//     on the constants and the incumbent, not on the simplex's path),
+//     restarted with a fresh simplex while a restart gains. The simplex
+//     needs no derivatives of a cost that jumps when a contact appears or
+//     vanishes, and the strikes follow the constants nonlinearly.
+//  2. A joint least-squares polish of the constants and every strike (6 a
+//     shot) from there: Levenberg-Marquardt on the block-arrow normal
+//     equations, each shot's 6 x 6 block eliminated (Schur complement) and a
+//     5 x 5 system solved for the constants, as bundle adjustment does
+//     (Triggs et al. 2000, sec. 6.1): 12 simulations a shot an iteration.
+// Why two stages (each was tried alone on six synthetic shots, test_constants_fit):
+// the joint LM from the strikes fitted under the start constants cannot move
+// (its full step changes contacts, so it is damped to nothing; a
+// continuation over growing windows of the record let mu_r run off, since
+// early in a shot it trades against the cue speed); Nelder-Mead alone gets
+// into the valley but crawls along it (the note that a cold joint
+// fit did not converge is the same failure). Alternating blocks (strikes
+// fixed, constants fitted) zig-zags: speed and mu_r, side spin and cushion
+// friction are strongly coupled. Both stages accept only steps that lower
+// the total cost.
+#pragma once
+
+#include <functional>
+#include <vector>
+
+#include "cueball/calibration/strike_fit.hpp"
+
+namespace cueball {
+
+struct ConstantsFitOptions {
+  int max_evaluations = 300;  ///< stage 1: evaluations of the simplex's objective, [1, 100000]
+  int max_iterations = 20;    ///< stage 2: Levenberg-Marquardt iterations of the joint fit, [0, 10000]
+  int threads = 1;            ///< shots refitted in parallel, [1, 256]
+};
+
+struct ConstantsFit {
+  FitModel model;                  ///< the start's model with the fitted constants
+  std::vector<StrikeFit> strikes;  ///< every training shot's strike under them
+  double cost = 0.0;               ///< total over the training shots, m^2
+  int evaluations = 0;             ///< stage 1's evaluations
+  int iterations = 0;              ///< stage 2's iterations
+};
+
+/// Fits from `start` (its constants are the simplex's first vertex) and the
+/// shots' strikes under it (`strikes`, one per shot). Throws InvalidArgument
+/// for bad options ("max_evaluations", "max_iterations", "threads") or
+/// when strikes.size() != shots.size().
+ConstantsFit fit_constants(const std::vector<PreparedShot>& shots, const FitModel& start,
+                           const std::vector<StrikeFit>& strikes, const ConstantsFitOptions& options = {});
+
+/// Runs `job(i)` for i in [0, n) on `threads` threads (the calling thread
+/// among them); the first exception is rethrown.
+void for_each_shot(int n, int threads, const std::function<void(int)>& job);
+
+}  // namespace cueball

@@ -1,0 +1,81 @@
+// One tracked shot's strike fitted by least squares: cue speed, aim,
+// elevation, the two tip offsets and the strike time, so that the simulated
+// positions of ALL balls match the tracked samples.
+//
+// Method (fit_strike):
+//   1. screen: a grid of strikes around the estimate from the cue ball's
+//      first samples (aim +-1.5 deg, speed x {0.8, 1, 1.25}, side and height
+//      in {-0.35, 0, 0.35} ball radii) is played by simulate_many (the batch
+//      API) and ranked by the distance of every ball's final position to its
+//      last sample;
+//   2. the best StrikeFitOptions::starts of them (and the plain centre-ball
+//      estimate) are refined by Levenberg-Marquardt with a continuation over
+//      the record: the residuals of the samples up to 0.6 s, then 1.5 s,
+//      3 s, then the whole record, each stage starting where the last ended
+//      (the early samples fix speed and aim while the cost is still smooth
+//      in them; later ones bring in spin, cushions and the object balls);
+//   3. the start with the lowest cost over the whole record wins.
+// The residual of a sample at time t (after the estimated strike) is the
+// simulated position at t - t_strike minus the tracked one, both axes, every
+// ball weighted alike, and RMSE = sqrt(mean of squared distances).
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "cueball/calibration/tracked_shot.hpp"
+#include "cueball/physics/cue_strike.hpp"
+#include "cueball/simulation/batch.hpp"
+#include "cueball/simulation/simulator.hpp"
+
+namespace cueball {
+
+/// What a strike is fitted under: the table, the simulator's settings
+/// (cloth, cushion and ball-collision constants) and the cue.
+struct FitModel {
+  Table table;
+  SimulationSettings settings;
+  CueParameters cue;
+};
+
+struct StrikeFitOptions {
+  int starts = 32;                                 ///< refined starts after the screen, [1, 64]
+  std::vector<double> windows = {0.6, 1.5, 3.0};   ///< continuation stages (s), then the whole record
+  int stage_iterations = 6;                        ///< LM iterations per continuation stage
+  int final_iterations = 15;                       ///< LM iterations on the whole record
+};
+
+struct StrikeFit {
+  ShotAction action;                 ///< speed m/s, aim and elevation deg, side and height ball radii
+  double strike_offset = 0.0;        ///< strike time on the samples' clock (s after PreparedShot::origin)
+  double strike_time = 0.0;          ///< the same on the record's clock
+  double cost = 0.0;                 ///< sum of squared residuals, m^2
+  std::vector<double> ball_rmse;     ///< per ball, layout order, m (NaN for a ball without samples after the strike)
+  double cue_rmse = 0.0;             ///< the cue ball's RMSE, m
+  double all_rmse = 0.0;             ///< over every sample of every ball, m
+  std::vector<char> moved_simulated; ///< the simulated ball moved kMoveThreshold or more
+  /// A ball moved in the simulation but not in the record, or the other way
+  /// round: the fit found (or missed) a contact the real balls did not make.
+  bool contact_mismatch = false;
+  int simulations = 0;
+  double seconds = 0.0;
+};
+
+/// The multi-start fit described above. Throws InvalidArgument when the
+/// model or the layout fails the simulator's checks.
+StrikeFit fit_strike(const PreparedShot& shot, const FitModel& model, const StrikeFitOptions& options = {});
+
+/// Levenberg-Marquardt on the whole record from `start` only (a warm start:
+/// the constants fit refits strikes so after each change of the constants).
+StrikeFit refine_strike(const PreparedShot& shot, const FitModel& model, const StrikeFit& start, int iterations);
+
+/// The fit's figures (cost, RMSEs, moved, contact_mismatch) of a strike.
+StrikeFit evaluate_strike(const PreparedShot& shot, const FitModel& model, const ShotAction& action, double strike_offset);
+
+/// The simulated positions at the samples' times, in the order of
+/// shot.samples (x, y interleaved), for a strike; false when the simulation
+/// fails. `window`: only the samples up to that time (<= 0: all).
+bool simulated_residuals(const PreparedShot& shot, const FitModel& model, const ShotAction& action, double strike_offset,
+                         double window, std::vector<double>& residuals);
+
+}  // namespace cueball

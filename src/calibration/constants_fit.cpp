@@ -1,0 +1,412 @@
+#include "cueball/calibration/constants_fit.hpp"
+
+#include <algorithm>
+#include <atomic>
+#include <chrono>
+#include <cmath>
+#include <exception>
+#include <limits>
+#include <mutex>
+#include <optional>
+#include <thread>
+
+#include "calibration/levenberg_marquardt.hpp"
+#include "calibration/strike_bounds.hpp"
+#include "cueball/core/errors.hpp"
+#include "cueball/models/cushion/model.hpp"
+
+namespace cueball {
+
+namespace {
+
+using detail::kStrike;
+using detail::kStrikeParams;
+using detail::kStrikeSteps;
+
+// The constants' parameters: log mu_s, log mu_r, log mu_sp, cushion
+// restitution, cushion friction; their forward-difference steps.
+constexpr int kConstants = 5;
+constexpr std::array<double, kConstants> kConstantSteps{1e-3, 1e-3, 1e-3, 1e-4, 1e-4};
+
+std::vector<double> constants_of(const FitModel& m) {
+  const ClothParameters& c = m.settings.parameters.cloth;
+  return {std::log(c.sliding_friction), std::log(c.rolling_resistance), std::log(c.spin_friction),
+          m.settings.cushion.restitution, m.settings.cushion.friction};
+}
+
+// The model of a constants vector, or nothing outside the model's ranges
+// (parameters, mu_r < mu_s, the cushion model's own bounds).
+std::optional<FitModel> model_of(const FitModel& start, const std::vector<double>& u) {
+  FitModel m = start;
+  ClothParameters& c = m.settings.parameters.cloth;
+  c.sliding_friction = std::exp(u[0]);
+  c.rolling_resistance = std::exp(u[1]);
+  c.spin_friction = std::exp(u[2]);
+  m.settings.cushion.restitution = u[3];
+  m.settings.cushion.friction = u[4];
+  try {
+    validate(m.settings.parameters);
+    for (const CushionSegment& s : m.table.cushions)
+      (void)cushion_contact(m.settings.parameters, m.settings.cushion, s.contact_height);
+  } catch (const InvalidArgument&) {
+    return std::nullopt;
+  }
+  return m;
+}
+
+std::vector<double> strike_vector(const StrikeFit& f) {
+  return {f.action.speed, f.action.aim_deg, f.action.elevation_deg, f.action.side, f.action.height, f.strike_offset};
+}
+ShotAction action_of(const std::vector<double>& q) { return {q[0], q[1], q[2], q[3], q[4]}; }
+
+// One shot's block of the joint problem.
+struct ShotBlock {
+  std::vector<double> q;       // the strike
+  std::vector<double> r;       // residuals at (constants, q)
+  std::vector<double> jc;      // m x kConstants
+  std::vector<double> js;      // m x kStrikeParams
+  detail::StrikeBounds bounds;
+  bool ok = true;
+};
+
+// The joint least-squares problem: the constants plus every shot's strike,
+// solved by Levenberg-Marquardt on the block-arrow normal equations with the
+// strikes eliminated (Schur complement), as bundle adjustment does
+// (Triggs et al., "Bundle adjustment: a modern synthesis", 2000, sec. 6.1).
+struct JointContext {
+  const std::vector<PreparedShot>& shots;
+  const FitModel& start;
+  const ConstantsFitOptions& options;
+  std::vector<double> u;
+  std::vector<ShotBlock> blocks;
+  double cost = 0.0;
+  int iterations = 0;
+  double window = 0.0;  // residuals of the samples up to this time (s); 0: all
+};
+
+double block_cost(const ShotBlock& b) {
+  if (!b.ok) return std::numeric_limits<double>::infinity();
+  double s = 0.0;
+  for (double v : b.r) s += v * v;
+  return s;
+}
+
+bool residuals(const PreparedShot& shot, const FitModel& model, const std::vector<double>& q, double window,
+               std::vector<double>& r) {
+  return simulated_residuals(shot, model, action_of(q), q[kStrike], window, r);
+}
+
+// Residuals of every shot at (u, the blocks' strikes); the total cost.
+double evaluate_all(JointContext& c, const std::vector<double>& u, std::vector<ShotBlock>& blocks) {
+  const auto model = model_of(c.start, u);
+  if (!model) return std::numeric_limits<double>::infinity();
+  for_each_shot(static_cast<int>(blocks.size()), c.options.threads, [&](int i) {
+    ShotBlock& b = blocks[static_cast<std::size_t>(i)];
+    b.ok = residuals(c.shots[static_cast<std::size_t>(i)], *model, b.q, c.window, b.r);
+  });
+  double cost = 0.0;
+  for (const ShotBlock& b : blocks) cost += block_cost(b);
+  return cost;
+}
+
+// Forward differences of every block's residuals in the constants and in its strike.
+bool jacobians(JointContext& c) {
+  const auto model = model_of(c.start, c.u);
+  if (!model) return false;
+  std::vector<std::optional<FitModel>> shifted(kConstants);
+  std::vector<double> h(kConstants);
+  for (int k = 0; k < kConstants; ++k) {
+    std::vector<double> u = c.u;
+    h[static_cast<std::size_t>(k)] = kConstantSteps[static_cast<std::size_t>(k)];
+    u[static_cast<std::size_t>(k)] += h[static_cast<std::size_t>(k)];
+    shifted[static_cast<std::size_t>(k)] = model_of(c.start, u);
+    if (!shifted[static_cast<std::size_t>(k)]) {
+      h[static_cast<std::size_t>(k)] = -h[static_cast<std::size_t>(k)];
+      u[static_cast<std::size_t>(k)] = c.u[static_cast<std::size_t>(k)] + h[static_cast<std::size_t>(k)];
+      shifted[static_cast<std::size_t>(k)] = model_of(c.start, u);
+      if (!shifted[static_cast<std::size_t>(k)]) return false;
+    }
+  }
+  std::atomic<bool> ok{true};
+  for_each_shot(static_cast<int>(c.blocks.size()), c.options.threads, [&](int i) {
+    ShotBlock& b = c.blocks[static_cast<std::size_t>(i)];
+    const PreparedShot& shot = c.shots[static_cast<std::size_t>(i)];
+    const std::size_t m = b.r.size();
+    b.jc.assign(m * kConstants, 0.0);
+    b.js.assign(m * kStrikeParams, 0.0);
+    std::vector<double> rs;
+    for (std::size_t k = 0; k < kConstants; ++k) {
+      if (!residuals(shot, *shifted[k], b.q, c.window, rs) || rs.size() != m) continue;  // a failed column stays 0
+      for (std::size_t j = 0; j < m; ++j) b.jc[j * kConstants + k] = (rs[j] - b.r[j]) / h[k];
+    }
+    for (std::size_t p = 0; p < kStrikeParams; ++p) {
+      std::vector<double> q = b.q;
+      double step = kStrikeSteps[p];
+      if (q[p] + step > b.bounds.upper[p]) step = -step;
+      q[p] += step;
+      if (!residuals(shot, *model, q, c.window, rs) || rs.size() != m) continue;
+      for (std::size_t j = 0; j < m; ++j) b.js[j * kStrikeParams + p] = (rs[j] - b.r[j]) / step;
+    }
+  });
+  return ok;
+}
+
+// One damped step: the constants' Schur system, then each strike's.
+bool solve_step(const JointContext& c, double lambda, std::vector<double>& du, std::vector<std::vector<double>>& dq) {
+  constexpr std::size_t nc = kConstants, ns = kStrikeParams;
+  std::vector<double> schur(nc * nc, 0.0), rhs(nc, 0.0);
+  struct Reduced {
+    std::vector<double> d, b, g;  // D (ns x ns, damped), B (nc x ns), g (ns)
+  };
+  std::vector<Reduced> red(c.blocks.size());
+  for (std::size_t i = 0; i < c.blocks.size(); ++i) {
+    const ShotBlock& blk = c.blocks[i];
+    Reduced& rd = red[i];
+    rd.d.assign(ns * ns, 0.0), rd.b.assign(nc * ns, 0.0), rd.g.assign(ns, 0.0);
+    const std::size_t m = blk.r.size();
+    for (std::size_t j = 0; j < m; ++j) {
+      const double* jc = &blk.jc[j * nc];
+      const double* js = &blk.js[j * ns];
+      for (std::size_t a = 0; a < nc; ++a) {
+        rhs[a] -= jc[a] * blk.r[j];
+        for (std::size_t b = 0; b < nc; ++b) schur[a * nc + b] += jc[a] * jc[b];
+        for (std::size_t b = 0; b < ns; ++b) rd.b[a * ns + b] += jc[a] * js[b];
+      }
+      for (std::size_t a = 0; a < ns; ++a) {
+        rd.g[a] -= js[a] * blk.r[j];
+        for (std::size_t b = 0; b < ns; ++b) rd.d[a * ns + b] += js[a] * js[b];
+      }
+    }
+    for (std::size_t a = 0; a < ns; ++a) rd.d[a * ns + a] += lambda * std::max(rd.d[a * ns + a], 1e-12);
+  }
+  for (std::size_t a = 0; a < nc; ++a) schur[a * nc + a] += lambda * std::max(schur[a * nc + a], 1e-12);
+  // S = A - sum B D^-1 B^T, rhs = g_c - sum B D^-1 g_i.
+  for (Reduced& rd : red) {
+    std::vector<double> x;
+    if (!detail::solve_linear(rd.d, rd.g, x)) return false;
+    for (std::size_t a = 0; a < nc; ++a)
+      for (std::size_t k = 0; k < ns; ++k) rhs[a] -= rd.b[a * ns + k] * x[k];
+    for (std::size_t col = 0; col < nc; ++col) {
+      std::vector<double> bt(ns);
+      for (std::size_t k = 0; k < ns; ++k) bt[k] = rd.b[col * ns + k];
+      if (!detail::solve_linear(rd.d, bt, x)) return false;
+      for (std::size_t a = 0; a < nc; ++a)
+        for (std::size_t k = 0; k < ns; ++k) schur[a * nc + col] -= rd.b[a * ns + k] * x[k];
+    }
+  }
+  if (!detail::solve_linear(schur, rhs, du)) return false;
+  dq.resize(red.size());
+  for (std::size_t i = 0; i < red.size(); ++i) {
+    std::vector<double> g = red[i].g;
+    for (std::size_t k = 0; k < ns; ++k)
+      for (std::size_t a = 0; a < nc; ++a) g[k] -= red[i].b[a * ns + k] * du[a];
+    if (!detail::solve_linear(red[i].d, g, dq[i])) return false;
+  }
+  return true;
+}
+
+// Levenberg-Marquardt iterations; a step is taken only when it lowers the cost.
+void joint_least_squares(JointContext& c) {
+  double lambda = 1e-3;
+  for (int it = 0; it < c.options.max_iterations; ++it, ++c.iterations) {
+    if (!jacobians(c)) return;
+    bool accepted = false;
+    for (int attempt = 0; attempt < 8 && !accepted; ++attempt) {
+      std::vector<double> du;
+      std::vector<std::vector<double>> dq;
+      if (!solve_step(c, lambda, du, dq)) {
+        lambda *= 4;
+        continue;
+      }
+      std::vector<double> u = c.u;
+      for (std::size_t k = 0; k < u.size(); ++k) u[k] += du[k];
+      std::vector<ShotBlock> trial = c.blocks;
+      for (std::size_t i = 0; i < trial.size(); ++i) {
+        for (std::size_t p = 0; p < trial[i].q.size(); ++p) trial[i].q[p] += dq[i][p];
+        detail::project_strike(trial[i].bounds, trial[i].q);
+      }
+      const double cost = evaluate_all(c, u, trial);
+      if (cost < c.cost) {
+        const double gain = (c.cost - cost) / c.cost;
+        c.u = u, c.blocks = std::move(trial), c.cost = cost, accepted = true;
+        lambda = std::max(lambda / 3, 1e-7);
+        if (gain < 1e-5) return;
+      } else {
+        lambda *= 4;
+      }
+    }
+    if (!accepted) return;
+  }
+}
+
+// ------------------------------------------------------------- stage 1: Nelder-Mead
+
+// LM iterations of each strike refit inside one evaluation of the simplex's objective.
+constexpr int kRefineIterations = 5;
+
+struct OuterContext {
+  const std::vector<PreparedShot>& shots;
+  const FitModel& start;
+  const ConstantsFitOptions& options;
+  int max_evaluations;
+  std::vector<StrikeFit> incumbent;  // strikes of the best constants so far
+  double best_cost = std::numeric_limits<double>::infinity();
+  std::vector<double> best_u;
+  int evaluations = 0;
+};
+
+// One evaluation of the outer objective; a new best replaces the incumbent strikes.
+double objective(OuterContext& c, const std::vector<double>& u) {
+  ++c.evaluations;
+  const auto model = model_of(c.start, u);
+  if (!model) return std::numeric_limits<double>::infinity();
+  std::vector<StrikeFit> refit(c.shots.size());
+  for_each_shot(static_cast<int>(c.shots.size()), c.options.threads, [&](int i) {
+    const auto k = static_cast<std::size_t>(i);
+    refit[k] = refine_strike(c.shots[k], *model, c.incumbent[k], kRefineIterations);
+  });
+  double cost = 0.0;
+  for (const StrikeFit& f : refit) cost += f.cost;
+  if (cost < c.best_cost) c.best_cost = cost, c.best_u = u, c.incumbent = std::move(refit);
+  return cost;
+}
+
+// Nelder-Mead with the standard coefficients (reflection 1, expansion 2,
+// contraction 1/2, shrink 1/2), the simplex built by steps `scale` from u0.
+void nelder_mead(OuterContext& c, const std::vector<double>& u0, const std::vector<double>& scale) {
+  const int n = kConstants;
+  std::vector<std::vector<double>> x(n + 1, u0);
+  std::vector<double> f(n + 1);
+  for (int i = 0; i < n; ++i) x[static_cast<std::size_t>(i + 1)][static_cast<std::size_t>(i)] += scale[static_cast<std::size_t>(i)];
+  for (int i = 0; i <= n && c.evaluations < c.max_evaluations; ++i) f[static_cast<std::size_t>(i)] = objective(c, x[static_cast<std::size_t>(i)]);
+  const auto point = [&](const std::vector<double>& centre, const std::vector<double>& worst, double t) {
+    std::vector<double> p(centre.size());
+    for (std::size_t k = 0; k < p.size(); ++k) p[k] = centre[k] + t * (worst[k] - centre[k]);
+    return p;
+  };
+  while (c.evaluations < c.max_evaluations) {
+    std::vector<int> order(n + 1);
+    for (int i = 0; i <= n; ++i) order[static_cast<std::size_t>(i)] = i;
+    std::sort(order.begin(), order.end(), [&](int a, int b) { return f[static_cast<std::size_t>(a)] < f[static_cast<std::size_t>(b)]; });
+    std::vector<std::vector<double>> xs;
+    std::vector<double> fs;
+    for (int i : order) xs.push_back(x[static_cast<std::size_t>(i)]), fs.push_back(f[static_cast<std::size_t>(i)]);
+    x = xs, f = fs;
+    if (std::isfinite(f[0]) && f[static_cast<std::size_t>(n)] - f[0] <= 1e-4 * f[0]) break;
+    std::vector<double> centre(static_cast<std::size_t>(n), 0.0);
+    for (int i = 0; i < n; ++i)
+      for (int k = 0; k < n; ++k) centre[static_cast<std::size_t>(k)] += x[static_cast<std::size_t>(i)][static_cast<std::size_t>(k)] / n;
+    const std::vector<double>& worst = x[static_cast<std::size_t>(n)];
+    const std::vector<double> xr = point(centre, worst, -1.0);
+    const double fr = objective(c, xr);
+    if (fr < f[0]) {
+      const std::vector<double> xe = point(centre, worst, -2.0);
+      const double fe = c.evaluations < c.max_evaluations ? objective(c, xe) : fr + 1;
+      if (fe < fr) x[static_cast<std::size_t>(n)] = xe, f[static_cast<std::size_t>(n)] = fe;
+      else x[static_cast<std::size_t>(n)] = xr, f[static_cast<std::size_t>(n)] = fr;
+    } else if (fr < f[static_cast<std::size_t>(n - 1)]) {
+      x[static_cast<std::size_t>(n)] = xr, f[static_cast<std::size_t>(n)] = fr;
+    } else {
+      const std::vector<double> xc = point(centre, worst, fr < f[static_cast<std::size_t>(n)] ? -0.5 : 0.5);
+      const double fc = objective(c, xc);
+      if (fc < std::min(fr, f[static_cast<std::size_t>(n)])) {
+        x[static_cast<std::size_t>(n)] = xc, f[static_cast<std::size_t>(n)] = fc;
+      } else {
+        for (int i = 1; i <= n && c.evaluations < c.max_evaluations; ++i) {
+          x[static_cast<std::size_t>(i)] = point(x[0], x[static_cast<std::size_t>(i)], 0.5);
+          f[static_cast<std::size_t>(i)] = objective(c, x[static_cast<std::size_t>(i)]);
+        }
+      }
+    }
+  }
+}
+
+// Nelder-Mead restarted from the best point with a fresh simplex (half the
+// size) while a restart still gains 0.1 %.
+void simplex_stage(OuterContext& c, const std::vector<double>& u0) {
+  std::vector<double> scale{0.35, 0.35, 0.35, -0.03, 0.03};
+  double before = std::numeric_limits<double>::infinity();
+  while (c.evaluations < c.max_evaluations) {
+    nelder_mead(c, c.evaluations == 0 ? u0 : c.best_u, scale);
+    if (!(c.best_cost < before * (1 - 1e-3))) break;
+    before = c.best_cost;
+    for (double& v : scale) v *= 0.5;
+  }
+}
+
+}  // namespace
+
+void for_each_shot(int n, int threads, const std::function<void(int)>& job) {
+  std::atomic<int> next{0};
+  std::exception_ptr error;
+  std::mutex lock;
+  const auto work = [&] {
+    for (int i = next++; i < n; i = next++) {
+      try {
+        job(i);
+      } catch (...) {
+        const std::lock_guard<std::mutex> guard(lock);
+        if (!error) error = std::current_exception();
+        next = n;
+      }
+    }
+  };
+  std::vector<std::thread> pool;
+  for (int t = 1; t < std::min(threads, n); ++t) pool.emplace_back(work);
+  work();
+  for (std::thread& t : pool) t.join();
+  if (error) std::rethrow_exception(error);
+}
+
+ConstantsFit fit_constants(const std::vector<PreparedShot>& shots, const FitModel& start,
+                           const std::vector<StrikeFit>& strikes, const ConstantsFitOptions& options) {
+  if (options.max_evaluations < 1 || options.max_evaluations > 100000)
+    throw InvalidArgument("max_evaluations", options.max_evaluations, "[1, 100000]", "evaluations of the simplex stage");
+  if (options.max_iterations < 0 || options.max_iterations > 10000)
+    throw InvalidArgument("max_iterations", options.max_iterations, "[0, 10000]", "iterations of the joint fit");
+  if (options.threads < 1 || options.threads > 256) throw InvalidArgument("threads", options.threads, "[1, 256]", "threads");
+  if (strikes.size() != shots.size())
+    throw InvalidArgument("strikes", "strikes has " + std::to_string(strikes.size()) + " entries; allowed: one per shot (" +
+                                         std::to_string(shots.size()) + ")");
+  // Stage 1: the simplex over the constants, every strike refitted warm.
+  OuterContext outer{shots, start, options, options.max_evaluations, strikes, std::numeric_limits<double>::infinity(),
+                     constants_of(start), 0};
+  simplex_stage(outer, constants_of(start));
+  // Stage 2: the joint least-squares polish from there (the shots that
+  // cannot be simulated there are left out; their strikes stay).
+  JointContext c{shots, start, options, outer.best_u, {}, 0.0, 0, 0.0};
+  for (std::size_t i = 0; i < shots.size(); ++i) {
+    ShotBlock b;
+    b.q = strike_vector(outer.incumbent[i]);
+    b.bounds = detail::strike_bounds(shots[i]);
+    detail::project_strike(b.bounds, b.q);
+    c.blocks.push_back(std::move(b));
+  }
+  c.cost = evaluate_all(c, c.u, c.blocks);
+  std::vector<PreparedShot> kept_shots;
+  std::vector<std::size_t> kept;
+  for (std::size_t i = 0; i < c.blocks.size(); ++i)
+    if (c.blocks[i].ok) kept.push_back(i);
+  for (std::size_t i : kept) kept_shots.push_back(shots[i]);
+  std::vector<ShotBlock> blocks;
+  for (std::size_t i : kept) blocks.push_back(c.blocks[i]);
+  JointContext d{kept_shots, start, options, c.u, std::move(blocks), 0.0, 0, 0.0};
+  d.cost = evaluate_all(d, d.u, d.blocks);
+  joint_least_squares(d);
+  c.u = d.u, c.iterations = d.iterations;
+  for (std::size_t k = 0; k < kept.size(); ++k) c.blocks[kept[k]] = d.blocks[k];
+  ConstantsFit out;
+  out.model = model_of(start, c.u).value_or(start);
+  out.evaluations = outer.evaluations;
+  out.iterations = c.iterations;
+  out.strikes.resize(shots.size());
+  out.cost = 0.0;
+  for (std::size_t i = 0; i < shots.size(); ++i) {
+    const std::vector<double>& q = c.blocks[i].q;
+    out.strikes[i] = evaluate_strike(shots[i], out.model, action_of(q), q[kStrike]);
+    out.cost += out.strikes[i].cost;
+  }
+  return out;
+}
+
+}  // namespace cueball

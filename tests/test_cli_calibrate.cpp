@@ -1,0 +1,87 @@
+// End-to-end tests of `cueball calibrate` (cli/command_calibrate.cpp), run
+// in-process: a calibration of synthetic tracked shots (report, --json, -o
+// written as a scenario fragment that `simulate` accepts, --constants
+// --evaluate), and the one-line errors (exit 2) naming the flag or the JSON
+// path, the value and the allowed range.
+#include <gtest/gtest.h>
+
+#include <nlohmann/json.hpp>
+#include <string>
+
+#include "cli_runner.hpp"
+#include "synthetic_tracks.hpp"
+#include "temp_dir.hpp"
+
+namespace cueball {
+namespace {
+
+using Json = nlohmann::json;
+using test::expect_usage_error;
+using test::run_cli;
+using test::TempDir;
+
+// Three synthetic shots as a tracked-shots file.
+std::string synthetic_file() {
+  const FitModel m = test::carom_model();
+  Json shots = Json::array();
+  const ShotAction actions[] = {{3.2, 25.0, 4.0, 0.2, 0.15}, {2.6, 4.0, 6.0, -0.25, -0.2}, {3.0, -20.0, 3.0, 0.1, 0.0}};
+  std::uint64_t seed = 31;
+  for (const ShotAction& a : actions) {
+    const TrackedShot s = test::synthetic_shot(m, test::carom_layout({0.7, 0.5}, {2.1, 0.35}, {1.9, 1.05}), a, 0.01, seed++);
+    Json balls = Json::object();
+    for (const TrackedBall& b : s.balls) balls[b.name] = {{"t", b.t}, {"x", b.x}, {"y", b.y}};
+    shots.push_back({{"shot_id", seed}, {"cue_ball", s.cue_ball}, {"balls", balls}});
+  }
+  return Json{{"what", "synthetic"}, {"table", "carom_10ft"}, {"shots", shots}}.dump();
+}
+
+TEST(CliCalibrate, CalibratesAndWritesAScenarioFragment) {
+  TempDir dir;
+  const std::string file = dir.write("shots.json", synthetic_file());
+  const std::string out = dir.path("constants.json");
+  const auto r = run_cli({"calibrate", file, "--held-out", "0.34", "--seed", "2", "--max-evaluations", "20",
+                          "--max-iterations", "1", "-o", out, "--json"});
+  ASSERT_EQ(r.status, 0) << r.err;
+  const Json j = Json::parse(r.out);
+  EXPECT_EQ(j["summary"]["held_out"]["shots"], 1);
+  EXPECT_EQ(j["summary"]["training"]["shots"], 2);
+  EXPECT_EQ(j["shots"].size(), 3u);
+  // The fragment: a scenario simulate accepts, with a shot added to it.
+  Json scenario = Json::parse(test::read_text(out));
+  EXPECT_EQ(scenario["table"], "carom_10ft");
+  EXPECT_TRUE(scenario["parameters"].contains("mu_r"));
+  scenario["balls"] = Json::array({{{"id", 0}, {"position", {0.7, 0.5}}}});
+  scenario["cue"] = {{"speed", 2.0}, {"aim_deg", 10.0}};
+  const std::string shot = dir.write("shot.json", scenario.dump());
+  const auto sim = run_cli({"simulate", shot});
+  EXPECT_EQ(sim.status, 0) << sim.err;
+  // --constants --evaluate: the strikes only, under those constants; the text summary.
+  const auto ev = run_cli({"calibrate", file, "--constants", out, "--evaluate"});
+  ASSERT_EQ(ev.status, 0) << ev.err;
+  EXPECT_NE(ev.out.find("cue_rmse_median"), std::string::npos) << ev.out;
+}
+
+TEST(CliCalibrate, BadInputIsOneLineNamingTheFieldAndExitsTwo) {
+  TempDir dir;
+  const std::string file = dir.write("shots.json", synthetic_file());
+  expect_usage_error({"calibrate", file, "--held-out", "0.95"}, "--held-out = 0.95");
+  expect_usage_error({"calibrate", file, "--threads", "0"}, "--threads");
+  expect_usage_error({"calibrate", file, "--starts", "100"}, "--starts");
+  expect_usage_error({"calibrate", file, "--evaluate"}, "--constants");
+  expect_usage_error({"calibrate", file, "--cushion-model", "rubber"}, "--cushion-model");
+  expect_usage_error({"calibrate", dir.path("missing.json")}, "missing.json");
+  Json j = Json::parse(synthetic_file());
+  j["shots"][1]["balls"]["red"]["x"][0] = 7.5;
+  expect_usage_error({"calibrate", dir.write("bad1.json", j.dump())}, "shots[1].balls.red.x[0] = 7.5");
+  j = Json::parse(synthetic_file());
+  j["shots"][2]["balls"]["white"]["t"][3] = -1.0;
+  expect_usage_error({"calibrate", dir.write("bad2.json", j.dump())}, "shots[2].balls.white.t[3]");
+  j = Json::parse(synthetic_file());
+  j["shots"][0]["cue_ball"] = "blue";
+  expect_usage_error({"calibrate", dir.write("bad3.json", j.dump())}, "shots[0].cue_ball");
+  const std::string constants = dir.write("c.json", R"({"table": "carom_10ft", "parameters": {"mu_r": 2}})");
+  expect_usage_error({"calibrate", file, "--constants", constants, "--evaluate"}, "scenario.parameters.mu_r = 2");
+}
+
+}  // namespace
+}  // namespace cueball

@@ -1,0 +1,107 @@
+// The constants fit (calibration/constants_fit.cpp) and the whole calibration
+// (calibrate.cpp) on synthetic tracked shots made by the engine under known
+// constants (mu_r 0.008 and cushion friction 0.20, where the carom table's
+// defaults are 0.014 and 0.14), tracked at 50 Hz with a 1.5 cm dead band and
+// 0.34 mm noise. Stated tolerances: mu_r within 15 %, the cushion
+// restitution within 0.03 and friction within 0.05, the training cue-ball
+// RMSE median below 2 cm. mu_s and mu_sp are reported but not asserted:
+// these shots (mostly rolling balls) barely see them. What the fit reaches
+// today (README, "Calibrating from tracked shots"): mu_r 0.0082, e 0.934,
+// friction 0.160 (biased low: it stops in a valley where restitution and
+// friction trade), cue RMSE median 1.2 cm against 0.5 mm for the truth.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "cueball/calibration/calibrate.hpp"
+#include "cueball/core/errors.hpp"
+#include "synthetic_tracks.hpp"
+
+namespace cueball {
+namespace {
+
+FitModel truth_model() {
+  FitModel m = test::carom_model();
+  m.settings.parameters.cloth.rolling_resistance = 0.008;
+  m.settings.cushion.friction = 0.20;
+  m.settings.cushion.restitution = 0.95;
+  return m;
+}
+
+TrackedShots synthetic_match(const FitModel& truth) {
+  TrackedShots shots;
+  shots.table_name = "carom_10ft";
+  shots.table = truth.table;
+  const struct {
+    Vec2 white, yellow, red;
+    ShotAction action;
+  } cases[] = {
+      {{0.7, 0.5}, {2.1, 0.35}, {1.9, 1.05}, {3.2, 25.0, 4.0, 0.2, 0.15}},
+      {{0.7, 0.5}, {2.1, 0.35}, {1.9, 1.05}, {2.6, 4.0, 6.0, -0.25, -0.2}},
+      {{1.4, 0.7}, {0.4, 0.3}, {2.5, 1.1}, {3.5, 100.0, 3.0, 0.3, 0.1}},
+      {{2.0, 0.3}, {0.6, 1.0}, {1.2, 0.5}, {2.8, 160.0, 5.0, -0.3, 0.2}},
+      {{0.5, 1.0}, {2.4, 0.8}, {1.5, 0.2}, {3.0, -15.0, 2.0, 0.25, 0.25}},
+      {{1.0, 0.4}, {1.8, 1.2}, {2.6, 0.3}, {2.4, 60.0, 4.0, -0.2, 0.0}},
+  };
+  std::uint64_t seed = 11;
+  for (const auto& c : cases)
+    shots.shots.push_back(test::synthetic_shot(truth, test::carom_layout(c.white, c.yellow, c.red), c.action, 0.011, seed++));
+  return shots;
+}
+
+TEST(ConstantsFit, RecoversTheCushionAndRollingConstants) {
+  const FitModel truth = truth_model();
+  const TrackedShots shots = synthetic_match(truth);
+  CalibrationOptions o;
+  o.held_out = 0.0;
+  const CalibrationReport r = calibrate(shots, test::carom_model(), o);
+  const auto& fitted = r.model.settings;
+  RecordProperty("mu_s", std::to_string(fitted.parameters.cloth.sliding_friction));
+  RecordProperty("mu_sp", std::to_string(fitted.parameters.cloth.spin_friction));
+  EXPECT_NEAR(fitted.parameters.cloth.rolling_resistance, 0.008, 0.15 * 0.008);
+  EXPECT_NEAR(fitted.cushion.friction, 0.20, 0.05);
+  EXPECT_NEAR(fitted.cushion.restitution, 0.95, 0.03);
+  EXPECT_LT(r.training.cue_rmse_median, 0.02);
+  EXPECT_EQ(r.training.shots, 6);
+  EXPECT_EQ(r.held_out.shots, 0);
+  EXPECT_GT(r.constant_evaluations, 10);
+}
+
+TEST(Calibrate, HeldOutShotsAreDrawnBySeedAndOnlyEvaluated) {
+  const FitModel truth = truth_model();
+  const TrackedShots shots = synthetic_match(truth);
+  CalibrationOptions o;
+  o.held_out = 0.5;
+  o.seed = 3;
+  o.evaluate_only = true;  // strikes only, under the true constants
+  const CalibrationReport a = calibrate(shots, truth, o);
+  // Evaluating holds nothing out: every shot is fitted under the given constants.
+  EXPECT_EQ(a.training.shots, 6);
+  EXPECT_EQ(a.constant_iterations, 0);
+  EXPECT_LT(a.training.cue_rmse_median, 0.01);
+  EXPECT_EQ(a.model.settings.parameters.cloth.rolling_resistance, 0.008);
+  o.evaluate_only = false;
+  o.constants.max_evaluations = 5;
+  o.constants.max_iterations = 1;
+  const CalibrationReport b = calibrate(shots, truth, o);
+  const CalibrationReport c = calibrate(shots, truth, o);
+  EXPECT_EQ(b.held_out.shots, 3);
+  EXPECT_EQ(b.training.shots, 3);
+  for (std::size_t i = 0; i < b.shots.size(); ++i) EXPECT_EQ(b.shots[i].held_out, c.shots[i].held_out);
+}
+
+TEST(Calibrate, RejectsBadOptions) {
+  const TrackedShots shots = synthetic_match(truth_model());
+  CalibrationOptions o;
+  o.held_out = 0.95;
+  EXPECT_THROW(calibrate(shots, test::carom_model(), o), InvalidArgument);
+  o = {};
+  o.threads = 0;
+  EXPECT_THROW(calibrate(shots, test::carom_model(), o), InvalidArgument);
+  o = {};
+  o.constants.max_evaluations = 0;
+  EXPECT_THROW(calibrate(shots, test::carom_model(), o), InvalidArgument);
+}
+
+}  // namespace
+}  // namespace cueball

@@ -83,7 +83,18 @@ CushionParameters cushion_of(const CushionFlags& f, const Parameters& p) {
   return c;
 }
 
+// --steps with the exact solver would be ignored: refused (issue 24's rule for
+// another solver's keys). A --steps equal to the default cannot be told from
+// none and passes.
+void check_steps_for_solver(int steps, const std::string& solver) {
+  if (solver_named(solver) == CushionSolver::exact && steps != CushionImpactOptions{}.paper_steps)
+    throw UsageError("--steps = " + std::to_string(steps) +
+                     " applies to --solver paper only; the exact solver takes no steps (its error is set by the "
+                     "scenario's cushion.exact_tolerance)");
+}
+
 CushionImpactOptions options_of(const CushionFlags& f, bool history) {
+  check_steps_for_solver(f.steps, f.solver);
   CushionImpactOptions o;
   o.solver = solver_named(f.solver);
   o.paper_steps = f.steps;
@@ -633,6 +644,7 @@ struct FitFlags {
 
 void run_fit(const FitFlags& f, std::ostream& out, std::ostream& err) {
   check_flag("--steps", f.steps, 1, 1e7, "paper solver steps N");
+  check_steps_for_solver(f.steps, f.solver);
   check_flag("--grid-step", f.grid_step, 0.001, 0.5, "grid spacing over (0, 1]^2");
   const Parameters p = resolve_parameters(f.parameters);
   const CushionFitData data = cushion_fit_data_from_csv(read_text_file(f.data, "the data file", kMaxDataFileBytes),

@@ -114,6 +114,10 @@ TEST(CliCushion, BadInputExitsWithStatusTwoNamingTheFlag) {
   expect_usage_error({"cushion", "--v0", "1", "--alpha", "30", "--e", "0"}, "--e");
   expect_usage_error({"cushion", "--v0", "1", "--alpha", "30", "--mu-w", "-0.1"}, "--mu-w");
   expect_usage_error({"cushion", "--v0", "1", "--alpha", "30", "--steps", "0"}, "--steps");
+  // --steps belongs to the paper solver: with the exact one it would be ignored.
+  expect_usage_error({"cushion", "--v0", "1", "--alpha", "30", "--steps", "100"}, "--steps");
+  expect_usage_error({"cushion-sweep", "--family", "fig8", "--steps", "100"}, "--steps");
+  EXPECT_EQ(run_cli({"cushion", "--v0", "1", "--alpha", "30", "--solver", "paper", "--steps", "100"}).status, 0);
   expect_usage_error({"cushion", "--v0", "1", "--alpha", "30", "--topspin", "3", "--topspin-k", "1"}, "--topspin");
   expect_usage_error({"cushion", "--v0", "1", "--alpha", "30", "--solver", "rk45"}, "--solver");
   expect_usage_error({"cushion-sweep", "--family", "fig99"}, "--family");

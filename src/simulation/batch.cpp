@@ -139,10 +139,6 @@ struct BatchContext {
   std::uint64_t seed;
 };
 
-// The standard normals of shot k of a batch seeded `seed`.
-std::array<double, 5> shot_normals(std::uint64_t seed, std::uint64_t shot) {
-  return standard_normals(splitmix64(seed ^ splitmix64(shot)));
-}
 
 void play_shot(const BatchContext& c, int shot, ShotRecord& out) {
   const Scenario& s = c.scenario;
@@ -167,6 +163,10 @@ void play_shot(const BatchContext& c, int shot, ShotRecord& out) {
 }
 
 }  // namespace
+
+std::array<double, 5> shot_normals(std::uint64_t seed, std::uint64_t shot) {
+  return standard_normals(splitmix64(seed ^ splitmix64(shot)));
+}
 
 LimitedStrike reflect_into_limits(const CueStrike& strike) {
   LimitedStrike out{strike, false, false};

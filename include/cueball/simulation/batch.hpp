@@ -38,6 +38,7 @@
 // throw), whatever the number of threads.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <functional>
 #include <span>
@@ -133,6 +134,11 @@ struct BatchResult {
 /// not grow with the shots). An exception it throws stops the batch and is
 /// rethrown by simulate_batch.
 BatchResult simulate_batch(const Scenario& scenario, const BatchOptions& options, const OutcomeSink& on_outcome = {});
+
+/// The five standard normals that perturb shot `shot` of a batch seeded
+/// `seed` (speed, aim, elevation, side, height; with_noise(), cue_strike.hpp):
+/// the same draws for simulate_batch, simulate_many and a game's shot.
+std::array<double, 5> shot_normals(std::uint64_t seed, std::uint64_t shot);
 
 /// A noisy strike brought within the limits by the reflection rule above.
 struct LimitedStrike {

@@ -1,0 +1,102 @@
+// What the pool games (9-ball, 8-ball, 10-ball) share: the standard fouls
+// of WPA section 6, the rail after contact, the break's balls to a rail,
+// spotting on the long string, ball in hand after a foul.
+#include <algorithm>
+#include <set>
+
+#include "games/rules.hpp"
+
+namespace cueball {
+
+int lowest_object_ball(const Scenario& table) {
+  int lowest = -1;
+  for (const SimulationBall& b : table.balls)
+    if (b.id >= 1 && b.id <= 15 && (lowest < 0 || b.id < lowest)) lowest = b.id;
+  return lowest;
+}
+
+bool rail_after_contact(const ShotFacts& facts) {
+  if (facts.first_contact < 0) return false;
+  for (const Pot& p : facts.pots)
+    if (p.ball != facts.cue_ball) return true;  // WPA 6.3: "a ball must be pocketed"
+  if (!facts.balls_to_cushion_after_first_contact().empty()) return true;
+  for (const JawHit& j : facts.jaws)
+    if (j.time >= facts.first_contact_time) return true;
+  return false;
+}
+
+int object_balls_to_rail(const ShotFacts& facts, int cue_ball) {
+  std::set<int> balls;
+  for (const CushionHit& c : facts.cushions)
+    if (c.ball != cue_ball) balls.insert(c.ball);
+  for (const JawHit& j : facts.jaws)
+    if (j.ball != cue_ball) balls.insert(j.ball);
+  return static_cast<int>(balls.size());
+}
+
+std::vector<int> object_balls_pocketed(const ShotFacts& facts, int cue_ball) {
+  std::vector<int> out;
+  for (const Pot& p : facts.pots)
+    if (p.ball != cue_ball) out.push_back(p.ball);
+  return out;
+}
+
+bool respot_on_long_string(Scenario& table, int id, int cue_ball) {
+  std::vector<Vec2> others;
+  std::optional<Vec2> cue;
+  for (const SimulationBall& b : table.balls) {
+    if (b.id == id) continue;
+    if (b.id == cue_ball)
+      cue = b.state.position;
+    else
+      others.push_back(b.state.position);
+  }
+  const std::optional<Vec2> spot = spot_on_long_string(table.table, others, cue, table.table.ball.radius);
+  if (!spot) return false;
+  put_ball(table, id, *spot);
+  return true;
+}
+
+void pool_foul(GameState& next, Ruling& ruling, Foul foul, int shooter, PlacementRegion::Kind region,
+               std::string reason) {
+  ruling.foul = foul;
+  ruling.turn_over = true;
+  ruling.reason = std::move(reason);
+  of(next.fouls_in_a_row, shooter) += 1;
+  next.to_shoot = opponent(shooter);
+  next.phase = GamePhase::play;
+  PlacementRegion r;
+  r.kind = region;
+  next.ball_in_hand = r;  // WPA 1.5: the incoming player has the cue ball in hand
+}
+
+std::optional<Foul> pool_standard_foul(const ShotContext& shot, const std::vector<int>& on, bool rail_required,
+                                       std::string& reason) {
+  const ShotFacts& f = shot.facts;
+  if (shot.miscue) {
+    reason = "miscue: the noisy strike was beyond the miscue limit (judged a foul)";
+    return Foul::miscue;
+  }
+  if (f.pocketed(shot.cue_ball)) {
+    reason = "WPA 6.1: the cue ball was pocketed";
+    return Foul::scratch;
+  }
+  if (f.first_contact < 0) {
+    reason = "WPA 6.2: the cue ball touched no ball";
+    return Foul::no_contact;
+  }
+  const bool first_on = std::find(on.begin(), on.end(), f.first_contact) != on.end();
+  const bool simultaneous_on = f.first_contact_simultaneous >= 0 &&
+                               std::find(on.begin(), on.end(), f.first_contact_simultaneous) != on.end();
+  if (!first_on && !simultaneous_on) {
+    reason = "WPA 6.2: the cue ball first touched the " + std::to_string(f.first_contact) + ", not a ball on";
+    return Foul::wrong_ball_first;
+  }
+  if (rail_required && !rail_after_contact(f)) {
+    reason = "WPA 6.3: no ball was pocketed and no ball touched a rail after the contact";
+    return Foul::no_rail_after_contact;
+  }
+  return std::nullopt;
+}
+
+}  // namespace cueball

@@ -1,0 +1,16 @@
+// snooker: its rules are being written (issue 25); until then new_game() refuses it.
+#include "cueball/core/errors.hpp"
+#include "games/rules.hpp"
+
+namespace cueball {
+
+namespace {
+[[noreturn]] void not_yet() { throw InvalidArgument("kind", "snooker is not available yet (issue 25)"); }
+}  // namespace
+
+GameState snooker_new_game(GameState) { not_yet(); }
+LegalActions snooker_legal_actions(const GameState&) { not_yet(); }
+Judgement snooker_judge_shot(const ShotContext&) { not_yet(); }
+Judgement snooker_decide(const GameState&, Decision) { not_yet(); }
+
+}  // namespace cueball

@@ -1,6 +1,7 @@
 // 9-ball (WPA Rules of Play, section 2 "Nine Ball", with the General Rules
 // of section 1 and the Fouls of section 6). Balls 1-9; the lowest on the
-// table is the ball on; the player who legally pockets the 9 wins (WPA 2.1).
+// table is the ball on; the player who legally pockets the 9 wins (WPA
+// section 2, its opening paragraph).
 //
 // Variants (GameConfig): the 9 on a legal break wins (WPA 2.5; false:
 // respotted and the breaker continues), the push-out (WPA 2.4) on or off,
@@ -154,7 +155,7 @@ Judgement nine_ball_judge_shot(const ShotContext& shot) {
     } else {
       of(next.fouls_in_a_row, shooter) = 0;
       if (contains(pocketed, kNine)) {
-        win(next, j.ruling, shooter, "WPA 2.1, 2.5: the 9 pocketed on a legal shot");
+        win(next, j.ruling, shooter, "WPA 2, 2.5: the 9 pocketed on a legal shot wins");
       } else if (!pocketed.empty()) {
         j.ruling.reason = "legal shot with a ball pocketed: the shooter continues (WPA 2.5)";
       } else {

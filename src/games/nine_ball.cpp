@@ -20,6 +20,11 @@ constexpr int kNine = 9;
 
 bool contains(const std::vector<int>& v, int id) { return std::find(v.begin(), v.end(), id) != v.end(); }
 
+void win(GameState& next, Ruling& ruling, int winner, std::string reason) {
+  of(next.scores, winner) += 1;
+  end_game(next, ruling, winner, std::move(reason));
+}
+
 // After a foul or a push-out, a pocketed 9 comes back (WPA 2.6).
 void respot_nine(GameState& next, Ruling& ruling, const std::vector<int>& pocketed) {
   if (!contains(pocketed, kNine)) return;
@@ -33,13 +38,7 @@ void foul(GameState& next, Ruling& ruling, Foul f, int shooter, const std::vecto
   respot_nine(next, ruling, pocketed);
   const int limit = next.config.fouls_to_lose;
   if (limit > 0 && of(next.fouls_in_a_row, shooter) >= limit)
-    end_game(next, ruling, opponent(shooter),
-             "WPA 2.8: " + std::to_string(limit) + " consecutive fouls lose the game");
-}
-
-void win(GameState& next, Ruling& ruling, int shooter, std::string reason) {
-  of(next.scores, shooter) += 1;
-  end_game(next, ruling, shooter, std::move(reason));
+    win(next, ruling, opponent(shooter), "WPA 2.8: " + std::to_string(limit) + " consecutive fouls lose the game");
 }
 
 void set_on(GameState& next) {

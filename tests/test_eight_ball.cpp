@@ -499,6 +499,7 @@ Action random_action(const GameState& s, RandomStream& rng) {
 
 TEST(EightBall, RandomGamesEndConserveBallsAndReplay) {
   int won = 0;
+  int decisions = 0, fouls = 0;  // the rulings the games went through (the illegal-break options among them)
   for (std::uint64_t game = 0; game < 20; ++game) {
     GameState s = new_game(default_config(GameKind::eight_ball), game);
     RandomStream rng(splitmix64(game));
@@ -507,6 +508,8 @@ TEST(EightBall, RandomGamesEndConserveBallsAndReplay) {
     while (!s.over) {
       const Action a = random_action(s, rng);
       GameStep step = play(s, a, stream_seed(game, static_cast<std::uint64_t>(s.shots)));
+      decisions += a.decision ? 1 : 0;
+      fouls += step.ruling.foul ? 1 : 0;
       for (const int id : step.ruling.pocketed)
         if (id != 0) down.push_back(id);
       for (const int id : step.ruling.respotted) down.erase(std::find(down.begin(), down.end(), id));
@@ -529,6 +532,8 @@ TEST(EightBall, RandomGamesEndConserveBallsAndReplay) {
     EXPECT_TRUE(r == s);
   }
   EXPECT_GT(won, 0);
+  EXPECT_GT(decisions, 0);
+  EXPECT_GT(fouls, 0);
 }
 
 }  // namespace

@@ -100,10 +100,6 @@ GameState rack_up(GameState s, int breaker) {
   return s;
 }
 
-void win(GameState& next, Ruling& ruling, int winner, std::string reason) {
-  of(next.scores, winner) += 1;
-  end_game(next, ruling, winner, std::move(reason));
-}
 
 // A decision for `player` to take before anyone shoots.
 void ask(GameState& next, Ruling& ruling, int player, int shooter, std::vector<Decision> decisions) {
@@ -195,22 +191,22 @@ void judge_eight_down(const ShotContext& shot, Judgement& j, const std::optional
   const int shooter = shot.shooter;
   if (f) {
     ruling.foul = f;
-    win(next, ruling, opponent(shooter), "WPA 3.8(a): the 8 pocketed on a foul (" + reason + ") loses the rack");
+    win_rack(next, ruling, opponent(shooter), "WPA 3.8(a): the 8 pocketed on a foul (" + reason + ") loses the rack");
     return;
   }
   if (shot.before.on != std::vector<int>{kEight}) {
-    win(next, ruling, opponent(shooter),
+    win_rack(next, ruling, opponent(shooter),
         "WPA 3.8(b), (e): the 8 pocketed before the shooter's group was off the table loses the rack");
     return;
   }
   const int pocket = shot.facts.pocket_of(kEight);
   if (shot.action.called_ball == kEight && shot.action.called_pocket == pocket) {
     of(next.fouls_in_a_row, shooter) = 0;
-    win(next, ruling, shooter, "WPA 3: the 8 legally pocketed in the called pocket wins the rack");
+    win_rack(next, ruling, shooter, "WPA 3: the 8 legally pocketed in the called pocket wins the rack");
     return;
   }
   ruling.foul = Foul::wrong_pocket;
-  win(next, ruling, opponent(shooter),
+  win_rack(next, ruling, opponent(shooter),
       "WPA 3.8(d): the 8 dropped in pocket " + std::to_string(pocket) + ", not the called one, and loses the rack");
 }
 

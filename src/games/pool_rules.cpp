@@ -16,6 +16,11 @@ int lowest_object_ball(const Scenario& table) {
   return lowest;
 }
 
+void win_rack(GameState& next, Ruling& ruling, int winner, std::string reason) {
+  of(next.scores, winner) += 1;
+  end_game(next, ruling, winner, std::move(reason));
+}
+
 bool rail_after_contact(const ShotFacts& facts) {
   if (facts.first_contact < 0) return false;
   for (const Pot& p : facts.pots)

@@ -94,6 +94,9 @@ void end_game(GameState& next, Ruling& ruling, int winner, std::string reason);
 /// The lowest-numbered object ball on the table (ids 1..15), or -1.
 int lowest_object_ball(const Scenario& table);
 
+/// The pool games: `winner` wins the rack (scores[winner] += 1, end_game).
+void win_rack(GameState& next, Ruling& ruling, int winner, std::string reason);
+
 /// Pool: a ball pocketed, or the cue ball or an object ball touching a
 /// cushion or a jaw after the first contact (WPA 6.3; a pocket's jaw is the
 /// cushion's nose turned into the pocket, so a ball that hits it has

@@ -50,14 +50,10 @@ void foul(GameState& next, Ruling& ruling, Foul f, int shooter, const std::vecto
   respot_if_pocketed(next, ruling, pocketed, kTen);
   const int limit = next.config.fouls_to_lose;
   if (limit > 0 && of(next.fouls_in_a_row, shooter) >= limit)
-    end_game(next, ruling, opponent(shooter),
+    win_rack(next, ruling, opponent(shooter),
              "WPA 9.11: " + std::to_string(limit) + " consecutive fouls lose the rack");
 }
 
-void win(GameState& next, Ruling& ruling, int shooter, std::string reason) {
-  of(next.scores, shooter) += 1;
-  end_game(next, ruling, shooter, std::move(reason));
-}
 
 // The incoming player chooses who shoots next (WPA 9.4 after a push-out,
 // 9.7 after a wrongfully pocketed ball).
@@ -133,7 +129,7 @@ Judgement judge_called_shot(const ShotContext& shot, Judgement j, const std::vec
   const int dropped_in = shot.facts.pocket_of(called);
   const bool called_pot = called >= 0 && dropped_in >= 0 && dropped_in == shot.action.called_pocket.value_or(-1);
   if (called_pot && called == kTen) {
-    win(next, ruling, shooter, "WPA 9, 9.5: the 10 called and legally pocketed wins the rack");
+    win_rack(next, ruling, shooter, "WPA 9, 9.5: the 10 called and legally pocketed wins the rack");
     return j;
   }
   respot_if_pocketed(next, ruling, pocketed, kTen);  // WPA 9.9: a 10 not called, or not in its pocket

@@ -2,8 +2,9 @@
 // three-cushion point. Every strike it tries is played through play() on a
 // copy of the state, so the game's own rules judge it (the opening shot on
 // the red, the frozen balls, the cushions before the second ball). A short
-// driver over one Search context, in three steps that share the budget
-// AgentOptions::simulations (engine runs, never exceeded):
+// driver over one Search context, in four steps that share the budget
+// AgentOptions::simulations (engine runs, never exceeded; the screen stops
+// when a full round no longer fits, so part of it may be left):
 //
 //   1. scan    half of it: strikes spread evenly round the whole circle of
 //              aims (the start drawn from the seed), each with a speed and a
@@ -16,7 +17,10 @@
 //              refined neighbours also scored, then played with the planning
 //              noise on common seeds, four repeats a round, the worse half
 //              dropped each round (successive halving); the one that scored
-//              most often is played.
+//              most often is chosen;
+//   4. centre  what is left: the chosen point's aim moved to the middle of
+//              its noise-free aim window, kept when it scores at least as
+//              often on the same noisy seeds.
 //
 // When nothing scores, the best near miss is played: both balls touched with
 // the most cushions before the second, else one ball touched after the most
@@ -52,6 +56,9 @@ constexpr double kNeighbourAimDeg = 0.5;
 constexpr std::size_t kScreenedPoints = 16;
 constexpr int kRepeatsPerRound = 4;
 constexpr int kMaxRepeats = 64;
+// The centring of the chosen point's aim, deg.
+constexpr double kCentreStepDeg = 0.025;
+constexpr double kCentreReachDeg = 1.0;
 // Scores of a strike (points are all worth kPointScore before the screen).
 constexpr double kPointScore = 10.0;
 constexpr double kFoulScore = -1.0;
@@ -186,6 +193,19 @@ double noisy_rate(const Candidate& c) {
   return c.noisy_tries == 0 ? 0.0 : static_cast<double>(c.noisy_points) / static_cast<double>(c.noisy_tries);
 }
 
+// Noisy repeats of a strike until it has `to` of them, on the screen's
+// common seeds (every candidate meets the same noise draws), within the budget.
+void repeat_noisy(Search& s, Candidate& c, int to) {
+  Action a;
+  a.strike = c.strike;
+  while (c.noisy_tries < to && s.used < s.budget) {
+    const GameStep step = play(s.noisy, a, stream_seed(s.seed, 1000 + static_cast<std::uint64_t>(c.noisy_tries)));
+    s.used += 1;
+    c.noisy_tries += 1;
+    c.noisy_points += step.ruling.points[static_cast<std::size_t>(s.state.to_shoot)] > 0 ? 1 : 0;
+  }
+}
+
 // Step 3: returns the index into the pool of the point to play (pool.size() when none).
 std::size_t screen(Search& s) {
   std::vector<std::pair<double, std::size_t>> ranked;
@@ -198,23 +218,51 @@ std::size_t screen(Search& s) {
   while (true) {
     const int round_cost = kRepeatsPerRound * static_cast<int>(alive.size());
     if (s.budget - s.used < round_cost || s.pool[alive.front()].noisy_tries >= kMaxRepeats) break;
-    for (const std::size_t i : alive) {
-      Candidate& c = s.pool[i];
-      Action a;
-      a.strike = c.strike;
-      for (int r = 0; r < kRepeatsPerRound; ++r) {
-        // Common seeds: every candidate meets the same noise draws.
-        const GameStep step = play(s.noisy, a, stream_seed(s.seed, 1000 + static_cast<std::uint64_t>(c.noisy_tries)));
-        s.used += 1;
-        c.noisy_tries += 1;
-        c.noisy_points += step.ruling.points[static_cast<std::size_t>(s.state.to_shoot)] > 0 ? 1 : 0;
-      }
-    }
+    for (const std::size_t i : alive) repeat_noisy(s, s.pool[i], s.pool[i].noisy_tries + kRepeatsPerRound);
     std::stable_sort(alive.begin(), alive.end(),
                      [&](std::size_t x, std::size_t y) { return noisy_rate(s.pool[x]) > noisy_rate(s.pool[y]); });
     if (alive.size() > 1) alive.resize((alive.size() + 1) / 2);
   }
   return alive.front();
+}
+
+// One noise-free run: does the strike score?
+bool point_quiet(Search& s, const ShotAction& strike) {
+  Action a;
+  a.strike = strike;
+  s.used += 1;
+  return play(s.quiet, a, 0).ruling.points[static_cast<std::size_t>(s.state.to_shoot)] > 0;
+}
+
+// Step 4: the chosen point moved to the middle of its aim window (noise-free,
+// steps of kCentreStepDeg up to kCentreReachDeg each way), kept when it
+// scores as often on the same noisy seeds.
+std::size_t centre(Search& s, std::size_t chosen) {
+  const ShotAction start = s.pool[chosen].strike;
+  double edge[2] = {0.0, 0.0};
+  for (int side = 0; side < 2; ++side) {
+    const double sign = side == 0 ? -1.0 : 1.0;
+    for (double d = kCentreStepDeg; d <= kCentreReachDeg; d += kCentreStepDeg) {
+      if (s.budget - s.used < 2 + s.pool[chosen].noisy_tries) return chosen;
+      ShotAction n = start;
+      n.aim_deg = wrap_deg(start.aim_deg + sign * d);
+      if (!point_quiet(s, n)) break;
+      edge[side] = sign * d;
+    }
+  }
+  const double shift = 0.5 * (edge[0] + edge[1]);
+  if (std::abs(shift) < 0.5 * kCentreStepDeg) return chosen;
+  Candidate c;
+  c.strike = start;
+  c.strike.aim_deg = wrap_deg(start.aim_deg + shift);
+  c.point = true;
+  c.score = kPointScore;
+  s.pool.push_back(c);
+  repeat_noisy(s, s.pool.back(), s.pool[chosen].noisy_tries);
+  const Candidate& moved = s.pool.back();
+  if (moved.noisy_tries == s.pool[chosen].noisy_tries && moved.noisy_points >= s.pool[chosen].noisy_points)
+    return s.pool.size() - 1;
+  return chosen;
 }
 
 }  // namespace
@@ -229,11 +277,11 @@ CaromSearchResult carom_search(const AgentOptions& options, const GameState& sta
   CueStrikeNoise noise = options.noise ? *options.noise : state.config.noise;
   if (is_zero(noise)) noise = tournament_noise();
   s.noisy.config.noise = noise;
-  s.pool.reserve(static_cast<std::size_t>(s.budget));
 
   scan(s, std::max(1, s.budget / 2));
   refine(s, std::max(s.used, s.budget - s.budget / 4));
-  const std::size_t chosen = screen(s);
+  std::size_t chosen = screen(s);
+  if (chosen < s.pool.size()) chosen = centre(s, chosen);
 
   CaromSearchResult r;
   r.simulations = s.used;

@@ -1,0 +1,83 @@
+// The break: a recommended opening shot for each discipline (issue 25,
+// item 3; the measurements behind the choices: docs/break.md, made with
+// bench/break_study.cpp).
+//
+//   GameState s = new_game(config, seed);        // phase break_shot
+//   GameStep step = play(s, recommended_break(s), shot_seed);
+//
+// Pool (9-ball, 8-ball, 10-ball): the side break that pros use (D.
+// Alciatore, "How to Rack and Break 9-Ball Like a Pro", Billiards Digest
+// 2018: with a tight rack, break from the side with the cue ball close to
+// the long rail and hit the 1 squarely, to drive the wing ball into the
+// corner). Written on the rack as the state holds it, not on a fixed rack:
+// the apex ball is the lowest object ball on the table (the ball on), the
+// rack's axis runs from it to the object balls' centroid, and the cue ball
+// is placed behind the head string (the kitchen) kBreakRailGap off the side
+// cushion nearest the rack's side chosen by kBreakSide, aimed at the apex ball
+// with the cut kBreakCut, at kBreakSpeed with the tip kBreakHeight above
+// centre and the cue kBreakElevationDeg above level.
+//
+// Snooker: a safe break-off (WPBSA Rules, section 3.2: the cue ball in hand
+// in the D, any red first): from the D on the yellow's side, a thin contact
+// on the end red of the pack's back row on that side, with running side so
+// the cue ball comes off the top and side cushions back towards baulk.
+//
+// Three-cushion: the standard opening (UMB: the red must be struck first):
+// the cue ball from its opening spot onto the red about half-ball on the
+// side of the cue ball's own half, so that it goes to the foot cushion, a
+// long cushion, the other long cushion and back to the opponent's ball on
+// the head spot.
+#pragma once
+
+#include "cueball/games/game.hpp"
+
+namespace cueball {
+
+// ---- pool: the measured side break (docs/break.md)
+
+/// Distance of the cue ball's centre behind the head string, m.
+inline constexpr double kBreakBehindString = 0.01;
+/// Gap between the cue ball and the side cushion's nose line, m (its centre
+/// is the ball's radius farther from the nose).
+inline constexpr double kBreakRailGap = 0.10;
+/// The side of the table the cue ball is placed on: -1 the y = 0 cushion, +1 the y = W one.
+inline constexpr int kBreakSide = -1;
+/// Impact offset on the apex ball, a fraction of the ball's diameter, 0 a
+/// square hit; positive cuts it towards the breaking side's own rail.
+inline constexpr double kBreakCut = 0.0;
+/// Cue speed, m/s (a pro's break: the cue ball at 25-30 mph, 11-13 m/s; the
+/// cue at about 10 m/s gives it about 10-11 m/s).
+inline constexpr double kBreakSpeed = 11.0;
+/// Tip offset above centre, ball radii: a little follow to "squat" the cue
+/// ball near the centre after the hit (Alciatore, "break squat").
+inline constexpr double kBreakHeight = 0.0;
+/// Cue elevation, degrees (level: the engine has no airborne phase).
+inline constexpr double kBreakElevationDeg = 0.0;
+
+// ---- snooker break-off
+
+/// Cue speed of the break-off, m/s.
+inline constexpr double kBreakOffSpeed = 4.0;
+/// Share of the end red hit (fraction of the diameter overlapping at contact): a thin contact.
+inline constexpr double kBreakOffFullness = 0.12;
+/// Running side, ball radii.
+inline constexpr double kBreakOffSide = 0.3;
+
+// ---- three-cushion opening
+
+/// Cue speed of the opening shot, m/s.
+inline constexpr double kOpeningSpeed = 3.5;
+/// Fullness of the hit on the red: half-ball.
+inline constexpr double kOpeningFullness = 0.5;
+
+/// The recommended opening shot for `state`, which must be in
+/// GamePhase::break_shot (InvalidArgument "phase" otherwise, naming the
+/// phase; "kind" when the state has no ball the shot needs: no object ball
+/// for a pool break, no red for a snooker break-off, no red or opponent's
+/// ball for a three-cushion opening). The action places the cue ball
+/// (Action::place) when it is in hand, at the spot above or, when that spot
+/// is taken, the nearest free spot of the region towards the long string;
+/// the strike's aim is absolute (aim_deg), so noise and aim_at play no part.
+Action recommended_break(const GameState& state);
+
+}  // namespace cueball

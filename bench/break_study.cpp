@@ -53,6 +53,7 @@ struct Cell {
   double gap_sigma = 0.0;       // m
   bool reverse_order = false;   // the balls given to the simulator in reverse id order
   BallCollisionModel model = BallCollisionModel::coulomb_impulse;
+  bool nine_on_spot = false;    // the rack moved two rows towards the foot rail (the 9 on the foot spot)
 };
 
 struct Options {
@@ -127,6 +128,7 @@ void set_breaks(CellRun& run) {
       Vec2 p = cue;
       for (const PlacedBall& q : placed)
         if (q.id == id && id != 0) p = q.position;
+      if (id != 0 && run.cell.nine_on_spot) p.x += 2.0 * std::sqrt(3.0) * (R + 2.0 * run.cell.gap_sigma);
       if (id == 1) one = p;
       run.layouts[(static_cast<std::size_t>(k) * balls + j) * 2] = p.x;
       run.layouts[(static_cast<std::size_t>(k) * balls + j) * 2 + 1] = p.y;
@@ -199,9 +201,9 @@ std::string share(int k, int n) {
 void report(const CellRun& run) {
   const Cell& c = run.cell;
   const Tally& t = run.tally;
-  std::printf("%-8s rail=%.2f cut=%+.2f v=%4.1f h=%+.2f el=%2.0f sigma=%.5f %s %s | pot %s legal %s made %s made|legal %s "
+  std::printf("%s%-8s rail=%.2f cut=%+.2f v=%4.1f h=%+.2f el=%2.0f sigma=%.5f %s %s | pot %s legal %s made %s made|legal %s "
               "scratch %s wing %s balls %.3f | %.0f/s\n",
-              c.spot, c.rail_gap, c.cut, c.speed, c.height, c.elevation, c.gap_sigma,
+              c.nine_on_spot ? "9spot " : "", c.spot, c.rail_gap, c.cut, c.speed, c.height, c.elevation, c.gap_sigma,
               c.model == BallCollisionModel::coulomb_impulse ? "coulomb" : "mathavan",
               c.reverse_order ? "rev" : "fwd", share(t.pot, t.n).c_str(), share(t.legal, t.n).c_str(),
               share(t.made, t.n).c_str(), share(t.made, t.legal).c_str(), share(t.scratch, t.n).c_str(),
@@ -263,7 +265,7 @@ void suite_order(const Options& o) {
 
 void suite_model(const Options& o) {
   for (BallCollisionModel m : {BallCollisionModel::coulomb_impulse, BallCollisionModel::mathavan_2014})
-    for (const char* spot : {"centre", "side"})
+    for (const char* spot : {"centre", "side", "side_top"})
       for (double sigma : {0.0, 0.0001}) {
         Cell c;
         c.spot = spot;
@@ -313,9 +315,38 @@ void suite_centre(const Options& o) {
         }
 }
 
+// The 2016 WPA World Championship racked the 9 on the foot spot.
+void suite_spot(const Options& o) {
+  for (bool nine : {false, true})
+    for (const char* spot : {"centre", "side"})
+      for (double sigma : {0.0, 0.000025, 0.0001}) {
+        Cell c;
+        c.spot = spot;
+        c.nine_on_spot = nine;
+        c.gap_sigma = sigma;
+        c.speed = 11.0;
+        run_cell(c, o);
+      }
+}
+
+// The recommended break (games/break_shot.hpp): on the long string 1 cm
+// behind the head string, square on the apex ball, 11 m/s, centre ball.
+void suite_final(const Options& o) {
+  for (bool nine : {false, true})
+    for (double sigma : {0.0, 0.000025, 0.0001}) {
+      Cell c;
+      c.spot = "side";
+      c.rail_gap = 0.5 * 1.27 - 0.028575;  // the long string
+      c.nine_on_spot = nine;
+      c.gap_sigma = sigma;
+      c.speed = 11.0;
+      run_cell(c, o);
+    }
+}
+
 int usage(const char* why) {
   std::fprintf(stderr, "cueball-break-study: %s\nusage: cueball-break-study [--shots N] [--threads T] [--seed S] "
-                       "[--suite default|grid|order|model|rail|sigma|centre]\n", why);
+                       "[--suite default|grid|order|model|rail|sigma|centre|spot|final]\n", why);
   return 2;
 }
 
@@ -342,6 +373,8 @@ int main(int argc, char** argv) {
   else if (o.suite == "rail") suite_rail(o);
   else if (o.suite == "sigma") suite_sigma(o);
   else if (o.suite == "centre") suite_centre(o);
-  else return usage("unknown --suite (default, grid, order, model, rail, sigma, centre)");
+  else if (o.suite == "spot") suite_spot(o);
+  else if (o.suite == "final") suite_final(o);
+  else return usage("unknown --suite (default, grid, order, model, rail, sigma, centre, spot, final)");
   return 0;
 }

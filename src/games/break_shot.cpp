@@ -35,11 +35,6 @@ const SimulationBall* find(const Scenario& table, int id) {
   return nullptr;
 }
 
-Vec2 unit_or(Vec2 d, Vec2 fallback) {
-  const double n = norm(d);
-  return n > 0.0 ? d / n : fallback;
-}
-
 double angle_deg(Vec2 d) { return std::atan2(d.y, d.x) * kRadToDeg; }
 
 // The aim, degrees, from `from` at a ball at `target` so that the cue ball's
@@ -59,27 +54,27 @@ std::vector<Vec2> positions_but(const Scenario& table, int id) {
 }
 
 // `wanted` when it is in the region and free, else the nearest free spot
-// of the region on the way from it to `towards`, in 5 mm steps; none when
-// there is none.
-std::optional<Vec2> free_spot_near(const GameState& state, Vec2 wanted, Vec2 towards) {
+// of the region on the line through it along `along` (a unit vector), in
+// 5 mm steps either way, up to `reach`; none when there is none.
+std::optional<Vec2> free_spot_near(const GameState& state, Vec2 wanted, Vec2 along, double reach) {
   const Table& t = state.table.table;
   const std::vector<Vec2> others = positions_but(state.table, state.cue_ball());
   const double step = 0.005;
-  const double length = norm(towards - wanted);
-  const Vec2 u = unit_or(towards - wanted, {0.0, 0.0});
-  for (double s = 0.0; s <= length + 1e-12; s += step) {
-    const Vec2 p = wanted + s * u;
-    if ((!state.ball_in_hand || in_region(t, *state.ball_in_hand, p)) && is_free_spot(t, others, p, t.ball.radius))
-      return p;
-  }
+  for (double s = 0.0; s <= reach; s += step)
+    for (const double sign : {1.0, -1.0}) {
+      const Vec2 p = wanted + (sign * s) * along;
+      if ((!state.ball_in_hand || in_region(t, *state.ball_in_hand, p)) && is_free_spot(t, others, p, t.ball.radius))
+        return p;
+    }
   return std::nullopt;
 }
 
 // Where the cue ball is struck from: placed (in hand) or where it lies.
-Vec2 cue_position(const GameState& state, Action& action, Vec2 wanted, Vec2 towards) {
+Vec2 cue_position(const GameState& state, Action& action, Vec2 wanted, Vec2 along) {
   if (state.ball_in_hand) {
-    const std::optional<Vec2> p = free_spot_near(state, wanted, towards);
-    if (!p) throw InvalidArgument("place", "no free spot for the cue ball in its region on the way from (" +
+    const Table& t = state.table.table;
+    const std::optional<Vec2> p = free_spot_near(state, wanted, along, std::max(t.length, t.width));
+    if (!p) throw InvalidArgument("place", "no free spot for the cue ball in its region near (" +
                                                std::to_string(wanted.x) + ", " + std::to_string(wanted.y) + ")");
     action.place = *p;
     return *p;
@@ -104,11 +99,11 @@ Action pool_break(const GameState& state) {
 
   Action action;
   const double x = head_string_x(t) - kBreakBehindString;
-  const double y = kBreakSide < 0 ? R + kBreakRailGap : t.width - R - kBreakRailGap;
-  const Vec2 cue = cue_position(state, action, {x, y}, {x, long_string_y(t)});
-  // A cut towards the breaking side's own rail: the cue ball's line passes
-  // the apex on that side.
-  const double side_sign = cue.y < a.y ? -1.0 : 1.0;
+  const double y = long_string_y(t) + kBreakLateral;
+  // The spot, or the nearest free one across the table from it.
+  const Vec2 cue = cue_position(state, action, {x, y}, {0.0, 1.0});
+  // A cut passes the apex on the cue ball's own side of the long string.
+  const double side_sign = cue.y < long_string_y(t) ? -1.0 : 1.0;
   action.strike.speed = kBreakSpeed;
   action.strike.aim_deg = aim_with_offset(cue, a, side_sign * kBreakCut, R);
   action.strike.height = kBreakHeight;
@@ -202,7 +197,7 @@ void choose_target(BreakOff& b, Action& action) {
     found = true;
   }
   const Vec2 wanted{spots.baulk_line_x - 0.005, 0.5 * t.width - 0.6 * spots.d_radius};
-  b.cue = cue_position(b.state, action, wanted, spots.brown);
+  b.cue = cue_position(b.state, action, wanted, {0.0, 1.0});
 }
 
 // Step 2: thin contacts on the red's outer (yellow) side, two speeds, both

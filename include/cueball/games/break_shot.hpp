@@ -5,17 +5,17 @@
 //   GameState s = new_game(config, seed);        // phase break_shot
 //   GameStep step = play(s, recommended_break(s), shot_seed);
 //
-// Pool (9-ball, 8-ball, 10-ball): the side break that pros use (D.
-// Alciatore, "How to Rack and Break 9-Ball Like a Pro", Billiards Digest
-// 2018: with a tight rack, break from the side with the cue ball close to
-// the long rail and hit the 1 squarely, to drive the wing ball into the
-// corner). Written on the rack as the state holds it, not on a fixed rack:
-// the apex ball is the lowest object ball on the table (the ball on), the
-// rack's axis runs from it to the object balls' centroid, and the cue ball
-// is placed behind the head string (the kitchen) kBreakRailGap off the side
-// cushion nearest the rack's side chosen by kBreakSide, aimed at the apex ball
-// with the cut kBreakCut, at kBreakSpeed with the tip kBreakHeight above
-// centre and the cue kBreakElevationDeg above level.
+// Pool (9-ball, 8-ball, 10-ball): the break that made a ball most often in
+// the engine under tournament noise (docs/break.md): the cue ball on the
+// long string just behind the head string, a square hit on the apex ball at
+// 11 m/s (a pro's break speed), centre ball, level cue. The side break that
+// pros favour with a frozen rack (D. Alciatore, "How to Rack and Break
+// 9-Ball Like a Pro", Billiards Digest 2018: from near the long rail, square
+// on the 1, the wing ball into the corner) does no better in the engine,
+// whose frozen rack does not pass the impulse through the balls at once
+// (docs/break.md, "Why"). Written on the rack as the state holds it: the
+// apex is the ball on (the lowest object ball on the table), so the same
+// break serves 8-ball and 10-ball racks.
 //
 // Snooker: a safe break-off (WPBSA Rules, section 3.2: the cue ball in hand
 // in the D, any red first): from the D on the yellow's side, a thin contact
@@ -37,19 +37,18 @@ namespace cueball {
 
 /// Distance of the cue ball's centre behind the head string, m.
 inline constexpr double kBreakBehindString = 0.01;
-/// Gap between the cue ball and the side cushion's nose line, m (its centre
-/// is the ball's radius farther from the nose).
-inline constexpr double kBreakRailGap = 0.10;
-/// The side of the table the cue ball is placed on: -1 the y = 0 cushion, +1 the y = W one.
-inline constexpr int kBreakSide = -1;
+/// The cue ball's offset from the long string, m (+ towards the y = W
+/// cushion): 0, the long string. The side break is about +-0.5 m.
+inline constexpr double kBreakLateral = 0.0;
 /// Impact offset on the apex ball, a fraction of the ball's diameter, 0 a
-/// square hit; positive cuts it towards the breaking side's own rail.
+/// square hit; positive passes the apex on the cue ball's own side of the
+/// long string.
 inline constexpr double kBreakCut = 0.0;
-/// Cue speed, m/s (a pro's break: the cue ball at 25-30 mph, 11-13 m/s; the
-/// cue at about 10 m/s gives it about 10-11 m/s).
+/// Cue speed, m/s (a pro's break: the cue ball at 25-30 mph, about
+/// 11-13 m/s; Alciatore, "typical speeds").
 inline constexpr double kBreakSpeed = 11.0;
-/// Tip offset above centre, ball radii: a little follow to "squat" the cue
-/// ball near the centre after the hit (Alciatore, "break squat").
+/// Tip offset above centre, ball radii (follow of 0.1 cut scratches but
+/// made no more balls: docs/break.md).
 inline constexpr double kBreakHeight = 0.0;
 /// Cue elevation, degrees (level: the engine has no airborne phase).
 inline constexpr double kBreakElevationDeg = 0.0;

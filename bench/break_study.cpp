@@ -14,7 +14,7 @@
 //          not in simulate_many's counts, so `legal` is a slight undercount)
 //   made   legal and a ball pocketed: the pro statistic's numerator
 //   made|legal  made / legal, the share the WPA statistics quote (~71 %)
-//   scratch, wing (a wing ball, the 2 or the 3, in a corner pocket), balls
+//   scratch, wing (a wing ball, the 4 or the 5, in a foot corner pocket), balls
 //   (mean object balls pocketed).
 // Miscues and event-limit failures count as breaks that make nothing.
 //
@@ -53,7 +53,8 @@ struct Cell {
   double gap_sigma = 0.0;       // m
   bool reverse_order = false;   // the balls given to the simulator in reverse id order
   BallCollisionModel model = BallCollisionModel::coulomb_impulse;
-  bool nine_on_spot = false;    // the rack moved two rows towards the foot rail (the 9 on the foot spot)
+  bool nine_on_spot = false;    // the 9 on the foot spot: the rack moved two rows towards the head string
+  double corner_mouth = 0.0;    // corner pockets' mouth, m; 0 = pool_9ft's (4 9/16 in)
 };
 
 struct Options {
@@ -89,7 +90,9 @@ Vec2 cue_spot(const Cell& c, const Table& t) {
 // Step 1: the table, the frozen rack as the scenario's balls (its order
 // reversed when asked), the model and the noise.
 void set_scenario(CellRun& run) {
-  run.table = pool_table_9ft();
+  TableSpec spec = pool_table_9ft_spec();
+  if (run.cell.corner_mouth > 0.0) spec.corner_pockets.mouth = run.cell.corner_mouth;
+  run.table = build_table(spec);
   run.scenario.table = run.table;
   run.scenario.settings.parameters = default_parameters(run.table);
   run.scenario.settings.ball_collision_model = run.cell.model;
@@ -128,7 +131,7 @@ void set_breaks(CellRun& run) {
       Vec2 p = cue;
       for (const PlacedBall& q : placed)
         if (q.id == id && id != 0) p = q.position;
-      if (id != 0 && run.cell.nine_on_spot) p.x += 2.0 * std::sqrt(3.0) * (R + 2.0 * run.cell.gap_sigma);
+      if (id != 0 && run.cell.nine_on_spot) p.x -= 2.0 * std::sqrt(3.0) * (R + 2.0 * run.cell.gap_sigma);
       if (id == 1) one = p;
       run.layouts[(static_cast<std::size_t>(k) * balls + j) * 2] = p.x;
       run.layouts[(static_cast<std::size_t>(k) * balls + j) * 2 + 1] = p.y;
@@ -173,7 +176,7 @@ void count(CellRun& run) {
         continue;
       }
       if (down) ++pocketed;
-      if (down && (id == 2 || id == 3)) {
+      if (down && (id == 4 || id == 5)) {
         const int p = run.result.pocket[e];
         if (p == 2 || p == 3) wing = true;  // the foot corners (table.hpp's pocket order)
       }
@@ -201,9 +204,9 @@ std::string share(int k, int n) {
 void report(const CellRun& run) {
   const Cell& c = run.cell;
   const Tally& t = run.tally;
-  std::printf("%s%-8s rail=%.2f cut=%+.2f v=%4.1f h=%+.2f el=%2.0f sigma=%.5f %s %s | pot %s legal %s made %s made|legal %s "
+  std::printf("%smouth=%.4f %-8s rail=%.2f cut=%+.2f v=%4.1f h=%+.2f el=%2.0f sigma=%.5f %s %s | pot %s legal %s made %s made|legal %s "
               "scratch %s wing %s balls %.3f | %.0f/s\n",
-              c.nine_on_spot ? "9spot " : "", c.spot, c.rail_gap, c.cut, c.speed, c.height, c.elevation, c.gap_sigma,
+              c.nine_on_spot ? "9spot " : "", c.corner_mouth, c.spot, c.rail_gap, c.cut, c.speed, c.height, c.elevation, c.gap_sigma,
               c.model == BallCollisionModel::coulomb_impulse ? "coulomb" : "mathavan",
               c.reverse_order ? "rev" : "fwd", share(t.pot, t.n).c_str(), share(t.legal, t.n).c_str(),
               share(t.made, t.n).c_str(), share(t.made, t.legal).c_str(), share(t.scratch, t.n).c_str(),
@@ -331,7 +334,7 @@ void suite_spot(const Options& o) {
 
 // The recommended break (games/break_shot.hpp): on the long string 1 cm
 // behind the head string, square on the apex ball, 11 m/s, centre ball.
-void suite_final(const Options& o) {
+void suite_final(const Options& o, double speed = 11.0) {
   for (bool nine : {false, true})
     for (double sigma : {0.0, 0.000025, 0.0001}) {
       Cell c;
@@ -339,14 +342,33 @@ void suite_final(const Options& o) {
       c.rail_gap = 0.5 * 1.27 - 0.028575;  // the long string
       c.nine_on_spot = nine;
       c.gap_sigma = sigma;
-      c.speed = 11.0;
+      c.speed = speed;
       run_cell(c, o);
     }
 }
 
+// Tighter corner pockets (pro events: 4-4.25 in) and a raised cue, on the
+// recommended break.
+void suite_extras(const Options& o) {
+  for (bool nine : {false, true})
+    for (double mouth : {0.0, 4.25 * 0.0254, 4.0 * 0.0254})
+      for (double el : {0.0, 5.0}) {
+        Cell c;
+        c.spot = "side";
+        c.rail_gap = 0.5 * 1.27 - 0.028575;  // the long string
+        c.nine_on_spot = nine;
+        c.gap_sigma = 0.000025;
+        c.speed = 11.0;
+        c.corner_mouth = mouth;
+        c.elevation = el;
+        if (mouth > 0.0 && el > 0.0) continue;
+        run_cell(c, o);
+      }
+}
+
 int usage(const char* why) {
   std::fprintf(stderr, "cueball-break-study: %s\nusage: cueball-break-study [--shots N] [--threads T] [--seed S] "
-                       "[--suite default|grid|order|model|rail|sigma|centre|spot|final]\n", why);
+                       "[--suite default|grid|order|model|rail|sigma|centre|spot|final|final9|extras]\n", why);
   return 2;
 }
 
@@ -375,6 +397,8 @@ int main(int argc, char** argv) {
   else if (o.suite == "centre") suite_centre(o);
   else if (o.suite == "spot") suite_spot(o);
   else if (o.suite == "final") suite_final(o);
-  else return usage("unknown --suite (default, grid, order, model, rail, sigma, centre, spot, final)");
+  else if (o.suite == "final9") suite_final(o, 9.0);  // a cue ball at about 12 m/s (27 mph)
+  else if (o.suite == "extras") suite_extras(o);
+  else return usage("unknown --suite (default, grid, order, model, rail, sigma, centre, spot, final, final9, extras)");
   return 0;
 }

@@ -318,4 +318,23 @@ Action recommended_break(const GameState& state) {
   throw InvalidArgument("kind", "unknown game");
 }
 
+GameState nine_on_foot_spot(GameState state) {
+  if (state.config.kind != GameKind::nine_ball)
+    throw InvalidArgument("kind", std::string(to_string(state.config.kind)) + ": only a 9-ball rack has the 9 to spot");
+  if (state.phase != GamePhase::break_shot)
+    throw InvalidArgument("phase", std::string(to_string(state.phase)) + ": the rack can only be moved before the break");
+  const SimulationBall* nine = find(state.table, 9);
+  if (nine == nullptr) throw InvalidArgument("kind", "the 9 is not on the table");
+  const Table& t = state.table.table;
+  const Vec2 shift = foot_spot(t) - nine->state.position;
+  const int cue = state.cue_ball();
+  for (SimulationBall& b : state.table.balls) {
+    if (b.id == cue) continue;
+    b.state.position = b.state.position + shift;
+    if (!ball_on_table(t, b.state.position))
+      throw InvalidArgument("rack", "ball " + std::to_string(b.id) + " would be off the table with the 9 on the foot spot");
+  }
+  return state;
+}
+
 }  // namespace cueball

@@ -79,4 +79,17 @@ inline constexpr double kOpeningFullness = 0.5;
 /// the strike's aim is absolute (aim_deg), so noise and aim_at play no part.
 Action recommended_break(const GameState& state);
 
+/// A 9-ball state at the break with its rack moved along the long string so
+/// that the 9, not the 1, sits on the foot spot: every object ball shifted
+/// by the same vector (gaps kept). WPA 2.2 racks the 1 on the foot spot
+/// (what new_game() does); many professional events rack the 9 there (the
+/// 2016 WPA World 9-Ball Championship did, whose breakers made a ball on 71 %
+/// of breaks), which puts the rack two rows (2 sqrt(3) R) nearer the head
+/// string; at a pro's break speed the break then makes a ball more often
+/// (docs/break.md). Throws
+/// InvalidArgument "kind" for another discipline or without the 9 on the
+/// table, "phase" outside GamePhase::break_shot, "rack" when a moved ball
+/// would not fit on the table.
+GameState nine_on_foot_spot(GameState state);
+
 }  // namespace cueball

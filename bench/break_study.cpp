@@ -347,6 +347,20 @@ void suite_final(const Options& o, double speed = 11.0) {
     }
 }
 
+// The cut break from the side that pros use with the 9 on the spot.
+void suite_cut9(const Options& o) {
+  for (double cut : {0.0, 0.15, 0.3})
+    for (double v : {9.0, 11.0}) {
+      Cell c;
+      c.spot = "side";
+      c.cut = cut;
+      c.nine_on_spot = true;
+      c.gap_sigma = 0.000025;
+      c.speed = v;
+      run_cell(c, o);
+    }
+}
+
 // Tighter corner pockets (pro events: 4-4.25 in) and a raised cue, on the
 // recommended break.
 void suite_extras(const Options& o) {
@@ -368,7 +382,7 @@ void suite_extras(const Options& o) {
 
 int usage(const char* why) {
   std::fprintf(stderr, "cueball-break-study: %s\nusage: cueball-break-study [--shots N] [--threads T] [--seed S] "
-                       "[--suite default|grid|order|model|rail|sigma|centre|spot|final|final9|extras]\n", why);
+                       "[--suite default|grid|order|model|rail|sigma|centre|spot|final|final9|extras|cut9]\n", why);
   return 2;
 }
 
@@ -399,6 +413,7 @@ int main(int argc, char** argv) {
   else if (o.suite == "final") suite_final(o);
   else if (o.suite == "final9") suite_final(o, 9.0);  // a cue ball at about 12 m/s (27 mph)
   else if (o.suite == "extras") suite_extras(o);
-  else return usage("unknown --suite (default, grid, order, model, rail, sigma, centre, spot, final, final9, extras)");
+  else if (o.suite == "cut9") suite_cut9(o);
+  else return usage("unknown --suite (default, grid, order, model, rail, sigma, centre, spot, final, final9, extras, cut9)");
   return 0;
 }

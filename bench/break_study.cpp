@@ -19,10 +19,14 @@
 // Miscues and event-limit failures count as breaks that make nothing.
 //
 // Usage: cueball-break-study [--shots N] [--threads T] [--seed S] [--suite NAME]
-// suites: default (the built-in break), grid (spots x cuts x speeds x
-// heights x gaps), order (the frozen rack with its balls given in reverse
-// order), model (coulomb_impulse vs mathavan_2014), best (one cell, many
-// shots). Output: one line per cell, whitespace-separated columns.
+// suites: default (the built-in break at 7/9/11 m/s), grid (spots x cuts x
+// speeds x heights x gaps), order (the frozen rack with its balls given in
+// reverse order), model (coulomb_impulse vs mathavan_2014, mirror spots),
+// rail (side spots' distance from the rail), sigma (gap sizes), centre (the
+// long string and box spots at the top speeds), spot (the 9 on the foot
+// spot), final / final9 (the recommended break at 11 / 9 m/s), extras
+// (tighter corner pockets, a raised cue), cut9 (the side cut break with the
+// 9 on the spot). Output: one line per cell. docs/break.md has the results.
 #include <algorithm>
 #include <cmath>
 #include <cstdio>

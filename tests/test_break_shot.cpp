@@ -101,7 +101,9 @@ TEST(BreakShot, NineBallBreakMakesABallWithTheNineOnTheSpot) {
 }
 
 TEST(BreakShot, NineOnFootSpotMovesTheWholeRack) {
-  const GameState s = new_game(default_config(GameKind::nine_ball));
+  GameConfig frozen = default_config(GameKind::nine_ball);
+  frozen.rack.gap_sigma = 0.0;  // the lattice itself, without the default gaps
+  const GameState s = new_game(frozen);
   const GameState moved = nine_on_foot_spot(s);
   const Table& t = s.table.table;
   for (std::size_t i = 0; i < s.table.balls.size(); ++i) {

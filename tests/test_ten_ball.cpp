@@ -65,7 +65,9 @@ Action decide(Decision d) {
 }
 
 TEST(TenBall, NewGameIsATriangleOfTenBrokenFromTheKitchen) {
-  const GameState s = new_game(default_config(GameKind::ten_ball));
+  GameConfig frozen = default_config(GameKind::ten_ball);
+  frozen.rack.gap_sigma = 0.0;  // the lattice itself, without the default gaps
+  const GameState s = new_game(frozen);
   ASSERT_EQ(s.table.balls.size(), 11u);
   const Table& t = s.table.table;
   const double R = t.ball.radius;

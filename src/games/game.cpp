@@ -119,7 +119,10 @@ GameConfig default_config(GameKind kind) {
   switch (kind) {
     case GameKind::nine_ball:
     case GameKind::eight_ball:
-    case GameKind::ten_ball: c.table = "pool_9ft"; break;
+    case GameKind::ten_ball:
+      c.table = "pool_9ft";
+      c.rack.gap_sigma = kDefaultRackGapSigma;
+      break;
     case GameKind::snooker:
       c.table = "snooker_12ft";
       c.max_shots = 2000;  // a frame takes more shots than a rack

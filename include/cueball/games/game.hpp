@@ -59,6 +59,9 @@ std::optional<GameKind> game_kind_from_string(std::string_view name);
 /// The names, for messages: "nine_ball, eight_ball, ten_ball, snooker, three_cushion".
 std::string game_kind_names();
 
+/// The pool games' default rack gap scale, m (docs/break.md).
+inline constexpr double kDefaultRackGapSigma = 2.5e-5;
+
 /// How a game is played: the discipline, the table, and the variants the
 /// rule books leave open (each documented with its default).
 struct GameConfig {
@@ -66,7 +69,11 @@ struct GameConfig {
   /// The table preset (table/table.hpp): pool_9ft for the pool games,
   /// snooker_12ft for snooker, carom_10ft for three-cushion.
   std::string table = "pool_9ft";
-  /// The rack's gaps (rack.hpp); 0: a frozen rack.
+  /// The rack's gaps (rack.hpp), seeded by new_game's seed. The pool games
+  /// default to gap_sigma = kDefaultRackGapSigma: balls made to 2 1/4 in ±
+  /// 0.005 in (WPA Equipment Specifications) never close every contact of
+  /// a rack, and a frozen rack's break depends on the order in which the
+  /// simulator resolves its touching pairs (docs/break.md); 0: frozen.
   RackOptions rack;
   /// Execution noise added to every strike (none by default; the
   /// computational-pool tournaments' level: tournament_noise(), planning).

@@ -190,6 +190,17 @@ TEST(PlannerAgent, NextTargetsFollowTheRules) {
   EXPECT_EQ(next_targets(snooker, 21), (std::vector<std::vector<int>>{{3, 7}}));   // after a colour, the reds
 }
 
+TEST(PlannerAgent, BreaksWithTheSharedBreak) {
+  const GameState s = new_game(default_config(GameKind::nine_ball), 2);
+  const PlannerChoice c = planner_choice(cheap(), s, 2);
+  EXPECT_EQ(c.kind, PlannerChoice::Kind::break_shot);
+  EXPECT_EQ(c.simulations, 0);
+  EXPECT_EQ(c.action.aim_at, 1);
+  ASSERT_TRUE(c.action.place);
+  EXPECT_LE(c.action.place->x, head_string_x(s.table.table));
+  EXPECT_EQ(play(s, c.action, 2).facts.first_contact, 1);
+}
+
 TEST(PlannerAgent, RefusesBadOptions) {
   const GameState s = in_play({{0, {0.62, 0.62}}, {1, {0.45, 0.45}}});
   AgentOptions o = cheap();

@@ -51,7 +51,9 @@ std::string agent_kind_names();
 
 struct AgentOptions {
   AgentKind kind = AgentKind::planner;
-  /// Engine runs a decision may spend (planner, carom_search).
+  /// Engine runs of each plan (planner: PlanRequest::simulations; a plan
+  /// for position or in hand spends more, position_play.hpp and
+  /// ball_in_hand.hpp say how much), or of a decision (carom_search).
   int simulations = 2000;
   /// Engine runs of each next-shot plan in position play (planner; 0: no position play).
   int position_simulations = 0;

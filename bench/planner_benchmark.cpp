@@ -9,14 +9,14 @@
 //   planner     plan_shot (shot_planner.hpp) with its defaults (direct and
 //               bank, tournament noise, centre ball then draw/follow) and
 //               --planner-simulations engine runs, seeded with the layout's seed;
-//   ghost_ball  ghost-ball aiming (D. G. Alciatore, "The Illustrated
-//               Principles of Pool and Billiards", 2004): the cue ball aimed
-//               at the ghost ball G = O - 2R u for the pocket whose straight
-//               paths are clear of the other balls and whose small-angle
-//               aim tolerance cos(cut) / (|CG| |OP|) is largest (cut <= 80
-//               deg, as the planner), centre ball, cue speed kGhostSpeed,
-//               the lowest elevation of kElevationsDeg the cue clears at
-//               (cue_obstructed); no simulation;
+//   ghost_ball  the ghost-ball agent's aim, ghost_ball_shot() (agents/agent.hpp;
+//               D. G. Alciatore, "The Illustrated Principles of Pool and
+//               Billiards", 2004): the cue ball aimed at the ghost ball
+//               G = O - 2R u for the pocket whose straight paths are clear
+//               of the other balls and whose small-angle aim tolerance
+//               cos(cut) / (|CG| |OP|) is largest (cut <= 80 deg, as the
+//               planner), centre ball, cue speed kGhostBallSpeed, the lowest
+//               clear elevation (lowest_clear_elevation_deg); no simulation;
 //   exhaustive  a dense grid (aims every kGridAimStepDeg over every direction
 //               in which the cue ball meets the target first in a straight
 //               line, x kGridSpeeds x kGridSpins, each at the lowest clear
@@ -35,14 +35,17 @@
 //
 // Suite "runout": 9-ball racks (rack_nine_ball with random gaps), broken by
 // the engine (a seeded break: cue ball behind the head string, aimed at the 1
-// with a small jitter, 6.5-8.5 m/s), then cue ball in hand placed by a rule
-// (a straight-in on the 1, kInHandBack behind the ghost ball of the easiest
-// clear pocket). The planner then shoots the lowest-numbered ball, the
-// planned strike played once with tournament noise, until the 9 drops
-// (a run-out), or a shot is a foul (wrong first contact, scratch), pots
-// nothing, or no feasible shot exists (with --fallback-kinds, after the
-// planner was asked again for those kinds: a kick when nothing else pots).
-// A 9 potted on the break is spotted.
+// with a small jitter, 6.5-8.5 m/s), then cue ball in hand placed by the
+// ghost-ball agent's rule (ghost_ball_in_hand_spot: a straight-in on the 1,
+// kGhostBallInHandBack behind the ghost ball of the easiest clear pocket).
+// That table is a 9-ball GameState in play (games/game.hpp; with --in-hand
+// planner the cue ball is in hand anywhere), and the planner agent
+// (agents/agent.hpp, planner_choice) plays it through play() with
+// tournament noise until the 9 drops (a run-out), a shot is a foul (wrong
+// first contact, scratch, miscue: the Ruling's foul), pots nothing, or the
+// agent finds no feasible shot of its kinds (--kinds, then --fallback-kinds:
+// a kick when nothing else pots) and would play a safety. A 9 potted on the
+// break is spotted.
 //
 // Everything is seeded: the same flags give the same choices and
 // probabilities whatever --threads (the timings of course vary).
@@ -68,6 +71,8 @@
 #include <time.h>  // clock_gettime(CLOCK_THREAD_CPUTIME_ID): the calling thread's CPU time
 
 #include "tool_support.hpp"
+#include "cueball/agents/agent.hpp"
+#include "cueball/games/game.hpp"
 #include "cueball/io/scenario_json.hpp"
 #include "cueball/simulation/batch.hpp"
 #include "cueball/core/errors.hpp"
@@ -91,11 +96,6 @@ constexpr tools::Flags kFlags{"cueball-planner-benchmark"};
 constexpr double kPi = std::numbers::pi;
 constexpr double kDeg = kPi / 180.0;
 
-// The ghost-ball baseline's cue speed, m/s (a medium pace, inside the
-// 1.4-2.3 m/s the planner chose on the first layouts).
-constexpr double kGhostSpeed = 1.5;
-// Elevations tried, lowest first, until the cue clears (the planner's limit is 30 deg).
-constexpr double kElevationsDeg[] = {0.0, 2.0, 5.0, 10.0, 15.0, 20.0, 25.0, 30.0};
 // The exhaustive grid.
 constexpr double kGridAimStepDeg = 0.05;  // 0.4 sigma of the tournament aim noise
 constexpr double kGridSpeeds[] = {1.0, 1.5, 2.0, 2.5, 3.0, 4.0, 5.0, 6.5};  // cue speed, m/s
@@ -106,8 +106,6 @@ constexpr Spin kGridSpins[] = {{0.0, 0.0},   {0.0, -0.35}, {0.0, 0.35},  {-0.2, 
                                {-0.2, -0.3}, {0.2, -0.3},  {-0.2, 0.3}, {0.2, 0.3}};
 constexpr int kScreenSlices = 16;
 constexpr int kScreenShots = 200;
-// Ball in hand: the cue ball this far behind the ghost ball, m.
-constexpr double kInHandBack = 0.3;
 // Seed streams: layout seed x -> planner seed x, screen seed mix(x, 1), measurement seed mix(x, 2).
 constexpr std::uint64_t kScreenStream = 1, kMeasureStream = 2, kBreakStream = 3;
 
@@ -175,13 +173,9 @@ Scenario single_layout(const Setup& st, std::uint64_t seed, int& others) {
   return s;
 }
 
-// The lowest elevation of kElevationsDeg at which the cue clears, or NaN.
-double clear_elevation(const Setup& st, const Scenario& s, ShotAction a) {
-  for (const double e : kElevationsDeg) {
-    a.elevation_deg = e;
-    if (!cue_obstructed(s.table, s.balls, 0, to_strike(a, st.radius), s.settings.parameters.ball)) return e;
-  }
-  return std::numeric_limits<double>::quiet_NaN();
+// The lowest clear elevation (lowest_clear_elevation_deg, the ghost-ball agent's), or NaN.
+double clear_elevation(const Scenario& s, const ShotAction& a) {
+  return lowest_clear_elevation_deg(s, 0, a).value_or(std::numeric_limits<double>::quiet_NaN());
 }
 
 // ------------------------------------------------------------------ measuring
@@ -224,28 +218,8 @@ struct Choice {
   double next_success_probability = -1.0;  // position play: the leave's next-shot estimate; -1: none
 };
 
-// 9-ball's next targets after `target` (PositionRequest::next_targets): each
-// object ball other than the target, one at a time in id order (the lowest
-// ball next; where the shot pots it too, the lowest left).
-std::vector<std::vector<int>> nine_ball_next_targets(const Scenario& s, int target) {
-  std::vector<int> ids;
-  for (const SimulationBall& b : s.balls)
-    if (b.id != 0 && b.id != target) ids.push_back(b.id);
-  std::sort(ids.begin(), ids.end());
-  std::vector<std::vector<int>> in_turn;
-  for (int id : ids) in_turn.push_back({id});
-  return in_turn;
-}
-
-// position_simulations > 0: plan_shot_for_position (position_play.hpp) with
-// that budget for each next-shot plan, the next targets 9-ball's
-// (nine_ball_next_targets).
-// placed: the cue ball in hand placed first by plan_ball_in_hand
-// (ball_in_hand.hpp), played for position (1,000 runs a next-shot plan
-// without position_simulations), the table with the cue ball at its spot
-// written to *placed.
-Choice planner_choice(const Scenario& s, int target, std::uint64_t seed, int simulations, int position_simulations = 0,
-                      const std::vector<ShotKind>& kinds = PlanRequest{}.kinds, Scenario* placed = nullptr) {
+// The single-pot suite's planner: plan_shot with its defaults and the budget.
+Choice single_planner_choice(const Scenario& s, int target, std::uint64_t seed, int simulations) {
   Choice c;
   const auto start = std::chrono::steady_clock::now();
   const double cpu_start = thread_cpu_seconds();
@@ -253,97 +227,33 @@ Choice planner_choice(const Scenario& s, int target, std::uint64_t seed, int sim
   q.target = target;
   q.seed = seed;
   q.simulations = simulations;
-  q.kinds = kinds;
   try {
-    ShotPlanResult r;
-    std::string where;
-    if (placed || position_simulations > 0) {
-      PositionRequest p;
-      p.shot = q;
-      p.next_targets = nine_ball_next_targets(s, target);
-      p.next_simulations = position_simulations > 0 ? position_simulations : 1000;
-      PositionPlanResult pr;
-      if (placed) {
-        BallInHandResult h = plan_ball_in_hand(s, BallInHandRequest{p, std::nullopt});
-        where = fmt("in hand at (%.3f, %.3f): ", h.cue_ball.x, h.cue_ball.y);
-        *placed = std::move(h.table);
-        pr = std::move(h.plan);
-      } else {
-        pr = plan_shot_for_position(s, p);
-      }
-      c.next_success_probability = pr.leave.next_feasible ? pr.leave.next_success_probability : 0.0;
-      r = std::move(pr.plan);
-    } else {
-      r = plan_shot(s, q);
-    }
+    const ShotPlanResult r = plan_shot(s, q);
     c.found = true;
     c.action = r.shot.strike;
     c.simulations = r.simulations;
     c.success_probability = r.shot.success_probability;
-    c.what = where + fmt("%s %s%s%s (window %.3f, screen %.3f)", to_string(r.shot.kind), r.shot.pocket_name.c_str(),
-                         r.shot.cushion.empty() ? "" : " off ", r.shot.cushion.c_str(), r.shot.window_probability,
-                         r.shot.success_probability);
+    c.what = fmt("%s %s%s%s (window %.3f, screen %.3f)", to_string(r.shot.kind), r.shot.pocket_name.c_str(),
+                 r.shot.cushion.empty() ? "" : " off ", r.shot.cushion.c_str(), r.shot.window_probability,
+                 r.shot.success_probability);
   } catch (const NoFeasibleShot& e) {
     c.simulations = simulations;  // the API does not report them: its budget is the upper bound
-    c.what = std::string(e.what()).substr(0, 2000);  // "no feasible shot pots ball 1 (12 candidates: ...)"
+    c.what = std::string(e.what()).substr(0, 2000);
   }
   c.seconds = seconds_since(start);
   c.cpu_seconds = thread_cpu_seconds() - cpu_start;
   return c;
 }
 
-// The ghost-ball aim of the easiest clear pocket (header comment).
-struct GhostAim {
-  bool found = false;
-  int pocket = -1;
-  ShotAction action;
-};
-
-GhostAim ghost_aim(const Setup& st, const Scenario& s, int target_id, double speed) {
-  GhostAim best;
-  const double R = st.radius;
-  const Vec2 C = s.balls[index_of(s.balls, 0)].state.position, O = s.balls[index_of(s.balls, target_id)].state.position;
-  double best_score = -1.0;
-  for (std::size_t p = 0; p < s.table.pockets.size(); ++p) {
-    const Vec2 P = s.table.pockets[p].centre;
-    const double op = norm(P - O);
-    if (op <= 0.0) continue;
-    const Vec2 u = (P - O) / op;
-    const Vec2 G = O - 2.0 * R * u;
-    const double cg = norm(G - C);
-    if (cg <= 0.0) continue;
-    const double cos_cut = dot((G - C) / cg, u);
-    if (cos_cut < std::cos(80.0 * kDeg)) continue;
-    bool blocked = false;
-    for (const SimulationBall& b : s.balls) {
-      if (b.id == 0 || b.id == target_id) continue;
-      if (distance_to_segment(b.state.position, C, G) < 2.0 * R || distance_to_segment(b.state.position, O, P) < 2.0 * R) blocked = true;
-    }
-    if (blocked) continue;
-    ShotAction a;
-    a.speed = speed;
-    a.aim_deg = angle_deg(G - C);
-    a.elevation_deg = clear_elevation(st, s, a);
-    if (std::isnan(a.elevation_deg)) continue;
-    const double score = cos_cut / (cg * op);
-    if (score > best_score) {
-      best_score = score;
-      best.found = true;
-      best.pocket = static_cast<int>(p);
-      best.action = a;
-    }
-  }
-  return best;
-}
-
-Choice ghost_choice(const Setup& st, const Scenario& s, int target) {
+// The ghost-ball agent's aim (ghost_ball_shot, agents/agent.hpp).
+Choice ghost_choice(const Scenario& s, int target) {
   Choice c;
   const auto start = std::chrono::steady_clock::now();
   const double cpu_start = thread_cpu_seconds();
-  const GhostAim g = ghost_aim(st, s, target, kGhostSpeed);
-  c.found = g.found;
-  c.action = g.action;
-  c.what = g.found ? "ghost " + s.table.pockets[static_cast<std::size_t>(g.pocket)].name : "no clear pocket";
+  const std::optional<GhostBallShot> g = ghost_ball_shot(s, 0, {target}, kGhostBallSpeed);
+  c.found = g.has_value();
+  if (g) c.action = g->strike;
+  c.what = g ? "ghost " + s.table.pockets[static_cast<std::size_t>(g->pocket)].name : "no clear pocket";
   c.seconds = seconds_since(start);
   c.cpu_seconds = thread_cpu_seconds() - cpu_start;
   return c;
@@ -379,7 +289,7 @@ Choice exhaustive_choice(const Setup& st, const Scenario& s, int target_id, std:
       a.side = kGridSpins[k].side;
       a.height = kGridSpins[k].height;
       a.speed = kGridSpeeds[0];
-      a.elevation_deg = clear_elevation(st, s, a);
+      a.elevation_deg = clear_elevation(s, a);
       if (std::isnan(a.elevation_deg)) continue;
       for (int v = 0; v < kSpeeds; ++v) {
         a.speed = kGridSpeeds[v];
@@ -485,8 +395,8 @@ SingleRecord run_single(const Setup& st, std::uint64_t seed, int repeats, int pl
   rec.seed = seed;
   const Scenario s = single_layout(st, seed, rec.others);
   const std::uint64_t measure = stream_seed(seed, kMeasureStream);
-  rec.m[0] = measured(s, planner_choice(s, 1, seed, planner_simulations), repeats, measure);
-  rec.m[1] = measured(s, ghost_choice(st, s, 1), repeats, measure);
+  rec.m[0] = measured(s, single_planner_choice(s, 1, seed, planner_simulations), repeats, measure);
+  rec.m[1] = measured(s, ghost_choice(s, 1), repeats, measure);
   rec.m[2] = measured(s, exhaustive_choice(st, s, 1, stream_seed(seed, kScreenStream), rec.grid), repeats, measure);
   return rec;
 }
@@ -553,38 +463,48 @@ Scenario broken_rack(const Setup& st, std::uint64_t seed, int& on_break) {
       ++on_break;
     }
   }
-  // Ball in hand: a straight-in on the lowest ball, kInHandBack behind the
-  // ghost ball of the easiest clear pocket (ghost_aim's ranking, every
-  // pocket tried in that order); else a random free spot.
+  // Ball in hand: the ghost-ball agent's rule (ghost_ball_in_hand_spot: a
+  // straight-in on the lowest ball, kGhostBallInHandBack behind the ghost
+  // ball of the nearest clear pocket); else a random free spot.
   std::vector<SimulationBall> objects;
   for (const SimulationBall& b : after.balls)
     if (b.id != 0) objects.push_back(b);
   int lowest = 99;
   for (const SimulationBall& b : objects) lowest = std::min(lowest, b.id);
-  const Vec2 O = after.balls[index_of(after.balls, lowest)].state.position;
-  struct Place {
-    double score;
-    Vec2 p;
-  };
-  std::vector<Place> places;
-  for (const Pocket& q : after.table.pockets) {
-    const double op = norm(q.centre - O);
-    const Vec2 u = (q.centre - O) / op;
-    const Vec2 C = O - (2.0 * st.radius + kInHandBack) * u;
-    if (!placeable(st, objects, C)) continue;
-    bool blocked = false;
-    for (const SimulationBall& b : objects)
-      if (b.id != lowest && (distance_to_segment(b.state.position, C, O) < 2.0 * st.radius ||
-                             distance_to_segment(b.state.position, O, q.centre) < 2.0 * st.radius))
-        blocked = true;
-    if (!blocked) places.push_back({1.0 / op, C});
-  }
-  std::stable_sort(places.begin(), places.end(), [](const Place& a, const Place& b) { return a.score > b.score; });
+  const std::optional<Vec2> spot = ghost_ball_in_hand_spot(after, 0, {lowest}, PlacementRegion{});
   Scenario out = after;
+  out.cue.reset();
   out.balls = objects;
-  add_ball(out.balls, 0, places.empty() ? random_spot(st, objects, rng) : places.front().p);
+  add_ball(out.balls, 0, spot ? *spot : random_spot(st, objects, rng));
   std::rotate(out.balls.rbegin(), out.balls.rbegin() + 1, out.balls.rend());  // the cue ball first
   return out;
+}
+
+// The run-out's game: 9-ball in play on the broken rack (the planner agent
+// to shoot, tournament noise, no push-out), the cue ball at the rule's spot,
+// in hand anywhere when the planner places it (--in-hand planner).
+GameState broken_game(const Setup& st, std::uint64_t seed, bool in_hand_planner, int& on_break) {
+  GameConfig config = default_config(GameKind::nine_ball);
+  config.noise = st.base.noise;
+  GameState g = new_game(config);
+  g.table = broken_rack(st, seed, on_break);
+  g.phase = GamePhase::play;
+  g.ball_in_hand.reset();
+  if (in_hand_planner) g.ball_in_hand = PlacementRegion{};
+  int lowest = 99;
+  for (const SimulationBall& b : g.table.balls)
+    if (b.id != 0) lowest = std::min(lowest, b.id);
+  g.on = {lowest};
+  g.push_out_available = false;
+  return g;
+}
+
+// play()'s seed whose noise draw is the one simulate_many drew for shot
+// `shot` of the stream `stream` (batch.hpp: play draws shot_normals(seed, 0),
+// simulate_many shot_normals(stream, shot), and shot_normals(x, k) depends on
+// x ^ splitmix64(k)): the run-outs keep the noise they were measured with.
+std::uint64_t play_seed(std::uint64_t stream, std::uint64_t shot) {
+  return stream ^ splitmix64(shot) ^ splitmix64(0);
 }
 
 RackRecord run_rack(const Setup& st, std::uint64_t seed, int planner_simulations, int position_simulations,
@@ -592,48 +512,37 @@ RackRecord run_rack(const Setup& st, std::uint64_t seed, int planner_simulations
                     bool in_hand_planner) {
   RackRecord rec;
   rec.seed = seed;
-  Scenario s = broken_rack(st, seed, rec.on_break);
+  GameState g = broken_game(st, seed, in_hand_planner, rec.on_break);
+  AgentOptions agent;
+  agent.kind = AgentKind::planner;
+  agent.simulations = planner_simulations;
+  agent.position_simulations = position_simulations;
+  agent.kinds = kinds;
+  agent.fallback_kinds = fallback_kinds;
+  const std::uint64_t noise_stream = stream_seed(seed, kMeasureStream);
   for (;;) {
-    int target = 99;
-    for (const SimulationBall& b : s.balls)
-      if (b.id != 0) target = std::min(target, b.id);
-    Choice c;
+    const int target = g.on.front();
+    const auto start = std::chrono::steady_clock::now();
+    const double cpu_start = thread_cpu_seconds();
+    PlannerChoice c;
     try {
-      Scenario placed;
-      const bool in_hand = in_hand_planner && rec.shots == 0;
-      const std::uint64_t shot_seed = stream_seed(seed, 100 + static_cast<std::uint64_t>(rec.shots));
-      c = planner_choice(s, target, shot_seed, planner_simulations, position_simulations, kinds,
-                         in_hand ? &placed : nullptr);
-      if (!c.found && !fallback_kinds.empty()) {  // the same decision, asked again for the fallback kinds
-        Choice f = planner_choice(s, target, shot_seed, planner_simulations, position_simulations, fallback_kinds,
-                                  in_hand ? &placed : nullptr);
-        f.simulations += c.simulations;
-        f.seconds += c.seconds;
-        f.cpu_seconds += c.cpu_seconds;
-        f.what = f.found ? "fallback: " + f.what : c.what + "; fallback: " + f.what;
-        c = std::move(f);
-      }
-      if (in_hand && c.found) s = std::move(placed);
+      c = planner_choice(agent, g, stream_seed(seed, 100 + static_cast<std::uint64_t>(rec.shots)));
     } catch (const std::exception& e) {  // the layout the engine left (never seen)
       rec.stop = Stop::rejected;
       rec.detail = e.what();
       return rec;
     }
-    rec.decision_seconds.push_back(c.seconds);
-    rec.decision_cpu_seconds.push_back(c.cpu_seconds);
+    rec.decision_seconds.push_back(seconds_since(start));
+    rec.decision_cpu_seconds.push_back(thread_cpu_seconds() - cpu_start);
     rec.simulations += c.simulations;
-    if (!c.found) {
+    if (c.kind == PlannerChoice::Kind::safety) {  // no pot of --kinds or --fallback-kinds
       rec.stop = Stop::no_feasible_shot;
-      rec.detail = c.what;
+      rec.detail = c.detail;
       return rec;
     }
-    ManyOptions o;
-    o.noise = true;
-    o.seed = stream_seed(seed, kMeasureStream);
-    o.first_shot = static_cast<std::uint64_t>(rec.shots);
-    ManyResult m;
+    GameStep step;
     try {
-      m = simulate_many(s, std::vector<ShotAction>{c.action}, {}, o);
+      step = play(g, c.action, play_seed(noise_stream, static_cast<std::uint64_t>(rec.shots)));
     } catch (const std::exception& e) {
       rec.stop = Stop::rejected;
       rec.detail = e.what();
@@ -642,36 +551,34 @@ RackRecord run_rack(const Setup& st, std::uint64_t seed, int planner_simulations
     ++rec.shots;
     rec.planned.push_back(c.success_probability);
     rec.planned_next.push_back(c.next_success_probability);
-    if (m.miscue[0]) {
-      rec.stop = Stop::miscue;
-      return rec;
-    }
-    if (m.failure[0]) {
+    const Ruling& r = step.ruling;
+    if (r.truncated) {
       rec.stop = Stop::failure;
+      rec.detail = r.reason;
       return rec;
     }
-    if (m.first_contact[0] != target) {
-      rec.stop = Stop::wrong_first_contact;
-      rec.detail = fmt("aimed at the %d, hit %d first", target, m.first_contact[0]);
+    if (r.foul) {
+      switch (*r.foul) {
+        case Foul::miscue: rec.stop = Stop::miscue; break;
+        case Foul::scratch: rec.stop = Stop::scratch; break;
+        case Foul::wrong_ball_first:
+        case Foul::no_contact: rec.stop = Stop::wrong_first_contact; break;
+        default: rec.stop = Stop::miss; break;  // no rail after the contact: nothing potted
+      }
+      rec.detail = fmt("on the %d: %s", target, r.reason.c_str());
       return rec;
     }
-    if (m.pocketed[index_of(s.balls, 0)]) {
-      rec.stop = Stop::scratch;
-      rec.detail = fmt("scratch on the %d", target);
-      return rec;
-    }
-    std::vector<int> potted;
-    s = with_balls_at(s, m, 0, potted);
-    rec.potted += static_cast<int>(potted.size());
-    if (potted.empty()) {
-      rec.stop = Stop::miss;
-      rec.detail = fmt("missed the %d (%s)", target, c.what.c_str());
-      return rec;
-    }
-    if (std::find(potted.begin(), potted.end(), 9) != potted.end()) {
+    for (const int id : r.pocketed) rec.potted += id != 0 ? 1 : 0;
+    if (r.game_over) {
       rec.stop = Stop::run_out;
       return rec;
     }
+    if (r.turn_over) {
+      rec.stop = Stop::miss;
+      rec.detail = fmt("missed the %d (%s)", target, c.detail.c_str());
+      return rec;
+    }
+    g = std::move(step.next);
   }
 }
 

@@ -1,7 +1,12 @@
-// Choosing an agent by name (agent.hpp).
+// Choosing an agent by name, and what the pool agents share: the break, the
+// decision policy, the balls a shot may aim at, a plain hit (agent.hpp).
 #include "cueball/agents/agent.hpp"
 
+#include <algorithm>
 #include <array>
+#include <cmath>
+#include <limits>
+#include <numbers>
 
 #include "core/enum_names.hpp"
 #include "cueball/core/errors.hpp"
@@ -31,6 +36,15 @@ void validate(const AgentOptions& options) {
     throw InvalidArgument("position_simulations",
                           std::to_string(options.position_simulations) + " is out of range [0, 1000000]");
   if (options.noise) validate(*options.noise);
+  if (options.kinds.empty()) throw InvalidArgument("kinds", "is empty; allowed: one or more of " + shot_kind_names());
+  const auto no_repeat = [](const std::vector<ShotKind>& kinds, const char* field) {
+    for (std::size_t i = 0; i < kinds.size(); ++i)
+      for (std::size_t j = i + 1; j < kinds.size(); ++j)
+        if (kinds[i] == kinds[j])
+          throw InvalidArgument(field, std::string(to_string(kinds[i])) + " is given twice");
+  };
+  no_repeat(options.kinds, "kinds");
+  no_repeat(options.fallback_kinds, "fallback_kinds");
 }
 
 Action choose_action(const AgentOptions& options, const GameState& state, std::uint64_t seed) {
@@ -43,6 +57,176 @@ Action choose_action(const AgentOptions& options, const GameState& state, std::u
     case AgentKind::carom_search: return carom_search_action(options, state, seed);
   }
   throw InvalidArgument("kind", "unknown agent; allowed: " + agent_kind_names());
+}
+
+// ------------------------------------------------------------------ shared by the pool agents
+
+namespace {
+
+constexpr double kDeg = std::numbers::pi / 180.0;
+constexpr double kClearElevationsDeg[] = {0.0, 2.0, 5.0, 10.0, 15.0, 20.0, 25.0, 30.0};
+// The break's spot: steps back from the region's front along the long string, m.
+constexpr double kBreakSpotStep = 0.005;
+
+bool contains(const std::vector<int>& v, int id) { return std::find(v.begin(), v.end(), id) != v.end(); }
+
+const SimulationBall* ball(const Scenario& table, int id) { return find_ball(table.balls, id); }
+
+std::vector<Vec2> others_than(const Scenario& table, int cue_ball) {
+  std::vector<Vec2> out;
+  for (const SimulationBall& b : table.balls)
+    if (b.id != cue_ball) out.push_back(b.state.position);
+  return out;
+}
+
+// The break's spot: on the long string, from the front of the region back,
+// the first free spot inside it.
+std::optional<Vec2> break_spot(const Scenario& table, int cue_ball, const PlacementRegion& region) {
+  const Table& t = table.table;
+  const PlacementRegion box = bounding_rectangle(t, region);
+  const std::vector<Vec2> others = others_than(table, cue_ball);
+  const double y = long_string_y(t);
+  for (double x = box.x_max - t.ball.radius; x > box.x_min; x -= kBreakSpotStep) {
+    const Vec2 p{x, y};
+    if (in_region(t, region, p) && is_free_spot(t, others, p, t.ball.radius)) return p;
+  }
+  return std::nullopt;
+}
+
+}  // namespace
+
+int nearest_pocket(const Scenario& table, int id) {
+  const SimulationBall* b = ball(table, id);
+  if (!b) throw InvalidArgument("ball", std::to_string(id) + " is not on the table");
+  int best = 0;
+  double best_d = std::numeric_limits<double>::infinity();
+  for (std::size_t k = 0; k < table.table.pockets.size(); ++k) {
+    const double d = norm(table.table.pockets[k].centre - b->state.position);
+    if (d < best_d) {
+      best_d = d;
+      best = static_cast<int>(k);
+    }
+  }
+  return best;
+}
+
+Action break_action(const GameState& state) {
+  const LegalActions legal = legal_actions(state);
+  if (!legal.shoot) throw InvalidArgument("state", "a decision is due, not a break");
+  const Scenario& table = state.table;
+  const std::vector<int> targets = shot_targets(state, legal);
+  if (targets.empty()) throw InvalidArgument("state", "no ball on to break at");
+  // The apex: the ball on nearest the foot spot.
+  const Vec2 foot = foot_spot(table.table);
+  int apex = targets.front();
+  double apex_d = std::numeric_limits<double>::infinity();
+  for (const int id : targets) {
+    const double d = norm(ball(table, id)->state.position - foot);
+    if (d < apex_d) {
+      apex_d = d;
+      apex = id;
+    }
+  }
+  Action a;
+  if (legal.ball_in_hand) {
+    a.place = break_spot(table, legal.cue_ball, *legal.ball_in_hand);
+    if (!a.place && !ball(table, legal.cue_ball))
+      throw InvalidArgument("state", "no free spot for the cue ball in its region");
+  }
+  a.aim_at = apex;
+  a.strike.speed = state.config.kind == GameKind::snooker ? 0.5 * kBreakSpeed : kBreakSpeed;
+  a.strike.elevation_deg = kBreakElevationDeg;
+  if (legal.call_required) {
+    a.called_ball = contains(legal.callable, apex) || legal.callable.empty() ? apex : legal.callable.front();
+    a.called_pocket = nearest_pocket(table, *a.called_ball);
+  }
+  if (legal.nominate_required && !legal.nominable.empty())
+    a.nominate = contains(legal.nominable, apex) ? apex : legal.nominable.front();
+  return a;
+}
+
+Decision decision_by_policy(const std::vector<Decision>& open, bool table_good) {
+  if (open.empty()) throw InvalidArgument("decisions", "no decision is open");
+  const auto is_open = [&](Decision d) { return std::find(open.begin(), open.end(), d) != open.end(); };
+  const std::array good{Decision::play, Decision::respot_eight};
+  const std::array bad{Decision::restore, Decision::rerack_and_break, Decision::rerack, Decision::pass};
+  if (table_good) {
+    for (const Decision d : good)
+      if (is_open(d)) return d;
+  } else {
+    for (const Decision d : bad)
+      if (is_open(d)) return d;
+  }
+  return open.front();
+}
+
+std::vector<int> shot_targets(const GameState& state, const LegalActions& legal) {
+  const Scenario& table = state.table;
+  const auto on_table_only = [&](const std::vector<int>& ids) {
+    std::vector<int> out;
+    for (const int id : ids)
+      if (id != legal.cue_ball && ball(table, id)) out.push_back(id);
+    return out;
+  };
+  std::vector<int> targets = on_table_only(legal.nominate_required ? legal.nominable : legal.on);
+  if (legal.call_required) {
+    std::vector<int> callable;
+    for (const int id : targets)
+      if (contains(legal.callable, id)) callable.push_back(id);
+    if (!callable.empty()) targets = std::move(callable);
+  }
+  if (legal.cue_must_leave_kitchen) {  // WPA 1.6: a ball behind the head string may not be hit first
+    std::vector<int> beyond;
+    const double head = head_string_x(table.table);
+    for (const int id : targets)
+      if (ball(table, id)->state.position.x >= head) beyond.push_back(id);
+    if (!beyond.empty()) targets = std::move(beyond);
+  }
+  return targets;
+}
+
+std::optional<double> lowest_clear_elevation_deg(const Scenario& table, int cue_ball, ShotAction action) {
+  const double radius = table.settings.parameters.ball.radius;
+  for (const double e : kClearElevationsDeg) {
+    action.elevation_deg = e;
+    if (!cue_obstructed(table.table, table.balls, cue_ball, to_strike(action, radius), table.settings.parameters.ball))
+      return e;
+  }
+  return std::nullopt;
+}
+
+std::optional<ShotAction> safe_hit(const Scenario& table, int cue_ball, const std::vector<int>& targets, int& target) {
+  const SimulationBall* cue = ball(table, cue_ball);
+  if (!cue) return std::nullopt;
+  const Vec2 C = cue->state.position;
+  const double R = table.settings.parameters.ball.radius;
+  int nearest = -1, nearest_clear = -1;
+  double d_nearest = std::numeric_limits<double>::infinity(), d_clear = d_nearest;
+  for (const int id : targets) {
+    const SimulationBall* b = ball(table, id);
+    if (!b || id == cue_ball) continue;
+    const Vec2 O = b->state.position;
+    const double d = norm(O - C);
+    if (d < d_nearest) {
+      d_nearest = d;
+      nearest = id;
+    }
+    bool clear = true;
+    for (const SimulationBall& o : table.balls)
+      if (o.id != cue_ball && o.id != id && distance_to_segment(o.state.position, C, O) < 2.0 * R) clear = false;
+    if (clear && d < d_clear) {
+      d_clear = d;
+      nearest_clear = id;
+    }
+  }
+  target = nearest_clear >= 0 ? nearest_clear : nearest;
+  if (target < 0) return std::nullopt;
+  const Vec2 O = ball(table, target)->state.position;
+  ShotAction a;
+  a.speed = kSafeHitSpeed;
+  a.aim_deg = std::atan2(O.y - C.y, O.x - C.x) / kDeg;
+  a.elevation_deg = lowest_clear_elevation_deg(table, cue_ball, a).value_or(kClearElevationsDeg[std::size(kClearElevationsDeg) - 1]);
+  return a;
 }
 
 }  // namespace cueball

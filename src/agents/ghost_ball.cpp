@@ -1,9 +1,211 @@
-// The ghost_ball agent: being written (issue 25); until then it refuses.
+// The ghost-ball agent (agent.hpp): ghost-ball aiming at the easiest clear
+// pot of a ball on, no simulation; the planner benchmark's baseline, moved
+// here from bench/planner_benchmark.cpp.
+//
+//   break       break_action();
+//   decision    decision_by_policy(), the table good when ghost_ball_shot()
+//               finds a clear pot on it (with the cue ball in hand: when
+//               ghost_ball_in_hand_spot() finds a spot);
+//   in hand     the cue ball on ghost_ball_in_hand_spot() in the legal
+//               region; with no spot, a seeded random free spot there
+//               (RandomStream(splitmix64(seed))), or where it lies when it
+//               is on the table and in the region;
+//   the shot    ghost_ball_shot() over shot_targets(): centre ball,
+//               kGhostBallSpeed, the lowest clear elevation; the call (when
+//               required) its ball and pocket, the nomination its ball;
+//   no pot      safe_hit() of a target (a plain hit of a ball on), announced
+//               as a push-out when one may be (nothing to lose); the call,
+//               that ball and its nearest pocket.
+// It never pushes out when it has a pot. Three-cushion: carom_search_action().
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
 #include "cueball/agents/agent.hpp"
 #include "cueball/core/errors.hpp"
+#include "cueball/core/random.hpp"
 
 namespace cueball {
 
-Action ghost_ball_action(const GameState&, std::uint64_t) { throw InvalidArgument("agent", "ghost_ball is not available yet (issue 25)"); }
+namespace {
+
+constexpr double kDeg = std::numbers::pi / 180.0;
+constexpr int kPlacementAttempts = 10000;
+
+double angle_deg(Vec2 v) { return std::atan2(v.y, v.x) / kDeg; }
+
+std::vector<Vec2> positions_but(const Scenario& table, int cue_ball) {
+  std::vector<Vec2> out;
+  for (const SimulationBall& b : table.balls)
+    if (b.id != cue_ball) out.push_back(b.state.position);
+  return out;
+}
+
+// The ghost-ball agent's shot from a table with the cue ball where it will be struck.
+Action ghost_shot(const LegalActions& legal, const Scenario& table, const std::vector<int>& targets) {
+  Action a;
+  int ball = -1, pocket = -1;
+  if (const std::optional<GhostBallShot> g = ghost_ball_shot(table, legal.cue_ball, targets)) {
+    a.strike = g->strike;
+    ball = g->target;
+    pocket = g->pocket;
+  } else {
+    const std::optional<ShotAction> hit = safe_hit(table, legal.cue_ball, targets, ball);
+    if (!hit) throw InvalidArgument("state", "no ball on to play at");
+    a.strike = *hit;
+    pocket = nearest_pocket(table, ball);
+    a.push_out = legal.push_out;
+  }
+  if (legal.call_required) {
+    a.called_ball = std::find(legal.callable.begin(), legal.callable.end(), ball) != legal.callable.end() ||
+                            legal.callable.empty()
+                        ? ball
+                        : legal.callable.front();
+    a.called_pocket = pocket;
+  }
+  if (legal.nominate_required && !legal.nominable.empty())
+    a.nominate = std::find(legal.nominable.begin(), legal.nominable.end(), ball) != legal.nominable.end()
+                     ? ball
+                     : legal.nominable.front();
+  return a;
+}
+
+}  // namespace
+
+std::optional<GhostBallShot> ghost_ball_shot(const Scenario& table, int cue_ball, const std::vector<int>& targets,
+                                             double speed) {
+  const SimulationBall* cue = find_ball(table.balls, cue_ball);
+  if (!cue) return std::nullopt;
+  const double R = table.settings.parameters.ball.radius;
+  const Vec2 C = cue->state.position;
+  std::optional<GhostBallShot> best;
+  double best_score = -1.0;
+  for (const int target : targets) {
+    const SimulationBall* object = find_ball(table.balls, target);
+    if (!object || target == cue_ball) continue;
+    const Vec2 O = object->state.position;
+    for (std::size_t p = 0; p < table.table.pockets.size(); ++p) {
+      const Vec2 P = table.table.pockets[p].centre;
+      const double op = norm(P - O);
+      if (op <= 0.0) continue;
+      const Vec2 u = (P - O) / op;
+      const Vec2 G = O - 2.0 * R * u;
+      const double cg = norm(G - C);
+      if (cg <= 0.0) continue;
+      const double cos_cut = dot((G - C) / cg, u);
+      if (cos_cut < std::cos(kMaxCutDeg * kDeg)) continue;
+      bool blocked = false;
+      for (const SimulationBall& b : table.balls) {
+        if (b.id == cue_ball || b.id == target) continue;
+        if (distance_to_segment(b.state.position, C, G) < 2.0 * R ||
+            distance_to_segment(b.state.position, O, P) < 2.0 * R)
+          blocked = true;
+      }
+      if (blocked) continue;
+      ShotAction a;
+      a.speed = speed;
+      a.aim_deg = angle_deg(G - C);
+      const std::optional<double> elevation = lowest_clear_elevation_deg(table, cue_ball, a);
+      if (!elevation) continue;
+      a.elevation_deg = *elevation;
+      const double score = cos_cut / (cg * op);
+      if (score > best_score) {
+        best_score = score;
+        best = GhostBallShot{target, static_cast<int>(p), a, score};
+      }
+    }
+  }
+  return best;
+}
+
+std::optional<Vec2> ghost_ball_in_hand_spot(const Scenario& table, int cue_ball, const std::vector<int>& targets,
+                                            const PlacementRegion& region, double back) {
+  const double R = table.settings.parameters.ball.radius;
+  const std::vector<Vec2> others = positions_but(table, cue_ball);
+  std::optional<Vec2> best;
+  double best_score = 0.0;
+  for (const int target : targets) {
+    const SimulationBall* object = find_ball(table.balls, target);
+    if (!object || target == cue_ball) continue;
+    const Vec2 O = object->state.position;
+    for (const Pocket& q : table.table.pockets) {
+      const double op = norm(q.centre - O);
+      if (op <= 0.0) continue;
+      const Vec2 u = (q.centre - O) / op;
+      const Vec2 C = O - (2.0 * R + back) * u;
+      if (!in_region(table.table, region, C) || !is_free_spot(table.table, others, C, R)) continue;
+      bool blocked = false;
+      for (const SimulationBall& b : table.balls)
+        if (b.id != cue_ball && b.id != target &&
+            (distance_to_segment(b.state.position, C, O) < 2.0 * R ||
+             distance_to_segment(b.state.position, O, q.centre) < 2.0 * R))
+          blocked = true;
+      if (blocked) continue;
+      const double score = 1.0 / op;
+      if (!best || score > best_score) {
+        best_score = score;
+        best = C;
+      }
+    }
+  }
+  return best;
+}
+
+Action ghost_ball_action(const GameState& state, std::uint64_t seed) {
+  if (state.config.kind == GameKind::three_cushion) {
+    AgentOptions carom;
+    carom.kind = AgentKind::carom_search;
+    return carom_search_action(carom, state, seed);
+  }
+  return ghost_ball_action(state, legal_actions(state), seed);
+}
+
+Action ghost_ball_action(const GameState& state, const LegalActions& legal, std::uint64_t seed) {
+  if (!legal.shoot) {
+    if (legal.decisions.empty()) throw InvalidArgument("state", "no action is open (the game is over)");
+    // The table as the decider would shoot it.
+    GameState as_is = state;
+    as_is.phase = GamePhase::play;
+    as_is.decisions.clear();
+    const LegalActions then = legal_actions(as_is);
+    const std::vector<int> targets = shot_targets(as_is, then);
+    const bool good = then.ball_in_hand
+                          ? ghost_ball_in_hand_spot(as_is.table, then.cue_ball, targets, *then.ball_in_hand).has_value()
+                          : ghost_ball_shot(as_is.table, then.cue_ball, targets).has_value();
+    Action a;
+    a.decision = decision_by_policy(legal.decisions, good);
+    return a;
+  }
+  if (state.phase == GamePhase::break_shot && !legal.call_required && !legal.nominate_required)
+    return break_action(state);
+  const std::vector<int> targets = shot_targets(state, legal);
+  Scenario table = state.table;
+  std::optional<Vec2> place;
+  if (legal.ball_in_hand) {
+    place = ghost_ball_in_hand_spot(table, legal.cue_ball, targets, *legal.ball_in_hand);
+    const SimulationBall* cue = find_ball(table.balls, legal.cue_ball);
+    if (!place && !(cue && in_region(table.table, *legal.ball_in_hand, cue->state.position))) {
+      RandomStream rng(splitmix64(seed));
+      place = random_free_spot(table.table, positions_but(table, legal.cue_ball), table.table.ball.radius, rng,
+                               kPlacementAttempts, *legal.ball_in_hand);
+      if (!place && !cue) throw InvalidArgument("state", "no free spot for the cue ball in its region");
+    }
+    if (place) {
+      SimulationBall b;
+      b.id = legal.cue_ball;
+      b.name = "cue";
+      if (cue) b = *cue;
+      b.state = BallState{};
+      b.state.position = *place;
+      table.balls.erase(std::remove_if(table.balls.begin(), table.balls.end(),
+                                       [&](const SimulationBall& x) { return x.id == legal.cue_ball; }),
+                        table.balls.end());
+      table.balls.insert(table.balls.begin(), b);
+    }
+  }
+  Action a = ghost_shot(legal, table, targets);
+  a.place = place;
+  return a;
+}
 
 }  // namespace cueball

@@ -14,14 +14,31 @@
 //                 decisions by a documented simple policy;
 //   carom_search  three-cushion: searches strikes with the engine for a
 //                 point (a simple search; the strong one is issue 27's).
+//
+// What the pool agents share (agent.cpp), so that every pocket game is
+// played through legal_actions() alone:
+//   - the break: break_action(), a fixed strong break (a small named
+//     function, to be swapped for a better one);
+//   - the decisions: decision_by_policy(), one documented simple policy;
+//   - the balls a shot may aim at: shot_targets() (the balls on; when a
+//     ball must be nominated, the nominable ones; when a call is needed, the
+//     callable balls on; when the cue ball must leave the kitchen, those
+//     beyond the head string);
+//   - a plain hit of a ball on when nothing pots: safe_hit().
+// The ghost-ball agent (ghost_ball.cpp) adds the ghost-ball aim and its
+// in-hand rule; the planner agent (planner_agent.cpp) plan_shot, position
+// play and plan_ball_in_hand. Neither plays three-cushion: there they hand
+// the decision to carom_search_action().
 #pragma once
 
 #include <cstdint>
 #include <optional>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "cueball/games/game.hpp"
+#include "cueball/planning/shot_planner.hpp"
 
 namespace cueball {
 
@@ -34,12 +51,23 @@ std::string agent_kind_names();
 
 struct AgentOptions {
   AgentKind kind = AgentKind::planner;
-  /// Engine runs a decision may spend (planner, carom_search).
+  /// Engine runs of each plan (planner: PlanRequest::simulations; a plan
+  /// for position or in hand spends more, position_play.hpp and
+  /// ball_in_hand.hpp say how much), or of a decision (carom_search).
   int simulations = 2000;
   /// Engine runs of each next-shot plan in position play (planner; 0: no position play).
   int position_simulations = 0;
-  /// The execution noise the agent plans under (planner), usually the game's.
+  /// The execution noise the agent plans under (planner). None: the game's
+  /// (GameConfig::noise), or tournament_noise() when the game has none (a
+  /// plan under no noise cannot tell a safe pot from a thin one).
   std::optional<CueStrikeNoise> noise;
+  /// The shot kinds the planner tries first (PlanRequest::kinds).
+  std::vector<ShotKind> kinds{ShotKind::direct, ShotKind::bank};
+  /// The kinds it asks for when none of `kinds` pots a ball on (the same
+  /// decision planned again, the same seed); empty: none. The default: a
+  /// kick when nothing else pots. Only when these fail too does it play
+  /// safe_hit().
+  std::vector<ShotKind> fallback_kinds{ShotKind::kick};
 };
 
 /// Throws InvalidArgument naming the field ("simulations", ...).
@@ -67,5 +95,159 @@ struct CaromSearchResult {
   int noisy_tries = 0;
 };
 CaromSearchResult carom_search(const AgentOptions& options, const GameState& state, std::uint64_t seed);
+
+// ------------------------------------------------------------------ shared by the pool agents (agent.cpp)
+
+/// The break's cue speed, m/s (a pro's break is 8-11 m/s of cue ball).
+inline constexpr double kBreakSpeed = 9.0;
+/// The break's elevation, degrees (a level cue's butt clears the rail at 2).
+inline constexpr double kBreakElevationDeg = 2.0;
+
+/// The break (GamePhase::break_shot): the cue ball, when in hand, on the
+/// long string at the front of its region (the kitchen's head string, the
+/// D's baulk line) as near the apex as a free spot allows; struck centre
+/// ball at kBreakSpeed (snooker: half of it, the reds spread rather than
+/// scattered), kBreakElevationDeg, aimed (Action::aim_at) at the centre of
+/// the ball on nearest the foot spot (the 1, the apex; snooker: the apex
+/// red). A fixed break, the same for every seed; a call or nomination the
+/// rules ask for names that ball and its nearest pocket.
+Action break_action(const GameState& state);
+
+/// The decision policy both pool agents follow, given whether the table as
+/// it stands is good for the player deciding (`table_good`: the agent would
+/// pot a ball from it; what that means is each agent's):
+///   good: play; else respot_eight (8-ball, the 8 on the break: play on);
+///   not good: restore (snooker miss: the offender plays again), else
+///   rerack_and_break (8-ball illegal break: break yourself), else rerack,
+///   else pass (9-ball, 10-ball push-out or wrongful pot, a foul's table:
+///   the opponent shoots);
+///   and the first open decision when none of those is open.
+/// Throws InvalidArgument("decisions") when `open` is empty.
+Decision decision_by_policy(const std::vector<Decision>& open, bool table_good);
+
+/// The balls a shot may aim to pot first (shot_targets), from the legal
+/// actions: the nominable balls when a nomination is required (the ball
+/// nominated is the ball hit), else the balls on; when a call is required,
+/// only the callable ones (none callable: the balls on); when the cue ball
+/// must leave the kitchen (WPA 1.6), only those beyond the head string
+/// (none: the balls on). Only balls on the table.
+std::vector<int> shot_targets(const GameState& state, const LegalActions& legal);
+
+/// A plain hit when nothing pots: the cue ball at the centre of the nearest
+/// of `targets` whose straight path is clear (no other ball within two
+/// radii of it), else of the nearest target, at kSafeHitSpeed, the lowest
+/// clear elevation: it reaches a ball on and drives balls to a rail, so it
+/// rarely fouls. `target` is set to the ball aimed at. None: no target on
+/// the table (or the cue ball is not on it).
+inline constexpr double kSafeHitSpeed = 2.5;
+std::optional<ShotAction> safe_hit(const Scenario& table, int cue_ball, const std::vector<int>& targets, int& target);
+
+/// The lowest of the elevations 0, 2, 5, 10, 15, 20, 25, 30 degrees at which
+/// the cue, aligned for `action` on the cue ball, is not obstructed
+/// (cue_obstructed()); none when it is at all of them.
+std::optional<double> lowest_clear_elevation_deg(const Scenario& table, int cue_ball, ShotAction action);
+
+/// The pocket nearest ball `ball` (an index into table.pockets), for calls.
+int nearest_pocket(const Scenario& table, int ball);
+
+// ------------------------------------------------------------------ the ghost-ball agent (ghost_ball.cpp)
+
+/// The ghost-ball agent's cue speed, m/s (a medium pace, inside the
+/// 1.4-2.3 m/s the planner chose on the planner benchmark's first layouts).
+inline constexpr double kGhostBallSpeed = 1.5;
+/// Its placement in hand: the cue ball this far behind the ghost ball, m.
+inline constexpr double kGhostBallInHandBack = 0.3;
+
+/// A ghost-ball pot: the cue ball aimed at the ghost ball G = O - 2R u of
+/// `target` for `pocket` (u from the ball O to the pocket's centre P; D. G.
+/// Alciatore, "The Illustrated Principles of Pool and Billiards", 2004).
+struct GhostBallShot {
+  int target = -1;
+  int pocket = -1;     ///< index into table.pockets
+  ShotAction strike;   ///< centre ball, the given speed, the lowest clear elevation
+  double score = 0.0;  ///< cos(cut) / (|CG| |OP|): the small-angle aim tolerance, larger is easier
+};
+
+/// The easiest clear ghost-ball pot of any of `targets` (in their order,
+/// then the pockets' order; the first of equal scores): pockets whose cut is
+/// at most kMaxCutDeg, whose straight paths C -> G and O -> P are clear of
+/// every other ball's centre by two radii, and whose cue clears at one of
+/// lowest_clear_elevation_deg()'s elevations, ranked by score. None when no
+/// pocket qualifies or the cue ball is not on the table.
+std::optional<GhostBallShot> ghost_ball_shot(const Scenario& table, int cue_ball, const std::vector<int>& targets,
+                                             double speed = kGhostBallSpeed);
+
+/// The ghost-ball agent's rule for the cue ball in hand: a straight-in on
+/// one of `targets`, the cue ball `back` behind the ghost ball on the line
+/// from the pocket through the ball (C = O - (2R + back) u), for every
+/// target and pocket whose spot is a free spot (is_free_spot(), the other
+/// balls but the cue ball) inside `region` and whose paths C -> O and O -> P
+/// are clear of the other balls by two radii; the nearest pocket (largest
+/// 1 / |OP|, the first of equal ones) wins. None when no spot qualifies.
+std::optional<Vec2> ghost_ball_in_hand_spot(const Scenario& table, int cue_ball, const std::vector<int>& targets,
+                                            const PlacementRegion& region, double back = kGhostBallInHandBack);
+
+/// ghost_ball_action() for given legal actions (ghost_ball_action(state, seed) passes
+/// legal_actions(state); a caller or a test may give its own, e.g. a call
+/// or a nomination the state's rules do not ask for yet).
+Action ghost_ball_action(const GameState& state, const LegalActions& legal, std::uint64_t seed);
+
+// ------------------------------------------------------------------ the planner agent (planner_agent.cpp)
+
+/// What the planner agent chose, and why (the benchmark reads it).
+struct PlannerChoice {
+  enum class Kind : char {
+    decision,   ///< a decision (action.decision)
+    break_shot, ///< break_action()
+    pot,        ///< a planned pot of options.kinds (planned: the plan)
+    fallback,   ///< a planned pot of options.fallback_kinds (a kick by default)
+    safety,     ///< nothing pots: safe_hit(), announced as a push-out when one is allowed
+  };
+  Action action;
+  Kind kind = Kind::safety;
+  /// The plan's success probability and, with position play, its leave's
+  /// next-shot probability (Leave::next_success_probability, 0 when the
+  /// next shot is infeasible); -1 when not planned.
+  double success_probability = -1.0;
+  double next_success_probability = -1.0;
+  /// Engine runs spent (a plan that found nothing counted at its budget).
+  long long simulations = 0;
+  /// One line: the shot planned ("in hand at (x, y): direct 1 into ..."),
+  /// or why nothing potted.
+  std::string detail;
+};
+
+/// The next shots' legal targets after a shot that pots `target`, as
+/// PositionRequest::next_targets (position_play.hpp), from the state's
+/// rules: 9-ball and 10-ball, each other object ball in id order, one at a
+/// time (the lowest is next, and where it drops too, the next lowest); 8-ball,
+/// the shooter's group (open table: the group of `target`) then the 8;
+/// snooker, after a red the colours on the table, after a colour while reds
+/// remain the reds, in the clearance the colours after `target` in order.
+/// Only balls on the table other than the cue ball(s); empty sets dropped.
+std::vector<std::vector<int>> next_targets(const GameState& state, int target);
+
+/// The planner agent's choice (planner_action() is its action): the break;
+/// a decision by decision_by_policy() with the table good when the best
+/// pot planned from it (plan_shot, options.simulations, the cue ball placed
+/// by ghost_ball_in_hand_spot() when in hand) has success probability >=
+/// kPlannerGoodTable; else a pot of the shot_targets(): with the cue ball in
+/// hand, plan_ball_in_hand() in the legal region (its next-shot plans
+/// options.position_simulations runs, kInHandNextSimulations when 0); else
+/// with position play (position_simulations > 0) plan_shot_for_position()
+/// over next_targets(); else plan_shot(); options.kinds, then
+/// options.fallback_kinds; with none feasible, safe_hit() (from
+/// ghost_ball_in_hand_spot()'s spot, or a seeded random free spot, when in
+/// hand), a push-out when one may be announced. The call is the planned
+/// target and pocket (the safety: its ball and nearest pocket); the
+/// nomination, the planned target. Every plan is seeded with `seed` itself
+/// (so a caller's seeds reproduce plan_shot's), the decision's evaluation
+/// with stream_seed(seed, 1), a random spot with stream_seed(seed, 2).
+inline constexpr double kPlannerGoodTable = 0.5;
+inline constexpr int kInHandNextSimulations = 1000;
+PlannerChoice planner_choice(const AgentOptions& options, const GameState& state, std::uint64_t seed);
+/// The same for given legal actions (as ghost_ball_action()'s overload).
+PlannerChoice planner_choice(const AgentOptions& options, const GameState& state, const LegalActions& legal,
+                             std::uint64_t seed);
 
 }  // namespace cueball

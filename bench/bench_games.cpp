@@ -1,0 +1,117 @@
+// Benchmarks of whole games (src/games/, src/agents/): 9-ball games per
+// second between two random agents (each iteration a whole game from its
+// own seed: the break, every shot simulated and judged), the same between
+// two ghost-ball agents with tournament noise, and the cost of one agent
+// decision on a mid-rack table: the ghost-ball agent's, the planner agent's
+// at its default budget and with position play, and its ball in hand.
+// Counters: games per second and shots per game, or engine runs per
+// decision. docs/planner-benchmark.md ("Games") has the figures.
+#include <benchmark/benchmark.h>
+
+#include <cstdint>
+#include <utility>
+#include <vector>
+
+#include "cueball/agents/agent.hpp"
+#include "cueball/core/random.hpp"
+#include "cueball/games/game.hpp"
+
+namespace {
+
+using namespace cueball;
+
+void play_games(benchmark::State& st, AgentKind kind, bool noise) {
+  AgentOptions agent;
+  agent.kind = kind;
+  GameConfig config = default_config(GameKind::nine_ball);
+  if (noise) config.noise = tournament_noise();
+  std::uint64_t game = 0;
+  long long shots = 0;
+  for (auto _ : st) {
+    GameState s = new_game(config, game);
+    while (!s.over) {
+      const std::uint64_t seed = stream_seed(game, static_cast<std::uint64_t>(s.shots));
+      s = play(s, choose_action(agent, s, seed), seed).next;
+    }
+    shots += s.shots;
+    ++game;
+    benchmark::DoNotOptimize(s.winner);
+  }
+  st.counters["games_per_s"] = benchmark::Counter(static_cast<double>(st.iterations()), benchmark::Counter::kIsRate);
+  st.counters["shots_per_game"] = static_cast<double>(shots) / static_cast<double>(st.iterations());
+}
+
+void BM_RandomVsRandomNineBall(benchmark::State& st) { play_games(st, AgentKind::random, false); }
+BENCHMARK(BM_RandomVsRandomNineBall)->Unit(benchmark::kMillisecond);
+
+void BM_GhostBallVsGhostBallNineBall(benchmark::State& st) { play_games(st, AgentKind::ghost_ball, true); }
+BENCHMARK(BM_GhostBallVsGhostBallNineBall)->Unit(benchmark::kMillisecond);
+
+// A mid-rack 9-ball table: the 3 to play, five balls left, the cue ball in
+// the middle (or in hand anywhere).
+GameState mid_rack(bool in_hand) {
+  GameConfig config = default_config(GameKind::nine_ball);
+  config.noise = tournament_noise();
+  GameState s = new_game(config);
+  s.phase = GamePhase::play;
+  s.ball_in_hand.reset();
+  s.table.balls.clear();
+  const std::vector<std::pair<int, Vec2>> balls{
+      {0, {1.1, 0.6}}, {3, {1.7, 0.35}}, {4, {2.2, 1.0}}, {6, {0.6, 0.9}}, {7, {1.4, 1.1}}, {9, {2.3, 0.4}}};
+  for (const auto& [id, p] : balls) {
+    if (in_hand && id == 0) continue;
+    SimulationBall b;
+    b.id = id;
+    b.name = id == 0 ? "cue" : std::to_string(id);
+    b.state.position = p;
+    s.table.balls.push_back(b);
+  }
+  s.on = {3};
+  if (in_hand) s.ball_in_hand = PlacementRegion{};
+  return s;
+}
+
+void decide(benchmark::State& st, const AgentOptions& agent, bool in_hand) {
+  const GameState s = mid_rack(in_hand);
+  long long runs = 0;
+  std::uint64_t seed = 0;
+  for (auto _ : st) {
+    if (agent.kind == AgentKind::planner) {
+      const PlannerChoice c = planner_choice(agent, s, seed++);
+      runs += c.simulations;
+      benchmark::DoNotOptimize(c.action.strike);
+    } else {
+      benchmark::DoNotOptimize(choose_action(agent, s, seed++).strike);
+    }
+  }
+  st.counters["runs_per_decision"] = static_cast<double>(runs) / static_cast<double>(st.iterations());
+}
+
+void BM_GhostBallDecision(benchmark::State& st) {
+  AgentOptions a;
+  a.kind = AgentKind::ghost_ball;
+  decide(st, a, false);
+}
+BENCHMARK(BM_GhostBallDecision)->Unit(benchmark::kMicrosecond);
+
+void BM_PlannerDecision(benchmark::State& st) {
+  AgentOptions a;  // the planner at its defaults: 2,000 runs, no position play
+  decide(st, a, false);
+}
+BENCHMARK(BM_PlannerDecision)->Unit(benchmark::kMillisecond)->Iterations(10);
+
+void BM_PlannerDecisionWithPosition(benchmark::State& st) {
+  AgentOptions a;
+  a.position_simulations = 1000;
+  decide(st, a, false);
+}
+BENCHMARK(BM_PlannerDecisionWithPosition)->Unit(benchmark::kMillisecond)->Iterations(5);
+
+void BM_PlannerBallInHand(benchmark::State& st) {
+  AgentOptions a;
+  a.position_simulations = 1000;
+  decide(st, a, true);
+}
+BENCHMARK(BM_PlannerBallInHand)->Unit(benchmark::kMillisecond)->Iterations(3);
+
+}  // namespace

@@ -2,6 +2,8 @@
 // decision policy, the balls a shot may aim at, a plain hit (agent.hpp).
 #include "cueball/agents/agent.hpp"
 
+#include "cueball/games/break_shot.hpp"
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -65,33 +67,11 @@ namespace {
 
 constexpr double kDeg = std::numbers::pi / 180.0;
 constexpr double kClearElevationsDeg[] = {0.0, 2.0, 5.0, 10.0, 15.0, 20.0, 25.0, 30.0};
-// The break's spot: steps back from the region's front along the long string, m.
-constexpr double kBreakSpotStep = 0.005;
 
 bool contains(const std::vector<int>& v, int id) { return std::find(v.begin(), v.end(), id) != v.end(); }
 
 const SimulationBall* ball(const Scenario& table, int id) { return find_ball(table.balls, id); }
 
-std::vector<Vec2> others_than(const Scenario& table, int cue_ball) {
-  std::vector<Vec2> out;
-  for (const SimulationBall& b : table.balls)
-    if (b.id != cue_ball) out.push_back(b.state.position);
-  return out;
-}
-
-// The break's spot: on the long string, from the front of the region back,
-// the first free spot inside it.
-std::optional<Vec2> break_spot(const Scenario& table, int cue_ball, const PlacementRegion& region) {
-  const Table& t = table.table;
-  const PlacementRegion box = bounding_rectangle(t, region);
-  const std::vector<Vec2> others = others_than(table, cue_ball);
-  const double y = long_string_y(t);
-  for (double x = box.x_max - t.ball.radius; x > box.x_min; x -= kBreakSpotStep) {
-    const Vec2 p{x, y};
-    if (in_region(t, region, p) && is_free_spot(t, others, p, t.ball.radius)) return p;
-  }
-  return std::nullopt;
-}
 
 }  // namespace
 
@@ -113,35 +93,28 @@ int nearest_pocket(const Scenario& table, int id) {
 Action break_action(const GameState& state) {
   const LegalActions legal = legal_actions(state);
   if (!legal.shoot) throw InvalidArgument("state", "a decision is due, not a break");
-  const Scenario& table = state.table;
-  const std::vector<int> targets = shot_targets(state, legal);
-  if (targets.empty()) throw InvalidArgument("state", "no ball on to break at");
-  // The apex: the ball on nearest the foot spot.
-  const Vec2 foot = foot_spot(table.table);
-  int apex = targets.front();
-  double apex_d = std::numeric_limits<double>::infinity();
-  for (const int id : targets) {
-    const double d = norm(ball(table, id)->state.position - foot);
-    if (d < apex_d) {
-      apex_d = d;
-      apex = id;
+  Action a = recommended_break(state);  // games/break_shot.hpp: measured in docs/break.md
+  if (legal.call_required || (legal.nominate_required && !legal.nominable.empty())) {
+    // No discipline asks for a call or a nomination on its opening shot
+    // today; should a variant do so, the ball on nearest the foot spot.
+    const std::vector<int> targets = shot_targets(state, legal);
+    if (targets.empty()) throw InvalidArgument("state", "no ball on to break at");
+    const Vec2 foot = foot_spot(state.table.table);
+    int apex = targets.front();
+    double apex_d = std::numeric_limits<double>::infinity();
+    for (const int id : targets) {
+      const double d = norm(ball(state.table, id)->state.position - foot);
+      if (d < apex_d) {
+        apex_d = d;
+        apex = id;
+      }
     }
+    if (legal.call_required) {
+      a.called_ball = contains(legal.callable, apex) || legal.callable.empty() ? apex : legal.callable.front();
+      a.called_pocket = nearest_pocket(state.table, *a.called_ball);
+    }
+    if (legal.nominate_required) a.nominate = contains(legal.nominable, apex) ? apex : legal.nominable.front();
   }
-  Action a;
-  if (legal.ball_in_hand) {
-    a.place = break_spot(table, legal.cue_ball, *legal.ball_in_hand);
-    if (!a.place && !ball(table, legal.cue_ball))
-      throw InvalidArgument("state", "no free spot for the cue ball in its region");
-  }
-  a.aim_at = apex;
-  a.strike.speed = state.config.kind == GameKind::snooker ? 0.5 * kBreakSpeed : kBreakSpeed;
-  a.strike.elevation_deg = kBreakElevationDeg;
-  if (legal.call_required) {
-    a.called_ball = contains(legal.callable, apex) || legal.callable.empty() ? apex : legal.callable.front();
-    a.called_pocket = nearest_pocket(table, *a.called_ball);
-  }
-  if (legal.nominate_required && !legal.nominable.empty())
-    a.nominate = contains(legal.nominable, apex) ? apex : legal.nominable.front();
   return a;
 }
 

@@ -98,19 +98,9 @@ CaromSearchResult carom_search(const AgentOptions& options, const GameState& sta
 
 // ------------------------------------------------------------------ shared by the pool agents (agent.cpp)
 
-/// The break's cue speed, m/s (a pro's break is 8-11 m/s of cue ball).
-inline constexpr double kBreakSpeed = 9.0;
-/// The break's elevation, degrees (a level cue's butt clears the rail at 2).
-inline constexpr double kBreakElevationDeg = 2.0;
-
-/// The break (GamePhase::break_shot): the cue ball, when in hand, on the
-/// long string at the front of its region (the kitchen's head string, the
-/// D's baulk line) as near the apex as a free spot allows; struck centre
-/// ball at kBreakSpeed (snooker: half of it, the reds spread rather than
-/// scattered), kBreakElevationDeg, aimed (Action::aim_at) at the centre of
-/// the ball on nearest the foot spot (the 1, the apex; snooker: the apex
-/// red). A fixed break, the same for every seed; a call or nomination the
-/// rules ask for names that ball and its nearest pocket.
+/// The break (GamePhase::break_shot): recommended_break()
+/// (games/break_shot.hpp), the opening shot measured best for each
+/// discipline (docs/break.md), the same for every seed.
 Action break_action(const GameState& state);
 
 /// The decision policy both pool agents follow, given whether the table as

@@ -226,9 +226,10 @@ void end_frame(GameState& next, Ruling& ruling, std::string why) {
     end_game(next, ruling, a > b ? 0 : 1, std::move(why));
     return;
   }
+  const bool black_down = !on_table(next.table, kBlack);
   next.table.balls.clear();
   place_colour(next.table, kBlack, snooker_spots(next.table.table).black);
-  ruling.respotted = {kBlack};
+  if (black_down) ruling.respotted.push_back(kBlack);
   next.phase = GamePhase::play;
   next.decisions.clear();
   next.ball_in_hand = the_d();
@@ -361,7 +362,6 @@ void apply_foul(Stroke& s) {
 
   // WPBSA 3.4: with only the black left, a foul ends the frame.
   if (only_black(before.table)) {
-    if (!on_table(next.table, kBlack)) place_colour(next.table, kBlack, snooker_spots(next.table.table).black);
     end_frame(next, ruling, "WPBSA 3.4: a foul with only the black left ends the frame");
     return;
   }

@@ -20,9 +20,10 @@
 //     miss unless the striker was snookered before the stroke (no ball on
 //     with both extreme edges clear, the section 2 definition, computed by
 //     table/line_of_sight.hpp) — the practice of top-level referees, who
-//     call nearly every such failure. A miscue is never a miss. A miss with
-//     a full-ball view of a ball on (every straight stroke to it clear) is
-//     the third in a row (misses_in_a_row) loses the frame.
+//     call nearly every such failure. A miscue is never a miss. The third
+//     miss in a row with a full-ball view of a ball on (every straight
+//     stroke to it clear; misses_in_a_row counts them, and a restore keeps
+//     the count) loses the frame.
 //   * Free ball (WPBSA 3.12): after a foul that leaves the cue ball on the
 //     table snookered (as above, for the balls the next player is on). The
 //     rule's condition that the free ball must not snooker the opponent is

@@ -392,6 +392,28 @@ TEST(Snooker, AMissMayBeRestoredAndTheOffenderPlaysAgain) {
   EXPECT_EQ(legal_actions(plain.next).decisions, (std::vector<Decision>{Decision::play, Decision::pass}));
 }
 
+TEST(Snooker, AMissedNominatedColourIsRestoredAsAColourStroke) {
+  // On a colour after a red: the restore gives the offender the colour
+  // stroke back (a nomination again), not the reds.
+  GameState s = on_colour(frame(with(colours_on_spots(), {{0, {1.2, 0.4}}, {1, {2.8, 0.9}}})));
+  Action away = strike(1.0, 180.0);
+  away.nominate = kBlue;
+  const GameStep miss = play(s, away, 1);
+  EXPECT_EQ(miss.ruling.foul, Foul::no_contact);
+  EXPECT_TRUE(miss.ruling.miss);
+  EXPECT_EQ(miss.ruling.points, (std::array<int, 2>{0, 5}));  // the nominated blue is the ball on
+  const GameStep restored = play(miss.next, decision(Decision::restore), 2);
+  EXPECT_EQ(restored.next.to_shoot, 0);
+  const LegalActions legal = legal_actions(restored.next);
+  EXPECT_TRUE(legal.nominate_required);
+  EXPECT_EQ(legal.nominable, (std::vector<int>{16, 17, 18, 19, 20, 21}));
+  // Played from where the balls lie instead, the next player is on the reds.
+  const GameStep played = play(miss.next, decision(Decision::play), 2);
+  EXPECT_EQ(played.next.to_shoot, 1);
+  EXPECT_EQ(legal_actions(played.next).on, std::vector<int>{1});
+  EXPECT_FALSE(legal_actions(played.next).nominate_required);
+}
+
 TEST(Snooker, ThreeMissesWithAFullBallViewLoseTheFrame) {
   GameState s = frame(with(colours_on_spots(), {{0, {1.2, 0.4}}, {1, {2.0, 0.4}}}));
   s.misses_in_a_row = 2;

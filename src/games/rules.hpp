@@ -125,4 +125,19 @@ void pool_foul(GameState& next, Ruling& ruling, Foul foul, int shooter, Placemen
 std::optional<Foul> pool_standard_foul(const ShotContext& shot, const std::vector<int>& on, bool rail_required,
                                        std::string& reason);
 
+/// The kitchen rule (WPA 1.5 and 6.11, "Bad Play from Behind the Head
+/// String"): with the cue ball in hand behind the head string, true when its
+/// first contact is a ball whose centre lay behind the head string (x <
+/// head_string_x) at the start of the shot and the cue ball had not crossed
+/// the head string out of the kitchen before that contact.
+bool cue_ball_not_out_of_kitchen(const ShotContext& shot);
+
+/// When `id` is among `pocketed`, spots it on the long string (WPA 1.4) in
+/// `next.table`, clear of the cue ball (id 0), and adds it to
+/// ruling.respotted.
+void respot_if_pocketed(GameState& next, Ruling& ruling, const std::vector<int>& pocketed, int id);
+
+/// A placement region of `kind` (no rectangle bounds).
+PlacementRegion region_of(PlacementRegion::Kind kind);
+
 }  // namespace cueball

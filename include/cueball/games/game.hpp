@@ -50,6 +50,8 @@
 namespace cueball {
 
 enum class GameKind : char { nine_ball, eight_ball, ten_ball, snooker, three_cushion };
+inline constexpr std::array<GameKind, 5> kGameKinds{GameKind::nine_ball, GameKind::eight_ball, GameKind::ten_ball,
+                                                    GameKind::snooker, GameKind::three_cushion};
 
 /// "nine_ball", "eight_ball", "ten_ball", "snooker", "three_cushion".
 const char* to_string(GameKind kind);

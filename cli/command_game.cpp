@@ -1,0 +1,1 @@
+// cueball game: placeholder

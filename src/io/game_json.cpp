@@ -13,6 +13,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "cueball/agents/match.hpp"
 #include "cueball/core/errors.hpp"
 #include "cueball/io/scenario_json.hpp"
 #include "io/json_input.hpp"
@@ -831,6 +832,36 @@ std::vector<GameRecord> game_records_from_json(std::string_view json_text) {
   std::vector<GameRecord> out;
   for (std::size_t i = 0; i < games.size(); ++i) out.push_back(read_record(games[i], "record.games[" + std::to_string(i) + "]"));
   return out;
+}
+
+std::string game_summary_to_json(const std::vector<GameRecord>& records, int indent) {
+  Json games = Json::array();
+  std::array<int, 2> wins{}, fouls{}, pots{};
+  int truncated = 0;
+  std::size_t steps = 0;
+  for (const GameRecord& g : records) {
+    const GameState& end = g.steps.empty() ? g.start : g.steps.back().state;
+    const GameTally t = tally(g);
+    games.push_back({{"seed", g.seed},
+                     {"players", Json::array({g.players[0], g.players[1]})},
+                     {"scores", pair_json(end.scores)},
+                     {"winner", player_json(end.winner)},
+                     {"truncated", end.truncated},
+                     {"end_reason", end.end_reason},
+                     {"steps", g.steps.size()},
+                     {"fouls", pair_json(t.fouls)},
+                     {"pots", pair_json(t.pots)}});
+    if (end.winner) wins[static_cast<std::size_t>(*end.winner)] += 1;
+    truncated += end.truncated ? 1 : 0;
+    for (std::size_t p = 0; p < 2; ++p) {
+      fouls[p] += t.fouls[p];
+      pots[p] += t.pots[p];
+    }
+    steps += g.steps.size();
+  }
+  const Json totals = {{"games", records.size()}, {"wins", pair_json(wins)}, {"truncated", truncated},
+                       {"fouls", pair_json(fouls)}, {"pots", pair_json(pots)}, {"steps", steps}};
+  return Json{{"games", games}, {"totals", totals}}.dump(indent);
 }
 
 std::optional<ReplayDifference> replay_difference(const GameRecord& record, int game) {

@@ -47,6 +47,7 @@
 
 #include "cueball/games/game.hpp"
 #include "cueball/games/record.hpp"
+#include "cueball/table/table.hpp"
 
 namespace cueball {
 
@@ -89,6 +90,13 @@ std::string game_step_to_json(const GameStep& step, int indent = 1);
 /// The config of each game is its start state's "game.config".
 std::string game_records_to_json(const std::vector<GameRecord>& records, int indent = -1);
 std::vector<GameRecord> game_records_from_json(std::string_view json_text);
+
+/// What `cueball game play --json` prints of played games: per game
+///   {"seed", "players": [name, name], "scores": [p0, p1], "winner": null | 0 | 1,
+///    "truncated", "end_reason", "steps", "fouls": [p0, p1], "pots": [p0, p1]}
+/// (fouls and pots as agents/match.hpp's tally()), and the totals
+///   {"games", "wins": [p0, p1], "truncated", "fouls": [p0, p1], "pots": [p0, p1], "steps"}.
+std::string game_summary_to_json(const std::vector<GameRecord>& records, int indent = 1);
 
 /// Where replaying a record first differs from it.
 struct ReplayDifference {

@@ -26,7 +26,7 @@ from ._cueball import *  # noqa: E402,F401,F403 (the extension's public API is t
 from ._cueball import __doc__ as _extension_doc
 from ._cueball import __version__ as __version__
 from ._cueball import _time_run_scenario as _time_run_scenario
-from ._cueball import games as games
+from . import games as games  # the extension's submodule, put here by the * import above
 
 import sys as _sys
 

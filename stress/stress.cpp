@@ -73,6 +73,7 @@
 #include <thread>
 #include <vector>
 
+#include "game_stress.hpp"
 #include "tool_support.hpp"
 #include "cueball/io/scenario_json.hpp"
 #include "cueball/physics/cloth_motion.hpp"
@@ -1150,6 +1151,8 @@ struct Options {
   std::size_t report_worst = 1;
   std::string dump_dir;
   std::vector<std::string> scenarios;
+  long long games = 0;                // --games: random-agent games per discipline (game_stress.cpp)
+  std::vector<GameKind> game_kinds;   // --game
 };
 
 std::string class_list() {
@@ -1163,6 +1166,7 @@ void usage() {
       "usage: cueball-stress [--class NAME] [--shots N] [--seed S] [--threads T] [--report-worst K] [--dump-worst DIR]\n"
       "                      [--cushion-model NAME] [--ball-collision-model NAME] [--cushion-exact-tolerance T]\n"
       "       cueball-stress --scenario FILE [--scenario FILE ...]\n"
+      "       cueball-stress --games N [--game KIND] [--seed S] [--threads T]\n"
       "Random seeded shots of each class, simulated and checked for overlaps, cushion and jaw\n"
       "penetration, balls off the table, NaN, energy gain, runaway event counts, errors, crashes\n"
       "and determinism, at every event and between events. Shot k uses seed S + k.\n"
@@ -1178,8 +1182,12 @@ void usage() {
       "  --ball-collision-model M  the ball-ball model of every generated shot, with its own constants: %s\n"
       "                      (default coulomb_impulse)\n"
       "  --scenario FILE     check one scenario file (cueball's scenario JSON) instead; its event limit is raised to %d\n"
+      "  --games N           play N whole games between random agents instead, of each discipline, [1, 1e9];\n"
+      "                      game k uses seed S + k; every step checked for the rules' invariants\n"
+      "  --game KIND         the disciplines of --games: all (default) or a comma-separated list of %s\n"
       "Exit status: 0 no violation, 1 violations, 2 bad flags.\n",
-      class_list().c_str(), cushion_model_names("").c_str(), ball_collision_model_names("").c_str(), kMaxEvents);
+      class_list().c_str(), cushion_model_names("").c_str(), ball_collision_model_names("").c_str(), kMaxEvents,
+      game_kind_names().c_str());
 }
 
 Options parse(int argc, char** argv) {
@@ -1193,11 +1201,11 @@ Options parse(int argc, char** argv) {
     }
     static const char* const known[] = {"--class",      "--shots",      "--seed",          "--threads",
                                         "--report-worst", "--dump-worst", "--cushion-model", "--ball-collision-model",
-                                        "--cushion-exact-tolerance", "--scenario"};
+                                        "--cushion-exact-tolerance", "--scenario", "--games", "--game"};
     if (std::find_if(std::begin(known), std::end(known), [&](const char* k) { return flag == k; }) == std::end(known))
       kFlags.bad("flag", flag,
                "--class, --shots, --seed, --threads, --report-worst, --dump-worst, --cushion-model, "
-               "--ball-collision-model, --cushion-exact-tolerance, --scenario, --help");
+               "--ball-collision-model, --cushion-exact-tolerance, --scenario, --games, --game, --help");
     if (i + 1 >= argc) kFlags.bad(flag, "", "a value after the flag");
     const std::string value = argv[++i];
     if (flag == "--class") {
@@ -1214,6 +1222,21 @@ Options parse(int argc, char** argv) {
         o.classes.push_back(&*it);
       }
       if (o.classes.empty()) kFlags.bad(flag, value, class_list());
+    } else if (flag == "--games") {
+      o.games = kFlags.integer(flag, value, 1, 1000000000);
+    } else if (flag == "--game") {
+      std::stringstream list(value);
+      std::string name;
+      while (std::getline(list, name, ',')) {
+        if (name == "all") {
+          o.game_kinds.insert(o.game_kinds.end(), kGameKinds.begin(), kGameKinds.end());
+          continue;
+        }
+        const std::optional<GameKind> kind = game_kind_from_string(name);
+        if (!kind) kFlags.bad(flag, value, "all or a comma-separated list of " + game_kind_names());
+        o.game_kinds.push_back(*kind);
+      }
+      if (o.game_kinds.empty()) kFlags.bad(flag, value, "all or a comma-separated list of " + game_kind_names());
     } else if (flag == "--shots") {
       o.shots = kFlags.integer(flag, value, 1, 1000000000);
     } else if (flag == "--seed") {
@@ -1370,6 +1393,11 @@ int run_classes(const Options& o) {
 int main(int argc, char** argv) {
   const Options o = parse(argc, argv);
   try {
+    if (o.games > 0) {
+      const std::vector<GameKind> kinds =
+          o.game_kinds.empty() ? std::vector<GameKind>(kGameKinds.begin(), kGameKinds.end()) : o.game_kinds;
+      return run_game_stress(kinds, o.games, o.seed, o.threads);
+    }
     return o.scenarios.empty() ? run_classes(o) : check_scenarios(o);
   } catch (const std::exception& e) {
     std::fprintf(stderr, "cueball-stress: error: %s\n", e.what());

@@ -147,6 +147,7 @@ TEST(NineBall, ThreeConsecutiveFoulsLose) {
   EXPECT_EQ(step.ruling.foul, Foul::no_contact);
   EXPECT_TRUE(step.ruling.game_over);
   EXPECT_EQ(step.ruling.winner, 1);
+  EXPECT_EQ(step.next.scores, (std::array<int, 2>{0, 1}));
   // With the rule off, the game goes on.
   s.config.fouls_to_lose = 0;
   EXPECT_FALSE(play(s, strike(1.0, 180.0), 1).ruling.game_over);

@@ -19,8 +19,6 @@ namespace cueball {
 
 namespace {
 
-constexpr std::array kGameKinds{GameKind::nine_ball, GameKind::eight_ball, GameKind::ten_ball, GameKind::snooker,
-                                GameKind::three_cushion};
 constexpr std::array kDecisions{Decision::play,    Decision::pass,         Decision::rerack_and_break,
                                 Decision::rerack_opponent_breaks, Decision::respot_eight, Decision::rerack,
                                 Decision::restore};

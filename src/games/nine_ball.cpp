@@ -1,6 +1,7 @@
 // 9-ball (WPA Rules of Play, section 2 "Nine Ball", with the General Rules
 // of section 1 and the Fouls of section 6). Balls 1-9; the lowest on the
-// table is the ball on; the player who legally pockets the 9 wins (WPA 2.1).
+// table is the ball on; the player who legally pockets the 9 wins (WPA
+// section 2, its opening paragraph).
 //
 // Variants (GameConfig): the 9 on a legal break wins (WPA 2.5; false:
 // respotted and the breaker continues), the push-out (WPA 2.4) on or off,
@@ -19,6 +20,7 @@ constexpr int kNine = 9;
 
 bool contains(const std::vector<int>& v, int id) { return std::find(v.begin(), v.end(), id) != v.end(); }
 
+
 // After a foul or a push-out, a pocketed 9 comes back (WPA 2.6).
 void respot_nine(GameState& next, Ruling& ruling, const std::vector<int>& pocketed) {
   if (!contains(pocketed, kNine)) return;
@@ -32,13 +34,7 @@ void foul(GameState& next, Ruling& ruling, Foul f, int shooter, const std::vecto
   respot_nine(next, ruling, pocketed);
   const int limit = next.config.fouls_to_lose;
   if (limit > 0 && of(next.fouls_in_a_row, shooter) >= limit)
-    end_game(next, ruling, opponent(shooter),
-             "WPA 2.8: " + std::to_string(limit) + " consecutive fouls lose the game");
-}
-
-void win(GameState& next, Ruling& ruling, int shooter, std::string reason) {
-  of(next.scores, shooter) += 1;
-  end_game(next, ruling, shooter, std::move(reason));
+    win_rack(next, ruling, opponent(shooter), "WPA 2.8: " + std::to_string(limit) + " consecutive fouls lose the game");
 }
 
 void set_on(GameState& next) {
@@ -65,7 +61,7 @@ Judgement judge_break(const ShotContext& shot, Judgement j, const std::vector<in
   of(next.fouls_in_a_row, shooter) = 0;
   if (contains(pocketed, kNine)) {
     if (next.config.nine_on_break_wins) {
-      win(next, ruling, shooter, "WPA 2.5: the 9 pocketed on a legal break wins");
+      win_rack(next, ruling, shooter, "WPA 2.5: the 9 pocketed on a legal break wins");
       return j;
     }
     respot_nine(next, ruling, pocketed);  // the variant: respotted, and the breaker continues
@@ -154,7 +150,7 @@ Judgement nine_ball_judge_shot(const ShotContext& shot) {
     } else {
       of(next.fouls_in_a_row, shooter) = 0;
       if (contains(pocketed, kNine)) {
-        win(next, j.ruling, shooter, "WPA 2.1, 2.5: the 9 pocketed on a legal shot");
+        win_rack(next, j.ruling, shooter, "WPA 2, 2.5: the 9 pocketed on a legal shot wins");
       } else if (!pocketed.empty()) {
         j.ruling.reason = "legal shot with a ball pocketed: the shooter continues (WPA 2.5)";
       } else {

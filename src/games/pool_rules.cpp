@@ -1,6 +1,7 @@
 // What the pool games (9-ball, 8-ball, 10-ball) share: the standard fouls
 // of WPA section 6, the rail after contact, the break's balls to a rail,
-// spotting on the long string, ball in hand after a foul.
+// spotting on the long string, ball in hand after a foul, the kitchen rule
+// (the cue ball in hand behind the head string must leave it first).
 #include <algorithm>
 #include <set>
 
@@ -13,6 +14,11 @@ int lowest_object_ball(const Scenario& table) {
   for (const SimulationBall& b : table.balls)
     if (b.id >= 1 && b.id <= 15 && (lowest < 0 || b.id < lowest)) lowest = b.id;
   return lowest;
+}
+
+void win_rack(GameState& next, Ruling& ruling, int winner, std::string reason) {
+  of(next.scores, winner) += 1;
+  end_game(next, ruling, winner, std::move(reason));
 }
 
 bool rail_after_contact(const ShotFacts& facts) {
@@ -97,6 +103,29 @@ std::optional<Foul> pool_standard_foul(const ShotContext& shot, const std::vecto
     return Foul::no_rail_after_contact;
   }
   return std::nullopt;
+}
+
+bool cue_ball_not_out_of_kitchen(const ShotContext& shot) {
+  const ShotFacts& f = shot.facts;
+  if (f.first_contact < 0) return false;
+  const SimulationBall* first = find_ball(shot.shot.balls, f.first_contact);
+  if (first == nullptr) return false;
+  const double string_x = head_string_x(shot.shot.table);
+  if (!(first->state.position.x < string_x)) return false;  // WPA 1.5: a ball on the string or past it may be played
+  for (const HeadStringCrossing& c : f.head_string_crossings)
+    if (c.ball == shot.cue_ball && !c.toward_head && c.time <= f.first_contact_time) return false;
+  return true;
+}
+
+void respot_if_pocketed(GameState& next, Ruling& ruling, const std::vector<int>& pocketed, int id) {
+  if (std::find(pocketed.begin(), pocketed.end(), id) == pocketed.end()) return;
+  if (respot_on_long_string(next.table, id, 0)) ruling.respotted.push_back(id);
+}
+
+PlacementRegion region_of(PlacementRegion::Kind kind) {
+  PlacementRegion r;
+  r.kind = kind;
+  return r;
 }
 
 }  // namespace cueball

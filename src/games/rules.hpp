@@ -94,6 +94,9 @@ void end_game(GameState& next, Ruling& ruling, int winner, std::string reason);
 /// The lowest-numbered object ball on the table (ids 1..15), or -1.
 int lowest_object_ball(const Scenario& table);
 
+/// The pool games: `winner` wins the rack (scores[winner] += 1, end_game).
+void win_rack(GameState& next, Ruling& ruling, int winner, std::string reason);
+
 /// Pool: a ball pocketed, or the cue ball or an object ball touching a
 /// cushion or a jaw after the first contact (WPA 6.3; a pocket's jaw is the
 /// cushion's nose turned into the pocket, so a ball that hits it has
@@ -124,5 +127,20 @@ void pool_foul(GameState& next, Ruling& ruling, Foul foul, int shooter, Placemen
 /// contact (checked when `rail_required`). None: a legal shot so far.
 std::optional<Foul> pool_standard_foul(const ShotContext& shot, const std::vector<int>& on, bool rail_required,
                                        std::string& reason);
+
+/// The kitchen rule (WPA 1.5 and 6.11, "Bad Play from Behind the Head
+/// String"): with the cue ball in hand behind the head string, true when its
+/// first contact is a ball whose centre lay behind the head string (x <
+/// head_string_x) at the start of the shot and the cue ball had not crossed
+/// the head string out of the kitchen before that contact.
+bool cue_ball_not_out_of_kitchen(const ShotContext& shot);
+
+/// When `id` is among `pocketed`, spots it on the long string (WPA 1.4) in
+/// `next.table`, clear of the cue ball (id 0), and adds it to
+/// ruling.respotted.
+void respot_if_pocketed(GameState& next, Ruling& ruling, const std::vector<int>& pocketed, int id);
+
+/// A placement region of `kind` (no rectangle bounds).
+PlacementRegion region_of(PlacementRegion::Kind kind);
 
 }  // namespace cueball

@@ -211,4 +211,16 @@ std::vector<PlacedBall> rack_snooker(const Table& table, const RackOptions& opti
   return out;
 }
 
+
+std::vector<PlacedBall> rack_ten_ball(const Table& table, const RackOptions& options) {
+  // Rows of 1..4 (WPA 9.2): the 1 at the apex on the foot spot, the 10 in the
+  // middle of the third row, the others in a fixed order (the rule book asks
+  // for no pattern; a fixed one keeps a seed's rack reproducible).
+  const std::vector<RackBall> balls{
+      {1, "1", {0, 0}}, {2, "2", {1, 0}}, {3, "3", {1, 1}}, {4, "4", {2, 0}}, {10, "10", {2, 1}},
+      {5, "5", {2, 2}}, {6, "6", {3, 0}}, {7, "7", {3, 1}}, {8, "8", {3, 2}}, {9, "9", {3, 3}},
+  };
+  return rack_pool(table, options, balls, "ten_ball");
+}
+
 }  // namespace cueball

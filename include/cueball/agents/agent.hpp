@@ -56,4 +56,16 @@ Action ghost_ball_action(const GameState& state, std::uint64_t seed);
 Action planner_action(const AgentOptions& options, const GameState& state, std::uint64_t seed);
 Action carom_search_action(const AgentOptions& options, const GameState& state, std::uint64_t seed);
 
+/// What carom_search found, for tests and benchmarks: its action, the
+/// engine runs it spent (never more than options.simulations), whether the
+/// action scores noise-free, and the share of its noisy repeats that scored.
+struct CaromSearchResult {
+  Action action;
+  int simulations = 0;
+  bool point = false;
+  int noisy_points = 0;
+  int noisy_tries = 0;
+};
+CaromSearchResult carom_search(const AgentOptions& options, const GameState& state, std::uint64_t seed);
+
 }  // namespace cueball

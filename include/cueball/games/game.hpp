@@ -50,6 +50,8 @@
 namespace cueball {
 
 enum class GameKind : char { nine_ball, eight_ball, ten_ball, snooker, three_cushion };
+inline constexpr std::array<GameKind, 5> kGameKinds{GameKind::nine_ball, GameKind::eight_ball, GameKind::ten_ball,
+                                                    GameKind::snooker, GameKind::three_cushion};
 
 /// "nine_ball", "eight_ball", "ten_ball", "snooker", "three_cushion".
 const char* to_string(GameKind kind);
@@ -71,8 +73,8 @@ struct GameConfig {
   CueStrikeNoise noise;
   /// Shots (decisions included) after which the game ends as truncated.
   int max_shots = 1000;
-  /// Three consecutive fouls lose the game (WPA 2.8, 9-ball; the 10-ball rules likewise);
-  /// 0 turns the rule off.
+  /// Three consecutive fouls lose the game (WPA 2.8, 9-ball; 10-ball likewise);
+  /// 0 turns the rule off. 8-ball has no such rule and ignores it.
   int fouls_to_lose = 3;
 
   // ---- 9-ball
@@ -81,8 +83,10 @@ struct GameConfig {
   /// A push-out may be played on the shot after the break (WPA 2.4; 10-ball likewise).
   bool push_out = true;
 
-  // ---- 8-ball
-  /// Where the cue ball is placed after a scratch on the break (WPA 3.6
+  // ---- 8-ball (and 10-ball): every shot after the break is a called shot,
+  // a ball and a pocket (WPA 1.6, 3, 9): the rule books let an "obvious"
+  // shot go uncalled, which an engine cannot judge, so it always asks.
+  /// Where the cue ball is placed after a scratch on the break (WPA 3.3(g)
   /// gives ball in hand behind the head string; many leagues anywhere).
   PlacementRegion::Kind break_scratch_region = PlacementRegion::Kind::behind_head_string;
 
@@ -110,10 +114,10 @@ void validate(const GameConfig& config);
 enum class Decision : char {
   play,                   ///< take the table as it is and shoot (accept a push-out, an illegal break, a foul's table, ...)
   pass,                   ///< make the opponent shoot from here (pass back a push-out, have the offender play again)
-  rerack_and_break,       ///< 8-ball illegal break: re-rack and break yourself (WPA 3.5)
-  rerack_opponent_breaks, ///< 8-ball illegal break: re-rack and have the offender break again (WPA 3.5)
-  respot_eight,           ///< 8-ball, the 8 on the break: spot the 8 and play on (WPA 3.8)
-  rerack,                 ///< 8-ball, the 8 on the break: re-rack and break again (WPA 3.8)
+  rerack_and_break,       ///< 8-ball illegal break: re-rack and break yourself (WPA 3.3(d))
+  rerack_opponent_breaks, ///< 8-ball illegal break: re-rack and have the offender break again (WPA 3.3(d))
+  respot_eight,           ///< 8-ball, the 8 on the break: spot the 8 and play on (WPA 3.3(e), (f))
+  rerack,                 ///< 8-ball, the 8 on the break: re-rack and break again (WPA 3.3(e), (f))
   restore,                ///< snooker miss: replace the balls, the offender plays again (WPBSA 3.14)
 };
 const char* to_string(Decision d);
@@ -144,7 +148,7 @@ struct GameState {
   /// The cue ball is in hand: placed by the player anywhere in the region
   /// before the shot (Action::place). None: played from where it lies.
   std::optional<PlacementRegion> ball_in_hand;
-  /// 8-ball after a scratch on the break (WPA 3.6 with WPA 1.6): the
+  /// 8-ball after a scratch on the break (WPA 3.3(g) with WPA 1.5, 6.11): the
   /// cue ball must cross the head string before it touches a ball behind it.
   bool cue_must_leave_kitchen = false;
   /// Points: three-cushion and snooker scores; pool games 1 to the winner.
@@ -218,10 +222,10 @@ enum class Foul : char {
   wrong_ball_first,       ///< the first ball contacted is not on (WPA 6.2; WPBSA 3.12(a)(ii))
   no_contact,             ///< the cue ball touched no ball (WPA 6.2; WPBSA 3.12; UMB)
   no_rail_after_contact,  ///< no ball to a rail or pocketed after the contact (WPA 6.3)
-  illegal_break,          ///< WPA 2.3, 3.5: nothing potted and fewer than four object balls to a rail
-  ball_off_table,         ///< WPA 6.9; not reachable today (no airborne phase)
-  wrong_pocket,           ///< a ball not on potted, or in another pocket than called (WPBSA 3.12; WPA 3.12, the 8 in an uncalled pocket)
-  cue_ball_not_out_of_kitchen,  ///< in hand behind the head string, it touched a ball behind it first (WPA 1.6, 6.12)
+  illegal_break,          ///< WPA 2.3, 3.3, 9.3: nothing potted and fewer than four object balls to a rail
+  ball_off_table,         ///< WPA 6.5; not reachable today (no airborne phase)
+  wrong_pocket,           ///< a ball not on potted, or in another pocket than called (snooker: a ball not on potted; 8-ball: the 8 in another pocket than called, WPA 3.8)
+  cue_ball_not_out_of_kitchen,  ///< in hand behind the head string, it touched a ball behind it first (WPA 1.5, 6.11)
   bad_cue_ball,           ///< three-cushion: struck the opponent's cue ball (UMB)
   miscue,                 ///< the noisy strike went beyond the miscue limit: judged as a foul (the engine cannot play it)
 };

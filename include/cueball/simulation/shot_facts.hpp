@@ -63,8 +63,9 @@ struct CushionHit {
   bool after_first_contact = false;   ///< after the cue ball's first contact with a ball
 };
 
-/// A ball's contact with a pocket jaw (a ball_jaw event; not a cushion for
-/// the rules' "drive a ball to a rail", WPA 6.3 counts rails).
+/// A ball's contact with a pocket jaw (a ball_jaw event). Kept apart from
+/// the cushion contacts; whether it is a "rail" is the rule's to say (the
+/// pool games count it as one: games/pool_rules.cpp).
 struct JawHit {
   double time = 0.0;
   int ball = -1;

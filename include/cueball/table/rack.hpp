@@ -1,4 +1,4 @@
-// Opening positions: 9-ball, 8-ball and snooker racks on any Table.
+// Opening positions: 9-ball, 8-ball, 10-ball and snooker racks on any Table.
 //
 // Frame as in table.hpp. Pool: the head end is x = 0, the head string is at
 // a quarter of the length and the foot spot at three quarters on the long
@@ -87,6 +87,11 @@ std::vector<PlacedBall> rack_nine_ball(const Table& table, const RackOptions& op
 /// on the foot spot, the 8 in the centre of the third row, a solid (5) and a
 /// stripe (12) in the back corners (WPA Rules of 8-Ball, "Racking").
 std::vector<PlacedBall> rack_eight_ball(const Table& table, const RackOptions& options = {});
+
+/// 11 balls: cue as in 9-ball; 1-10 in a triangle (rows 1..4), the 1 at the
+/// apex on the foot spot, the 10 in the middle of the third row (WPA Rules
+/// of Play 9.2, "Ten Ball Rack").
+std::vector<PlacedBall> rack_ten_ball(const Table& table, const RackOptions& options = {});
 
 /// 22 balls: cue (id 0) inside the D between the brown and yellow spots;
 /// reds (ids 1-15) in a triangle whose apex red is kPinkApexGap behind the

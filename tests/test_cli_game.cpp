@@ -122,7 +122,6 @@ TEST(CliGame, StatesThatBreakTheRulesExitTwoNamingTheKey) {
   const CliRun r = run_cli(shoot(edited));
   EXPECT_EQ(r.status, 0) << r.err;
   expect_usage_error({"game", "new", "--game", "pinball"}, "--game");
-  expect_usage_error({"game", "new", "--game", "eight_ball"}, "--game");  // until its rules land
   expect_usage_error({"game", "new", "--game", "nine_ball", "--noise", R"({"aim_deg": 90})"}, "--noise.aim_deg");
   expect_usage_error({"game"}, "");
 }

@@ -5,6 +5,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "cueball/io/report.hpp"
 #include "cueball/simulation/scenario.hpp"
 #include "cueball/simulation/shot_facts.hpp"
 #include "cueball/table/table.hpp"
@@ -25,5 +26,8 @@ nlohmann::json parameters_json(const Parameters& p);
 nlohmann::json cue_json(const Scenario& s);
 /// scenario_to_json() as a value.
 nlohmann::json scenario_json(const Scenario& s);
+/// report_to_json() as a value, for the writers that add to a report
+/// (batch_json.cpp, cushion_json.cpp).
+nlohmann::ordered_json report_json(const Report& report);
 
 }  // namespace cueball::io

@@ -40,8 +40,6 @@ py::tuple shot_fields(const ShotStrike& s) {
                         s.target ? py::object(py::int_(*s.target)) : py::object(py::none()));
 }
 
-py::object json_loads(const std::string& text) { return py::module_::import("json").attr("loads")(text); }
-
 py::dict written(const Scenario& s) { return json_loads(cueball::scenario_to_json(s, -1)); }
 
 ScenarioPtr from_json(const std::string& text) {

@@ -1013,6 +1013,21 @@ struct ExactLimits {
   static constexpr int max_attempts = 20000;    // Runge-Kutta steps, accepted or not
   static constexpr int hover_attempts = 200;    // steps in one segment before a hovering slip is set to zero
   static constexpr int max_events = 64;
+  // While both contacts slip by more than loose_slip, the local tolerance of
+  // a step is the solver's times their smaller slip over loose_slip, up to
+  // `loosening` times, and never above kMaxExactTolerance: where the slips
+  // are large the directions turn slowly and an error committed there is not
+  // amplified (the steps' errors add up to about the tolerance), while near
+  // zero slip, where the default 1e-8 is needed, the tolerance is the
+  // solver's. On 20,000 random sliding impacts (bench_cushion_impact's
+  // BM_CushionTolerance) this takes 25 % fewer steps (17.9 -> 13.3) and keeps
+  // the error against the solve at 1e-11 below 1.0e-7 of the largest incoming
+  // velocity (7e-8 before); 0.03 and 10 gave 14.3 steps, 0.003 and 30 11.5
+  // steps with a worst error of 4.6e-7. A sticking contact has zero slip.
+  // Only at the default tolerance or looser: reference solves and the
+  // rolling-ball table's are not loosened.
+  static constexpr double loose_slip = 0.01;
+  static constexpr double loosening = 10.0;
 };
 
 }  // namespace
@@ -1022,6 +1037,10 @@ Outcome solve_exact(const Coefficients& k, const State& y0, const Units& units,
   const double scale = std::max(velocity_scale(y0), 1.0);
   const double tiny_slip = ExactLimits::tiny_slip * scale;
   const double atol = tolerance * scale;
+  // The step's tolerance, loosened while both slips are large (see ExactLimits::loose_slip).
+  const double loosen_max =
+      tolerance >= kExactTolerance ? std::max(1.0, std::min(ExactLimits::loosening, kMaxExactTolerance / tolerance)) : 1.0;
+  const double loosen_per_slip = 1.0 / (ExactLimits::loose_slip * scale);
   Exact sys{};
   sys.k = k;
   sys.zero_slip = 1e-13 * scale;
@@ -1106,7 +1125,8 @@ Outcome solve_exact(const Coefficients& k, const State& y0, const Units& units,
         continue;
       }
     }
-    const double err = sys.free_slip ? FreeSlipStep(sys)(y, k1, h, atol, st) : dopri5_step(sys, y, k1, h, atol, st);
+    const double atol_step = atol * std::clamp(std::min(sys.cushion_r, sys.bed_r) * loosen_per_slip, 1.0, loosen_max);
+    const double err = sys.free_slip ? FreeSlipStep(sys)(y, k1, h, atol_step, st) : dopri5_step(sys, y, k1, h, atol_step, st);
     const double root4 = std::sqrt(std::sqrt(std::max(err, 1e-5)));
     if (!(err <= 1.0)) {
       h /= std::min(10.0, root4 / 0.75);

@@ -1026,14 +1026,16 @@ struct ExactLimits {
   // amplified (the steps' errors add up to about the tolerance), while near
   // zero slip, where the default 1e-8 is needed, the tolerance is the
   // solver's. On 20,000 random sliding impacts (bench_cushion_impact's
-  // BM_CushionTolerance) this takes 25 % fewer steps (17.9 -> 13.3) and keeps
-  // the error against the solve at 1e-11 below 1.0e-7 of the largest incoming
-  // velocity (7e-8 before); 0.03 and 10 gave 14.3 steps, 0.003 and 30 11.5
-  // steps with a worst error of 4.6e-7. A sticking contact has zero slip.
-  // Only at the default tolerance or looser: reference solves and the
-  // rolling-ball table's are not loosened.
+  // BM_CushionTolerance) this takes 15 % fewer steps (17.9 -> 15.2) and keeps
+  // the error against the solve at 1e-11 at 7e-8 of the largest incoming
+  // velocity (as before). 10x took 25 % fewer steps (13.3) for a worst error
+  // of 1.0e-7, but moved the constants fit of tests/test_constants_fit.cpp
+  // (mu_w 0.127 for a truth of 0.20 on its synthetic carom match: its
+  // objective is flat in mu_w and its shots chaotic). A sticking contact has
+  // zero slip. Only at the default tolerance or looser: reference solves and
+  // the rolling-ball table's are not loosened.
   static constexpr double loose_slip = 0.01;
-  static constexpr double loosening = 10.0;
+  static constexpr double loosening = 3.0;
 };
 
 }  // namespace

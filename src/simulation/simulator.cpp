@@ -661,16 +661,38 @@ BallState SimulationResult::state_at(std::size_t index, double t, const Paramete
   return evolve(seg.state, std::max(0.0, t - seg.start_time), p);
 }
 
+namespace {
+
+// The table and settings of this thread's last validate_simulation_input()
+// that passed: the same again (==, which no NaN passes) are not checked again
+// (issue 29: simulate() in a user's loop over one scenario). Comparing them
+// costs a small part of checking them (the table's geometry, every cushion's
+// impact model).
+struct CheckedTableAndSettings {
+  bool valid = false;
+  Table table;
+  SimulationSettings settings;
+};
+thread_local CheckedTableAndSettings t_checked;
+
+}  // namespace
+
 void validate_simulation_input(const Table& table, const std::vector<SimulationBall>& balls,
                                const SimulationSettings& settings) {
-  validate(settings.parameters);
-  validate(table);
-  (void)ball_collision_contact(settings.parameters, settings.ball_collision_model, settings.ball_collision);
-  if (settings.max_events < 1)
-    throw InvalidArgument("max_events", static_cast<double>(settings.max_events), "[1, 2^31)");
-  // The impact model of every cushion and jaw (the simulator builds them when it starts).
-  for (const CushionSegment& c : table.cushions) (void)cushion_contact(settings.parameters, settings.cushion, c.contact_height);
-  for (const JawArc& j : table.jaws) (void)cushion_contact(settings.parameters, settings.cushion, j.contact_height);
+  if (!(t_checked.valid && t_checked.settings == settings && t_checked.table == table)) {
+    t_checked.valid = false;
+    validate(settings.parameters);
+    validate(table);
+    (void)ball_collision_contact(settings.parameters, settings.ball_collision_model, settings.ball_collision);
+    if (settings.max_events < 1)
+      throw InvalidArgument("max_events", static_cast<double>(settings.max_events), "[1, 2^31)");
+    // The impact model of every cushion and jaw (the simulator builds them when it starts).
+    for (const CushionSegment& c : table.cushions) (void)cushion_contact(settings.parameters, settings.cushion, c.contact_height);
+    for (const JawArc& j : table.jaws) (void)cushion_contact(settings.parameters, settings.cushion, j.contact_height);
+    t_checked.table = table;
+    t_checked.settings = settings;
+    t_checked.valid = true;
+  }
   const double radius = settings.parameters.ball.radius;
   for (std::size_t i = 0; i < balls.size(); ++i) {
     try {

@@ -334,9 +334,11 @@ TEST(Simulator, JawTooHighForTheBallIsRejectedUpFront) {
 }
 
 // simulate() in a loop over one scenario checks its table and settings once
-// (per thread; validate_simulation_input keeps the last ones that passed),
-// and still the balls every time, and a table or settings that changed,
-// even to an invalid value and back, are checked again.
+// (per thread; validate_simulation_input keeps the last ones that passed, and
+// the positions of the last balls that passed), and still the balls every
+// time (a ball's place on the table again only where it moved), and a table
+// or settings that changed, even to an invalid value and back, are checked
+// again.
 TEST(Simulator, ValidationOfAnUnchangedTableAndSettingsIsNotRepeatedButStillCatchesChanges) {
   Scenario s = default_scenario();
   const std::vector<SimulationBall> balls = balls_after_strike(s);
@@ -347,6 +349,9 @@ TEST(Simulator, ValidationOfAnUnchangedTableAndSettingsIsNotRepeatedButStillCatc
   // The balls are checked on every call.
   std::vector<SimulationBall> bad_balls = balls;
   bad_balls[1].state.position = bad_balls[0].state.position;
+  EXPECT_THROW(simulate(s.table, bad_balls, s.settings), InvalidArgument);
+  bad_balls = balls;
+  bad_balls[0].state.position = {-0.5, 0.3};  // off the table: positions already checked are not checked again, others are
   EXPECT_THROW(simulate(s.table, bad_balls, s.settings), InvalidArgument);
   bad_balls = balls;
   bad_balls[0].state.velocity.x = std::nan("");

@@ -9,9 +9,16 @@
 #include "cueball/core/random.hpp"
 #include "cueball/games/game.hpp"
 #include "expect_invalid.hpp"
+#include "game_actions.hpp"
 
 namespace cueball {
 namespace {
+
+using test::aim_deg;
+using test::strike;
+using test::called;
+using test::diagonal_draw;
+using test::decide;
 
 constexpr double kDeg = std::numbers::pi / 180.0;
 constexpr int kBottomLeft = 0;  // pocket index of the bottom-left corner (pool_9ft)
@@ -34,14 +41,7 @@ GameState in_play(const std::vector<std::pair<int, Vec2>>& balls, std::array<Gro
   s.phase = GamePhase::play;
   s.ball_in_hand.reset();
   s.groups = groups;
-  s.table.balls.clear();
-  for (const auto& [id, p] : balls) {
-    SimulationBall b;
-    b.id = id;
-    b.name = id == 0 ? "cue" : std::to_string(id);
-    b.state.position = p;
-    s.table.balls.push_back(b);
-  }
+  test::place_balls(s, balls);
   s.on = expected_on(s);
   return s;
 }
@@ -57,35 +57,6 @@ GameState at_break(const std::vector<std::pair<int, Vec2>>& balls) {
   for (const SimulationBall& b : s.table.balls)
     if (b.id != 0) s.on.push_back(b.id);
   return s;
-}
-
-double aim_deg(Vec2 from, Vec2 to) { return std::atan2(to.y - from.y, to.x - from.x) / kDeg; }
-
-Action strike(double speed, double aim) {
-  Action a;
-  a.strike.speed = speed;
-  a.strike.aim_deg = aim;
-  return a;
-}
-
-Action called(Action a, int ball, int pocket) {
-  a.called_ball = ball;
-  a.called_pocket = pocket;
-  return a;
-}
-
-// A draw shot along the bottom-left diagonal: the first ball on it drops,
-// the cue ball stays out.
-Action diagonal_draw(Vec2 from, Vec2 to) {
-  Action a = strike(2.0, aim_deg(from, to));
-  a.strike.height = -0.3;
-  return a;
-}
-
-Action decide(Decision d) {
-  Action a;
-  a.decision = d;
-  return a;
 }
 
 TEST(EightBall, NewGameIsARackBrokenFromTheKitchen) {

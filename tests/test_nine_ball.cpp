@@ -8,9 +8,13 @@
 #include "cueball/core/random.hpp"
 #include "cueball/games/game.hpp"
 #include "expect_invalid.hpp"
+#include "game_actions.hpp"
 
 namespace cueball {
 namespace {
+
+using test::aim_deg;
+using test::strike;
 
 constexpr double kDeg = std::numbers::pi / 180.0;
 
@@ -19,28 +23,12 @@ GameState in_play(const std::vector<std::pair<int, Vec2>>& balls) {
   GameState s = new_game(default_config(GameKind::nine_ball));
   s.phase = GamePhase::play;
   s.ball_in_hand.reset();
-  s.table.balls.clear();
-  for (const auto& [id, p] : balls) {
-    SimulationBall b;
-    b.id = id;
-    b.name = id == 0 ? "cue" : std::to_string(id);
-    b.state.position = p;
-    s.table.balls.push_back(b);
-  }
+  test::place_balls(s, balls);
   int lowest = 99;
   for (const auto& [id, p] : balls)
     if (id != 0) lowest = std::min(lowest, id);
   s.on = {lowest};
   return s;
-}
-
-double aim_deg(Vec2 from, Vec2 to) { return std::atan2(to.y - from.y, to.x - from.x) / kDeg; }
-
-Action strike(double speed, double aim) {
-  Action a;
-  a.strike.speed = speed;
-  a.strike.aim_deg = aim;
-  return a;
 }
 
 // The bottom-left corner pocket's centre and a straight line into it.

@@ -11,9 +11,13 @@
 #include "cueball/core/random.hpp"
 #include "cueball/games/game.hpp"
 #include "expect_invalid.hpp"
+#include "game_actions.hpp"
 
 namespace cueball {
 namespace {
+
+using test::aim_deg;
+using test::strike;
 
 constexpr double kDeg = std::numbers::pi / 180.0;
 constexpr int kYellow = 16, kGreen = 17, kBrown = 18, kBlue = 19, kPink = 20, kBlack = 21;
@@ -63,15 +67,6 @@ GameState on_colour(GameState s) {
     if (b.id >= kYellow) s.on.push_back(b.id);
   s.colour_on = 0;
   return s;
-}
-
-double aim_deg(Vec2 from, Vec2 to) { return std::atan2(to.y - from.y, to.x - from.x) / kDeg; }
-
-Action strike(double speed, double aim) {
-  Action a;
-  a.strike.speed = speed;
-  a.strike.aim_deg = aim;
-  return a;
 }
 
 // A straight pot into the bottom-left corner: the object ball at (0.3, 0.3),

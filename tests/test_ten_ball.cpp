@@ -8,9 +8,16 @@
 #include "cueball/core/random.hpp"
 #include "cueball/games/game.hpp"
 #include "expect_invalid.hpp"
+#include "game_actions.hpp"
 
 namespace cueball {
 namespace {
+
+using test::aim_deg;
+using test::strike;
+using test::called;
+using test::diagonal_draw;
+using test::decide;
 
 constexpr double kDeg = std::numbers::pi / 180.0;
 constexpr int kBottomLeft = 0;  // pocket index of the bottom-left corner (pool_9ft)
@@ -20,48 +27,12 @@ GameState in_play(const std::vector<std::pair<int, Vec2>>& balls) {
   GameState s = new_game(default_config(GameKind::ten_ball));
   s.phase = GamePhase::play;
   s.ball_in_hand.reset();
-  s.table.balls.clear();
-  for (const auto& [id, p] : balls) {
-    SimulationBall b;
-    b.id = id;
-    b.name = id == 0 ? "cue" : std::to_string(id);
-    b.state.position = p;
-    s.table.balls.push_back(b);
-  }
+  test::place_balls(s, balls);
   int lowest = 99;
   for (const auto& [id, p] : balls)
     if (id != 0) lowest = std::min(lowest, id);
   s.on = {lowest};
   return s;
-}
-
-double aim_deg(Vec2 from, Vec2 to) { return std::atan2(to.y - from.y, to.x - from.x) / kDeg; }
-
-Action strike(double speed, double aim) {
-  Action a;
-  a.strike.speed = speed;
-  a.strike.aim_deg = aim;
-  return a;
-}
-
-Action called(Action a, int ball, int pocket) {
-  a.called_ball = ball;
-  a.called_pocket = pocket;
-  return a;
-}
-
-// A draw shot along the bottom-left diagonal: the first ball on it drops,
-// the cue ball stays out.
-Action diagonal_draw(Vec2 from, Vec2 to) {
-  Action a = strike(2.0, aim_deg(from, to));
-  a.strike.height = -0.3;
-  return a;
-}
-
-Action decide(Decision d) {
-  Action a;
-  a.decision = d;
-  return a;
 }
 
 TEST(TenBall, NewGameIsATriangleOfTenBrokenFromTheKitchen) {

@@ -20,9 +20,12 @@
 #include "cueball/games/game.hpp"
 #include "cueball/table/placement.hpp"
 #include "expect_invalid.hpp"
+#include "game_actions.hpp"
 
 namespace cueball {
 namespace {
+
+using test::strike;
 
 constexpr int kWhite = 0;
 constexpr int kYellow = 1;
@@ -45,13 +48,6 @@ GameState in_play(Vec2 white, Vec2 yellow, Vec2 red, int shooter = 0) {
 GameState layout(int shooter = 0) {
   if (shooter == 0) return in_play({0.5, 0.4}, {1.5, 0.7}, {2.2, 1.0}, 0);
   return in_play({1.5, 0.7}, {0.5, 0.4}, {2.2, 1.0}, 1);  // the same balls, yellow the cue ball
-}
-
-Action strike(double speed, double aim) {
-  Action a;
-  a.strike.speed = speed;
-  a.strike.aim_deg = aim;
-  return a;
 }
 
 // What the cue ball did: the first and second object balls it touched and

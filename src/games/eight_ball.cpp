@@ -262,17 +262,8 @@ GameState eight_ball_new_game(GameState base) {
 }
 
 LegalActions eight_ball_legal_actions(const GameState& state) {
-  LegalActions a;
-  a.player = state.to_shoot;
-  a.cue_ball = 0;
-  a.shoot = state.phase != GamePhase::decision;
-  if (!a.shoot) {
-    a.decisions = state.decisions;
-    return a;
-  }
-  a.on = state.on;
-  a.ball_in_hand = state.ball_in_hand;
-  a.cue_must_leave_kitchen = state.cue_must_leave_kitchen;
+  LegalActions a = base_legal_actions(state);
+  if (!a.shoot) return a;
   // WPA 3.3(b): no call on the break; every later shot is called (the file's header).
   a.call_required = state.phase == GamePhase::play;
   if (a.call_required) a.callable = state.on;

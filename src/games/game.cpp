@@ -230,6 +230,21 @@ void put_ball(Scenario& table, int id, Vec2 position) {
 
 bool on_table(const Scenario& table, int id) { return find_ball(table.balls, id) != nullptr; }
 
+LegalActions base_legal_actions(const GameState& state) {
+  LegalActions a;
+  a.player = state.to_shoot;
+  a.cue_ball = state.cue_ball();
+  a.shoot = state.phase != GamePhase::decision;
+  if (!a.shoot) {
+    a.decisions = state.decisions;
+    return a;
+  }
+  a.on = state.on;
+  a.ball_in_hand = state.ball_in_hand;
+  a.cue_must_leave_kitchen = state.cue_must_leave_kitchen;
+  return a;
+}
+
 Scenario table_after_shot(const ShotContext& shot) { return table_after(shot.shot, shot.after); }
 
 void end_game(GameState& next, Ruling& ruling, int winner, std::string reason) {

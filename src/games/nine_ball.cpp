@@ -112,16 +112,8 @@ GameState nine_ball_new_game(GameState base) {
 }
 
 LegalActions nine_ball_legal_actions(const GameState& state) {
-  LegalActions a;
-  a.player = state.to_shoot;
-  a.cue_ball = 0;
-  a.shoot = state.phase != GamePhase::decision;
-  if (!a.shoot) {
-    a.decisions = state.decisions;
-    return a;
-  }
-  a.on = state.on;
-  a.ball_in_hand = state.ball_in_hand;
+  LegalActions a = base_legal_actions(state);
+  if (!a.shoot) return a;
   a.push_out = state.push_out_available && state.phase == GamePhase::play;
   return a;
 }
@@ -165,17 +157,7 @@ Judgement nine_ball_judge_shot(const ShotContext& shot) {
 }
 
 Judgement nine_ball_decide(const GameState& state, Decision decision) {
-  Judgement j{{}, state};
-  j.next.phase = GamePhase::play;
-  j.next.decisions.clear();
-  if (decision == Decision::pass) {
-    j.next.to_shoot = opponent(state.to_shoot);
-    j.ruling.turn_over = true;
-    j.ruling.reason = "WPA 2.4: the push-out is passed back; its player shoots";
-  } else {
-    j.ruling.reason = "WPA 2.4: the push-out is accepted; the opponent shoots from here";
-  }
-  return j;
+  return play_or_pass(state, decision, "WPA 2.4");
 }
 
 }  // namespace cueball

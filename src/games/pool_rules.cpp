@@ -16,6 +16,20 @@ int lowest_object_ball(const Scenario& table) {
   return lowest;
 }
 
+Judgement play_or_pass(const GameState& state, Decision decision, const std::string& rule) {
+  Judgement j{{}, state};
+  j.next.phase = GamePhase::play;
+  j.next.decisions.clear();
+  if (decision == Decision::pass) {
+    j.next.to_shoot = opponent(state.to_shoot);
+    j.ruling.turn_over = true;
+    j.ruling.reason = rule + ": passed back; the other player shoots from here";
+  } else {
+    j.ruling.reason = rule + ": the table is accepted; the player deciding shoots from here";
+  }
+  return j;
+}
+
 void win_rack(GameState& next, Ruling& ruling, int winner, std::string reason) {
   of(next.scores, winner) += 1;
   end_game(next, ruling, winner, std::move(reason));

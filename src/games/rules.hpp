@@ -86,6 +86,12 @@ bool on_table(const Scenario& table, int id);
 /// removed (table_after, scenario.hpp).
 Scenario table_after_shot(const ShotContext& shot);
 
+/// What every discipline's legal actions start from: the player to act and
+/// the cue ball; in phase decision, shoot false and the open decisions;
+/// else the balls on, the ball-in-hand region and the kitchen rule as the
+/// state has them.
+LegalActions base_legal_actions(const GameState& state);
+
 /// The game ends: `winner` wins (scores[winner] += points_for_win when given).
 void end_game(GameState& next, Ruling& ruling, int winner, std::string reason);
 
@@ -93,6 +99,12 @@ void end_game(GameState& next, Ruling& ruling, int winner, std::string reason);
 
 /// The lowest-numbered object ball on the table (ids 1..15), or -1.
 int lowest_object_ball(const Scenario& table);
+
+/// 9-ball's and 10-ball's play-or-pass decision (after a push-out, WPA 2.4,
+/// 9.4; after a wrongful pot, 9.7): `pass` hands the shot to the other
+/// player, `play` keeps it with the player deciding; `reason` is the rule
+/// cited, completed with what the decision did.
+Judgement play_or_pass(const GameState& state, Decision decision, const std::string& rule);
 
 /// The pool games: `winner` wins the rack (scores[winner] += 1, end_game).
 void win_rack(GameState& next, Ruling& ruling, int winner, std::string reason);

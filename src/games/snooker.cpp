@@ -468,16 +468,8 @@ GameState snooker_new_game(GameState base) {
 }
 
 LegalActions snooker_legal_actions(const GameState& state) {
-  LegalActions a;
-  a.player = state.to_shoot;
-  a.cue_ball = 0;
-  a.shoot = state.phase != GamePhase::decision;
-  if (!a.shoot) {
-    a.decisions = state.decisions;
-    return a;
-  }
-  a.on = state.on;
-  a.ball_in_hand = state.ball_in_hand;
+  LegalActions a = base_legal_actions(state);
+  if (!a.shoot) return a;
   if (on_colour_after_red(state)) {
     a.nominate_required = true;  // WPBSA 3.3: the colour is nominated
     a.nominable = state.on;

@@ -161,16 +161,8 @@ GameState ten_ball_new_game(GameState base) {
 }
 
 LegalActions ten_ball_legal_actions(const GameState& state) {
-  LegalActions a;
-  a.player = state.to_shoot;
-  a.cue_ball = 0;
-  a.shoot = state.phase != GamePhase::decision;
-  if (!a.shoot) {
-    a.decisions = state.decisions;
-    return a;
-  }
-  a.on = state.on;
-  a.ball_in_hand = state.ball_in_hand;
+  LegalActions a = base_legal_actions(state);
+  if (!a.shoot) return a;
   a.push_out = state.push_out_available && state.phase == GamePhase::play;
   // WPA 9.5: every shot after the break is called; no call on the break.
   a.call_required = state.phase == GamePhase::play;
@@ -199,17 +191,7 @@ Judgement ten_ball_judge_shot(const ShotContext& shot) {
 }
 
 Judgement ten_ball_decide(const GameState& state, Decision decision) {
-  Judgement j{{}, state};
-  j.next.phase = GamePhase::play;
-  j.next.decisions.clear();
-  if (decision == Decision::pass) {
-    j.next.to_shoot = opponent(state.to_shoot);
-    j.ruling.turn_over = true;
-    j.ruling.reason = "WPA 9.4, 9.7: passed back; the other player shoots from here";
-  } else {
-    j.ruling.reason = "WPA 9.4, 9.7: the table is accepted; the player deciding shoots from here";
-  }
-  return j;
+  return play_or_pass(state, decision, "WPA 9.4, 9.7");
 }
 
 }  // namespace cueball

@@ -189,12 +189,7 @@ GameState three_cushion_new_game(GameState base) {
 }
 
 LegalActions three_cushion_legal_actions(const GameState& state) {
-  LegalActions a;
-  a.player = state.to_shoot;
-  a.cue_ball = state.cue_ball();
-  a.shoot = true;
-  a.on = state.on;
-  return a;
+  return base_legal_actions(state);  // no decisions, no ball in hand, no calls
 }
 
 Judgement three_cushion_judge_shot(const ShotContext& shot) {

@@ -49,7 +49,11 @@ std::string game_step_caption(const GameState& before, const GameStep& step) {
   if (step.action.decision) {
     out += to_string(*step.action.decision);
   } else {
-    out += ruling.pocketed.empty() ? "nothing potted" : join_balls(balls, ruling.pocketed) + " potted";
+    const bool pockets = !step.shot.table.pockets.empty();  // three-cushion has none
+    if (!ruling.pocketed.empty())
+      out += join_balls(balls, ruling.pocketed) + " potted";
+    else
+      out += pockets ? "nothing potted" : "played";
     if (ruling.push_out) out += "; push-out";
     if (ruling.foul) out += std::string("; foul: ") + to_string(*ruling.foul);
     if (ruling.miss) out += " (a miss)";

@@ -81,7 +81,7 @@ export function gameOutcome(game) {
   const who = game.winner === null ? null : `player ${game.winner + 1} (${game.players[game.winner]}) wins`;
   if (who && game.endReason) return `${who}: ${game.endReason}`;
   if (who) return who;
-  return game.endReason ? `no winner: ${game.endReason}` : 'no winner';
+  return game.endReason ? `no winner: ${game.endReason}` : 'no result yet';
 }
 
 /**

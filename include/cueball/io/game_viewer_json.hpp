@@ -14,7 +14,8 @@ namespace cueball {
 /// One line describing a step, e.g. "shot 3, player 1: 2, 5 potted; foul:
 /// scratch (cue ball pocketed (WPA 6.1))" or "shot 4, player 2: pass (...)":
 /// the shot's number (1-based, decisions counted), the player (1 or 2), what
-/// was potted, the foul, the points scored and the ruling's reason.
+/// was potted ("played" on a table without pockets), the foul, the points
+/// scored, the balls respotted and the ruling's reason.
 /// `before` is the state the step was played from.
 std::string game_step_caption(const GameState& before, const GameStep& step);
 

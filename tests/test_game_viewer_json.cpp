@@ -112,6 +112,13 @@ TEST(GameViewerJson, CaptionsNamePottedBallsAndFouls) {
   s.to_shoot = 1;
   s.shots = 3;
   EXPECT_EQ(game_step_caption(s, decision), "shot 4, player 2: pass (WPA 2.4)");
+  // three-cushion: no pockets, a point
+  const GameState carom = new_game(default_config(GameKind::three_cushion));
+  GameStep point;
+  point.shot = carom.table;
+  point.ruling.points = {1, 0};
+  point.ruling.reason = "UMB Art. 83";
+  EXPECT_EQ(game_step_caption(carom, point), "shot 1, player 1: played; +1 to player 1 (UMB Art. 83)");
 }
 
 TEST(GameViewerJson, AnEmptyGameHasNoShots) {

@@ -172,6 +172,8 @@ void emit(const Report& report, bool json, std::ostream& out, std::ostream& err)
   for (const std::string& w : report.warnings()) err << "cueball: warning: " << w << '\n';
 }
 
+Command add_game_command(CLI::App& app);  // cli/command_game.cpp
+
 int run(int argc, const char* const* argv, std::ostream& out, std::ostream& err) {
   CLI::App app{kDescription, "cueball"};
   app.require_subcommand(1);
@@ -195,6 +197,7 @@ int run(int argc, const char* const* argv, std::ostream& out, std::ostream& err)
   add("plan-shot", add_plan_shot_command(app));
   add("view", add_view_command(app));
   add("calibrate", add_calibrate_command(app));
+  add("game", add_game_command(app));
 
   // Every option that takes a value: an empty value (--v0 "") is an error,
   // not 0, and so are control characters and values longer than a path.
@@ -254,6 +257,9 @@ int run(int argc, const char* const* argv, std::ostream& out, std::ostream& err)
   } catch (const UsageError& e) {
     err << "cueball: error: " << one_line(e.what()) << '\n';
     return 2;
+  } catch (const CheckFailed& e) {
+    err << "cueball: " << one_line(e.what()) << '\n';
+    return 1;
   } catch (const InvalidArgument& e) {
     // A JSON path (scenario.balls[1].position) is named in the message
     // itself; a library field (mu_s) is shown as the flag that sets it

@@ -4,8 +4,16 @@
 #pragma once
 
 #include <iosfwd>
+#include <stdexcept>
 
 namespace cueball::cli {
+
+/// A check a command ran found a difference (`game replay`): its message
+/// printed as one line, exit status 1.
+class CheckFailed : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
 
 int run(int argc, const char* const* argv, std::ostream& out, std::ostream& err);
 

@@ -69,8 +69,8 @@ def check_probe(found, root, version, what):
         sys.exit(f"FAIL {what}: cueball.__version__ {found['version']!r}, expected {version!r}")
     if found["events"] < 1 or found["pockets"].get("1") != "top-right":
         sys.exit(f"FAIL {what}: the cut shot gave {found}")
-    if found["typed"] != ["_cueball.pyi", "py.typed"]:
-        sys.exit(f"FAIL {what}: the package's type information is {found['typed']}, not _cueball.pyi and py.typed")
+    if found["typed"] != ["_cueball.pyi", "games.pyi", "py.typed"]:
+        sys.exit(f"FAIL {what}: the package's type information is {found['typed']}, not _cueball.pyi, games.pyi and py.typed")
 
 
 def main():

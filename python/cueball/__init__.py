@@ -7,6 +7,8 @@ Pure-Python layers sit beside it and are imported on demand:
 
 - ``cueball.dask``: ``simulate_many`` in chunks across a Dask distributed
   cluster (Debian's python3-distributed), bit-identical to a local run.
+- ``cueball.games``: games by their rules (states, actions, play, agents,
+  records), the extension's submodule ``games`` (stubs: games.pyi).
 - ``cueball._arguments``: applied at import, names an argument of the wrong
   Python type (``cueball.InvalidArgumentType``) where pybind11 would list every
   signature.
@@ -24,5 +26,10 @@ from ._cueball import *  # noqa: E402,F401,F403 (the extension's public API is t
 from ._cueball import __doc__ as _extension_doc
 from ._cueball import __version__ as __version__
 from ._cueball import _time_run_scenario as _time_run_scenario
+from . import games as games  # the extension's submodule, put here by the * import above
+
+import sys as _sys
+
+_sys.modules[__name__ + ".games"] = games  # `import cueball.games` and `from cueball.games import ...`
 
 __doc__ = f"{__doc__}\n{_extension_doc}"

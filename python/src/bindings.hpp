@@ -49,6 +49,7 @@ void bind_scenario(py::module_& m);      // scenario.cpp: Scenario, ShotStrike, 
 void bind_shot_planner(py::module_& m);  // shot_planner.cpp: plan_shot
 void bind_simulation(py::module_& m);    // simulation.cpp: simulate
 void bind_batch(py::module_& m);         // batch.cpp: simulate_batch
+void bind_games(py::module_& m);         // games.cpp: the submodule games (states, actions, play, agents, records)
 #ifdef CUEBALL_HAVE_SIMULATE_MANY
 void bind_simulate_many(py::module_& m);  // simulate_many.cpp (defined there, when it exists)
 #endif

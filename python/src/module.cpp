@@ -55,6 +55,7 @@ PYBIND11_MODULE(_cueball, m) {
   bind_simulation(m);
   bind_batch(m);
   bind_calibration(m);
+  bind_games(m);
 #ifdef CUEBALL_HAVE_SIMULATE_MANY
   bind_simulate_many(m);
 #endif

@@ -3,6 +3,7 @@ class members, the same parameter names; and the typed program that
 `mypy --strict` checks against the stubs (ctest python_stubs) runs."""
 
 import ast
+import importlib
 import inspect
 import pathlib
 import re
@@ -13,12 +14,15 @@ import cueball
 from cueball import _cueball
 
 STUB = pathlib.Path(__file__).resolve().parents[1] / "cueball" / "_cueball.pyi"
+# The extension's submodule games has its own stub (cueball/games.pyi).
+GAMES_STUB = STUB.with_name("games.pyi")
+SUBMODULES = {"games"}
 # Names only for type checkers: the dicts' TypedDicts and the private aliases.
 STUB_ONLY = {"EventArrays", "BallArrays", "SegmentArrays", "StateArrays", "ManyOutcomes", "_Float", "_Int", "_Vec", "_Scenario"}
 
 
-def stub_tree():
-    return ast.parse(STUB.read_text())
+def stub_tree(path=STUB):
+    return ast.parse(path.read_text())
 
 
 def defined_names(body):
@@ -47,14 +51,14 @@ def module_parameters(obj):
     return re.findall(r"(?:^|[(,]\s*)(\w+):", inside)
 
 
-def public(names):
-    return {n for n in names if not (n.startswith("__") and n.endswith("__"))}
+def public(names, module=None):
+    return {n for n in names if not (n.startswith("__") and n.endswith("__")) and not (module is _cueball and n in SUBMODULES)}
 
 
 class StubTest(unittest.TestCase):
     def test_every_name_of_the_module_is_in_the_stub_and_back(self):
         stub = defined_names(stub_tree().body)
-        module = public(dir(_cueball))
+        module = public(dir(_cueball), _cueball)
         self.assertEqual(sorted(module - set(stub)), [], "in the module, missing from _cueball.pyi")
         self.assertEqual(sorted(set(stub) - module - STUB_ONLY - {"__version__"}), [], "in _cueball.pyi, not in the module")
         self.assertIn("__version__", stub)
@@ -63,16 +67,26 @@ class StubTest(unittest.TestCase):
     def test_the_package_is_the_extension_and_its_python_layer(self):
         for name in sorted(public(dir(_cueball))):
             self.assertIs(getattr(cueball, name), getattr(_cueball, name), name)
+        self.assertIs(importlib.import_module("cueball.games"), _cueball.games)
         self.assertIs(cueball._time_run_scenario, _cueball._time_run_scenario)
         self.assertEqual(cueball.__version__, _cueball.__version__)
         package = pathlib.Path(cueball.__file__).parent
-        for name in ("py.typed", "_cueball.pyi", "dask.py"):
+        for name in ("py.typed", "_cueball.pyi", "games.pyi", "dask.py"):
             self.assertTrue((package / name).is_file(), name)
 
+    def test_the_games_stub_has_the_submodules_names(self):
+        stub = defined_names(stub_tree(GAMES_STUB).body)
+        module = public(dir(_cueball.games))
+        self.assertEqual(sorted(module - set(stub)), [], "in cueball.games, missing from games.pyi")
+        self.assertEqual(sorted(set(stub) - module - {"_Region"}), [], "in games.pyi, not in cueball.games")
+
     def test_class_members_and_parameters_agree(self):
-        stub = defined_names(stub_tree().body)
-        for name in sorted(public(dir(_cueball))):
-            obj = getattr(_cueball, name)
+        self.check_members(_cueball, defined_names(stub_tree().body))
+        self.check_members(_cueball.games, defined_names(stub_tree(GAMES_STUB).body))
+
+    def check_members(self, module, stub):
+        for name in sorted(public(dir(module), module)):
+            obj = getattr(module, name)
             node = stub[name]
             with self.subTest(name=name):
                 if inspect.isclass(obj):

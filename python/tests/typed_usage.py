@@ -10,6 +10,7 @@ from numpy.typing import NDArray
 
 import cueball
 import cueball.dask
+from cueball import games
 
 CUT_SHOT = pathlib.Path(__file__).resolve().parents[2] / "docs" / "example-cut-shot.json"
 
@@ -95,6 +96,16 @@ def objects() -> None:
     data = cueball.CushionFitData([cueball.HeadOnRebound(v, 0.9 * v) for v in (0.5, 1.0, 1.5)])
     fit: cueball.CushionFit = cueball.fit_cushion(data, options=cueball.CushionFitOptions(grid_step=0.1))
     assert fit.poorly_separated and 0.0 < fit.restitution <= 1.0
+
+    game: games.GameState = games.new_game(games.default_config("nine_ball"), seed=1)
+    legal: dict[str, object] = games.legal_actions(game)
+    played: games.GameStep = games.play(game, games.Action(speed=8.0, target=1, place=(0.5, 0.6)), seed=2)
+    foul: object = played.ruling["foul"]
+    after_break: games.GameState = games.GameState.from_json(played.next.to_json())
+    assert legal["shoot"] and after_break == played.next and game.shots == 0 and foul in (None, *[str(foul)])
+    record: games.GameRecord = games.play_game("nine_ball", ("random", "random"), seed=3)
+    records: list[games.GameRecord] = games.records_from_json(games.records_to_json([record]))
+    assert records[0].replay() is None and record.end.over
 
 
 if __name__ == "__main__":

@@ -3,6 +3,8 @@
 // public headers.
 #pragma once
 
+#include <optional>
+
 #include <nlohmann/json.hpp>
 
 #include "cueball/simulation/scenario.hpp"
@@ -23,6 +25,10 @@ nlohmann::json state_json(const BallState& s);
 nlohmann::json parameters_json(const Parameters& p);
 /// The scenario's "cue", in the units it was given in.
 nlohmann::json cue_json(const Scenario& s);
+/// A value u in the scenario's units (degrees, ball radii) whose u * unit is
+/// x exactly when there is one near x / unit (`given` first): what the
+/// scenario writer writes for angles and tip offsets (scenario_json.cpp).
+double in_units(double x, double unit, std::optional<double> given);
 /// scenario_to_json() as a value.
 nlohmann::json scenario_json(const Scenario& s);
 

@@ -187,13 +187,21 @@ std::vector<PlacedBall> rack_eight_ball(const Table& table, const RackOptions& o
 }
 
 std::vector<PlacedBall> rack_snooker(const Table& table, const RackOptions& options) {
+  return rack_snooker_with_reds(table, 15, options);
+}
+
+std::vector<PlacedBall> rack_snooker_with_reds(const Table& table, int reds_in_rack, const RackOptions& options) {
   validate(table);
   validate(options);
+  if (reds_in_rack != 6 && reds_in_rack != 10 && reds_in_rack != 15)
+    throw InvalidArgument("reds", std::to_string(reds_in_rack) + " is not one of 6, 10, 15");
   const SnookerSpots s = snooker_spots(table);
   const double R = table.ball.radius;
+  // A full triangle of 3, 4 or 5 rows (1+2+3 = 6, +4 = 10, +5 = 15 reds).
+  const int rows = reds_in_rack == 6 ? 3 : reds_in_rack == 10 ? 4 : 5;
   std::vector<RackBall> reds;
   int id = 1;
-  for (int row = 0; row < 5; ++row) {
+  for (int row = 0; row < rows; ++row) {
     for (int col = 0; col <= row; ++col, ++id) reds.push_back({id, "red" + std::to_string(id), {row, col}});
   }
   // In the D, between the brown and yellow spots.

@@ -225,7 +225,7 @@ struct LegalActions {
 
 /// Fouls, named as the rule books name them.
 enum class Foul : char {
-  scratch,                ///< cue ball pocketed (WPA 6.1; WPBSA 3.12(a)(vi) as "in-off")
+  scratch,                ///< cue ball pocketed (WPA 6.1; snooker's "in-off", a foul of WPBSA section 3)
   wrong_ball_first,       ///< the first ball contacted is not on (WPA 6.2; WPBSA 3.12(a)(ii))
   no_contact,             ///< the cue ball touched no ball (WPA 6.2; WPBSA 3.12; UMB)
   no_rail_after_contact,  ///< no ball to a rail or pocketed after the contact (WPA 6.3)

@@ -100,4 +100,9 @@ std::vector<PlacedBall> rack_ten_ball(const Table& table, const RackOptions& opt
 /// (WPBSA Rules, section 2 "Positioning of balls").
 std::vector<PlacedBall> rack_snooker(const Table& table, const RackOptions& options = {});
 
+/// rack_snooker() with `reds` reds: 15 as above; 6 or 10 (the short games)
+/// a triangle of 3 or 4 rows, ids 1..reds, the apex where the 15's is.
+/// InvalidArgument("reds", ...) for any other count.
+std::vector<PlacedBall> rack_snooker_with_reds(const Table& table, int reds, const RackOptions& options = {});
+
 }  // namespace cueball

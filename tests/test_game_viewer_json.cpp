@@ -7,6 +7,7 @@
 #include <nlohmann/json.hpp>
 
 #include "cueball/agents/agent.hpp"
+#include "cueball/agents/match.hpp"
 #include "cueball/games/break_shot.hpp"
 #include "cueball/games/game.hpp"
 #include "cueball/io/game_viewer_json.hpp"
@@ -105,20 +106,41 @@ TEST(GameViewerJson, CaptionsNamePottedBallsAndFouls) {
   step.ruling.pocketed = {0, 9};
   step.ruling.foul = Foul::scratch;
   step.ruling.reason = "cue ball pocketed (WPA 6.1)";
-  EXPECT_EQ(game_step_caption(s, step), "shot 1, player 1: cue, 9 potted; foul: scratch (cue ball pocketed (WPA 6.1))");
+  EXPECT_EQ(game_step_caption(s, step), "shot 1, player 0: cue, 9 potted; foul: scratch (cue ball pocketed (WPA 6.1))");
   GameStep decision;
   decision.action.decision = Decision::pass;
   decision.ruling.reason = "WPA 2.4";
   s.to_shoot = 1;
   s.shots = 3;
-  EXPECT_EQ(game_step_caption(s, decision), "shot 4, player 2: pass (WPA 2.4)");
+  EXPECT_EQ(game_step_caption(s, decision), "shot 4, player 1: pass (WPA 2.4)");
   // three-cushion: no pockets, a point
   const GameState carom = new_game(default_config(GameKind::three_cushion));
   GameStep point;
   point.shot = carom.table;
   point.ruling.points = {1, 0};
   point.ruling.reason = "UMB Art. 83";
-  EXPECT_EQ(game_step_caption(carom, point), "shot 1, player 1: played; +1 to player 1 (UMB Art. 83)");
+  EXPECT_EQ(game_step_caption(carom, point), "shot 1, player 0: played; +1 to player 0 (UMB Art. 83)");
+}
+
+TEST(GameViewerJson, ARecordReplaysToTheSameDocument) {
+  // a whole game between agents (play_game), its record re-played
+  GameConfig config = default_config(GameKind::nine_ball);
+  config.max_shots = 8;
+  const GameRecord record = play_game(config, {agent(AgentKind::ghost_ball), agent(AgentKind::random)}, 5);
+  std::vector<GameStep> steps;
+  GameState s = record.start;
+  for (const RecordedStep& r : record.steps) {
+    steps.push_back(play(s, r.action, r.seed));
+    ASSERT_EQ(steps.back().next, r.state);
+    s = steps.back().next;
+  }
+  const std::string doc = game_viewer_json(record);
+  EXPECT_EQ(doc, game_viewer_json(record.start, steps, record.players));
+  const auto game = nlohmann::json::parse(doc).at("game");
+  EXPECT_EQ(game.at("shots").size(), record.steps.size());
+  EXPECT_EQ(game.at("players"), nlohmann::json::array({"ghost_ball", "random"}));
+  const GameState& end = record.steps.back().state;
+  EXPECT_EQ(game.at("end_reason"), end.end_reason);
 }
 
 TEST(GameViewerJson, AnEmptyGameHasNoShots) {

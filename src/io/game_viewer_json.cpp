@@ -42,7 +42,7 @@ std::string table_as_it_stands(const GameState& state) {
 }  // namespace
 
 std::string game_step_caption(const GameState& before, const GameStep& step) {
-  const int player = before.to_shoot + 1;
+  const int player = before.to_shoot;  // 0 or 1, as game.hpp and the CLI number them
   const Ruling& ruling = step.ruling;
   const std::vector<SimulationBall>& balls = step.shot.balls.empty() ? before.table.balls : step.shot.balls;
   std::string out = "shot " + std::to_string(before.shots + 1) + ", player " + std::to_string(player) + ": ";
@@ -60,7 +60,7 @@ std::string game_step_caption(const GameState& before, const GameStep& step) {
   }
   for (std::size_t p = 0; p < ruling.points.size(); ++p) {
     const int pts = ruling.points[p];
-    if (pts != 0) out += "; " + std::string(pts > 0 ? "+" : "") + std::to_string(pts) + " to player " + std::to_string(p + 1);
+    if (pts != 0) out += "; " + std::string(pts > 0 ? "+" : "") + std::to_string(pts) + " to player " + std::to_string(p);
   }
   if (!ruling.respotted.empty()) out += "; respotted " + join_balls(balls, ruling.respotted);
   if (!ruling.reason.empty()) out += " (" + ruling.reason + ")";
@@ -94,6 +94,17 @@ std::string game_viewer_json(const GameState& start, const std::vector<GameStep>
   game["end_reason"] = last.end_reason;
   game["shots"] = std::move(shots);
   return Json{{"game", std::move(game)}}.dump(indent);
+}
+
+std::string game_viewer_json(const GameRecord& record, int indent) {
+  std::vector<GameStep> steps;
+  steps.reserve(record.steps.size());
+  GameState state = record.start;
+  for (const RecordedStep& recorded : record.steps) {
+    steps.push_back(play(state, recorded.action, recorded.seed));
+    state = steps.back().next;
+  }
+  return game_viewer_json(record.start, steps, record.players, indent);
 }
 
 }  // namespace cueball

@@ -78,7 +78,7 @@ export function kindLabel(kind) {
 
 /** The line under the list: who won and why, or how the game ended. */
 export function gameOutcome(game) {
-  const who = game.winner === null ? null : `player ${game.winner + 1} (${game.players[game.winner]}) wins`;
+  const who = game.winner === null ? null : `player ${game.winner} (${game.players[game.winner]}) wins`;
   if (who && game.endReason) return `${who}: ${game.endReason}`;
   if (who) return who;
   return game.endReason ? `no winner: ${game.endReason}` : 'no result yet';
@@ -101,7 +101,7 @@ export class GameList {
     el.gamePanel.hidden = false;
     document.getElementById('app').classList.add('has-game');
     el.gameTitle.textContent = `${kindLabel(game.kind)}: ${game.players
-      .map((p, i) => `player ${i + 1} (${p})`)
+      .map((p, i) => `player ${i} (${p})`)
       .join(' v ')}`;
     const rows = document.createDocumentFragment();
     for (const entry of game.entries) {

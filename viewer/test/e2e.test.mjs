@@ -369,10 +369,10 @@ describe('viewer in Chromium', { timeout: TIMEOUT }, () => {
         winner: 1,
         end_reason: 'the 9 potted legally (WPA 2.1)',
         shots: [
-          { player: 0, caption: 'shot 1, player 1: nothing potted', scores: [0, 0], foul: null, result: breakPage.result },
-          { player: 1, caption: 'shot 2, player 2: 1 potted; foul: scratch (WPA 6.1)', scores: [0, 0], foul: 'scratch', result: cut.result },
-          { player: 0, caption: 'shot 3, player 1: pass (WPA 2.4)', scores: [0, 0], decision: 'pass' },
-          { player: 1, caption: 'shot 4, player 2: 9 potted (WPA 2.1)', scores: [0, 1], foul: null, result: breakPage.result },
+          { player: 0, caption: 'shot 1, player 0: nothing potted', scores: [0, 0], foul: null, result: breakPage.result },
+          { player: 1, caption: 'shot 2, player 1: 1 potted; foul: scratch (WPA 6.1)', scores: [0, 0], foul: 'scratch', result: cut.result },
+          { player: 0, caption: 'shot 3, player 0: pass (WPA 2.4)', scores: [0, 0], decision: 'pass' },
+          { player: 1, caption: 'shot 4, player 1: 9 potted (WPA 2.1)', scores: [0, 1], foul: null, result: breakPage.result },
         ],
       },
     };
@@ -386,7 +386,7 @@ describe('viewer in Chromium', { timeout: TIMEOUT }, () => {
     assert.equal(await shot(), 0);
     assert.equal(await duration(), breakPage.result.end_time);
     assert.match(await rows.nth(0).getAttribute('class'), /current/);
-    assert.match(await page.locator('[data-testid=game-result]').innerText(), /player 2 \(ghost_ball\) wins/);
+    assert.match(await page.locator('[data-testid=game-result]').innerText(), /player 1 \(ghost_ball\) wins/);
     assert.match(await page.locator('[data-testid=shot-1]').innerText(), /foul: scratch/);
 
     // a click on a row loads its result
@@ -409,7 +409,7 @@ describe('viewer in Chromium', { timeout: TIMEOUT }, () => {
     await page.locator('body').press(']');
     assert.equal(await shot(), 2);
     assert.equal(await hook(page, () => window.cueballViewer.time()), cut.result.end_time);
-    assert.equal(await page.locator('[data-testid=shot-caption]').innerText(), 'shot 3, player 1: pass (WPA 2.4)');
+    assert.equal(await page.locator('[data-testid=shot-caption]').innerText(), 'shot 3, player 0: pass (WPA 2.4)');
     assert.match(await rows.nth(2).getAttribute('class'), /decision/);
     const centre = await ballOnScreen(page, 0);
     const cue = cut.result.balls.find((b) => b.id === 0);
@@ -425,9 +425,31 @@ describe('viewer in Chromium', { timeout: TIMEOUT }, () => {
     await close();
   });
 
+  test('a game page written by `cueball game play --html`: every shot loads, decisions and snooker too', async () => {
+    for (const [kind, players] of [['nine_ball', 'ghost_ball,random'], ['snooker', 'ghost_ball,ghost_ball']]) {
+      const html = join(dir, `played-${kind}.html`);
+      cueball(['game', 'play', '--game', kind, '--players', players, '--seed', '2', '--html', html]);
+      const text = readFileSync(html, 'utf8');
+      const open = '<script type="application/json" id="cueball-result">';
+      const from = text.indexOf(open) + open.length;
+      const doc = JSON.parse(text.slice(from, text.indexOf('</script>', from)));
+      const shots = doc.game.shots;
+      const { page, close } = await openPage(html);
+      assert.equal(await page.locator('[data-testid=shot-list] li').count(), shots.length, `${kind}: one row per shot`);
+      // every shot, by ]: its own result (a decision: the table at rest, duration 0)
+      for (let i = 0; i < shots.length; ++i) {
+        if (i > 0) await page.locator('body').press(']');
+        assert.equal(await hook(page, () => window.cueballViewer.shot()), i);
+        assert.equal(await hook(page, () => window.cueballViewer.duration()), shots[i].result.end_time, `${kind} shot ${i}`);
+      }
+      assert.equal(await page.locator('[data-testid=shot-caption]').innerText(), shots[shots.length - 1].caption);
+      await close();
+    }
+  });
+
   test('a game page in a narrow window keeps the table visible', async () => {
     const game = { game: { kind: 'nine_ball', players: ['a', 'b'], winner: null, end_reason: '', shots: [
-      { player: 0, caption: 'shot 1, player 1: nothing potted', scores: [0, 0], foul: null, result: breakPage.result },
+      { player: 0, caption: 'shot 1, player 0: nothing potted', scores: [0, 0], foul: null, result: breakPage.result },
     ] } };
     const html = join(dir, 'game-narrow.html');
     writeFileSync(html, fillTemplate(readFileSync(TEMPLATE_PATH, 'utf8'), JSON.stringify(game)));

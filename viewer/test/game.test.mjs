@@ -44,7 +44,7 @@ describe('game document', () => {
   });
 
   test('the outcome names the winner and the reason', () => {
-    assert.equal(gameOutcome(loadGame(doc([], { winner: 1, end_reason: 'the 9 (WPA 2.1)' }))), 'player 2 (ghost_ball) wins: the 9 (WPA 2.1)');
+    assert.equal(gameOutcome(loadGame(doc([], { winner: 1, end_reason: 'the 9 (WPA 2.1)' }))), 'player 1 (ghost_ball) wins: the 9 (WPA 2.1)');
     assert.equal(gameOutcome(loadGame(doc([], { end_reason: 'max_shots reached' }))), 'no winner: max_shots reached');
     assert.equal(gameOutcome(loadGame(doc([]))), 'no result yet');
   });

@@ -8,12 +8,14 @@
 #include <vector>
 
 #include "cueball/games/game.hpp"
+#include "cueball/games/record.hpp"
 
 namespace cueball {
 
-/// One line describing a step, e.g. "shot 3, player 1: 2, 5 potted; foul:
-/// scratch (cue ball pocketed (WPA 6.1))" or "shot 4, player 2: pass (...)":
-/// the shot's number (1-based, decisions counted), the player (1 or 2), what
+/// One line describing a step, e.g. "shot 3, player 0: 2, 5 potted; foul:
+/// scratch (WPA 6.1: the cue ball was pocketed)" or "shot 4, player 1: pass
+/// (...)": the shot's number (from 1, decisions counted, as `cueball game
+/// shoot` counts), the player (0 or 1, as game.hpp and the CLI), what
 /// was potted ("played" on a table without pockets), the foul, the points
 /// scored, the balls respotted and the ruling's reason.
 /// `before` is the state the step was played from.
@@ -31,5 +33,11 @@ std::string game_step_caption(const GameState& before, const GameStep& step);
 /// game goes on). `indent` as result_to_json (-1: one line).
 std::string game_viewer_json(const GameState& start, const std::vector<GameStep>& steps,
                              const std::array<std::string, 2>& players, int indent = -1);
+
+/// The game document of a record (games/record.hpp: `cueball game play
+/// --record`): its steps re-played from record.start with each step's action
+/// and seed (play() is deterministic, so the shots are the recorded ones),
+/// with the record's players.
+std::string game_viewer_json(const GameRecord& record, int indent = -1);
 
 }  // namespace cueball

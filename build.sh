@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
 # cueball's one entry point for people and CI, on Debian bookworm as root:
 #   ./build.sh demo   install what is missing, build (Release), run the main job
-#   ./build.sh test   the same, then every test (Release), then the whole suite
-#                     again under AddressSanitizer + UndefinedBehaviorSanitizer,
+#   ./build.sh test   the same, then every test (Release), then the suite
+#                     again under AddressSanitizer + UndefinedBehaviorSanitizer
+#                     (without the long pure-numerics tests; see below),
 #                     then a bounded libFuzzer run of the scenario and table readers;
 #                     the Release suite includes the HTML viewer's tests in
 #                     headless Chromium (viewer/, npm packages from its lockfile)
@@ -48,6 +49,11 @@ case "$mode" in
     build release -DCUEBALL_VIEWER_TESTS=ON -DCUEBALL_BUILD_PYTHON=ON
     ctest --preset release
     build asan -DCUEBALL_BUILD_PYTHON=ON
+    # The sanitizer run checks memory and undefined behaviour, not numbers:
+    # it leaves out the tests labelled long_numerics (tests/long_numerics.cmake:
+    # long accuracy and convergence checks, which the Release suite above has
+    # run in full) and runs a tenth of the cases of the long random scans
+    # (tests/support/test_scale.hpp); every code path they take still runs in it.
     ctest --preset asan
     build fuzz
     fuzz/run.sh build/fuzz 30

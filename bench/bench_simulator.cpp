@@ -113,6 +113,38 @@ BENCHMARK_CAPTURE(BM_OneBallCushions, han_2005, default_cushion_settings(Cushion
 BENCHMARK_CAPTURE(BM_OneBallCushions, stronge_compliant, default_cushion_settings(CushionModel::stronge_compliant))
     ->Unit(benchmark::kMicrosecond);
 
+// simulate() in a loop over one scenario against simulate_unchecked() of the
+// same shot, alternately in each iteration (issue 29: validation that costs
+// nothing in a loop; goal checked_over_unchecked <= 1.1): the one-ball
+// five-rail shot (arg 0), the 9-ball break (arg 1) and a planner's cut shot
+// among three other balls (arg 2).
+void BM_SimulateLoop(benchmark::State& st) {
+  const Scenario s = st.range(0) == 0 ? scenario_from_json(R"({"table": "carom_10ft",
+      "balls": [{"id": 0, "position": [0.7, 0.4]}],
+      "cue": {"ball": 0, "aim_deg": 27, "speed": 3.0, "side": 0.3, "height": 0.2}})")
+                     : st.range(0) == 1 ? default_scenario()
+                                        : scenario_from_json(R"({"table": "pool_9ft",
+      "balls": [{"id": 0, "position": [0.8, 0.4]}, {"id": 1, "position": [1.6, 0.7]}, {"id": 2, "position": [1.2, 1.0]},
+                {"id": 3, "position": [2.0, 0.3]}, {"id": 4, "position": [0.5, 1.0]}],
+      "cue": {"ball": 0, "aim_deg": 18, "speed": 2.0}})");
+  const std::vector<SimulationBall> balls = balls_after_strike(s);
+  double checked_s = 0.0, unchecked_s = 0.0;
+  for (auto _ : st) {
+    const auto t0 = std::chrono::steady_clock::now();
+    benchmark::DoNotOptimize(simulate(s.table, balls, s.settings).end_time);
+    const auto t1 = std::chrono::steady_clock::now();
+    benchmark::DoNotOptimize(simulate_unchecked(s.table, balls, s.settings).end_time);
+    const auto t2 = std::chrono::steady_clock::now();
+    checked_s += std::chrono::duration<double>(t1 - t0).count();
+    unchecked_s += std::chrono::duration<double>(t2 - t1).count();
+  }
+  const double n = static_cast<double>(st.iterations());
+  st.counters["checked_us"] = 1e6 * checked_s / n;
+  st.counters["unchecked_us"] = 1e6 * unchecked_s / n;
+  st.counters["checked_over_unchecked"] = checked_s / unchecked_s;
+}
+BENCHMARK(BM_SimulateLoop)->Arg(0)->Arg(1)->Arg(2)->Unit(benchmark::kMicrosecond);
+
 void BM_BatchBreaks(benchmark::State& st) {
   static const Scenario s = default_scenario();
   const int threads = static_cast<int>(st.range(0));

@@ -21,6 +21,7 @@
 
 #include "common.hpp"
 #include "cueball/io/cushion_fit_data.hpp"
+#include "cueball/io/cushion_json.hpp"
 #include "cueball/models/cushion/fit.hpp"
 #include "cueball/models/cushion/impact.hpp"
 #include "cueball/models/cushion/model.hpp"
@@ -125,17 +126,6 @@ double spin_from(const std::optional<double>& w, const std::optional<double>& k,
   const double kk = k ? *k : default_k;
   check_flag(k_flag, kk, -20.0, 20.0, "spin as a multiple of V0/R");
   return kk * v0 / radius;
-}
-
-void add_sample(nlohmann::ordered_json& rows, const CushionImpactSample& s) {
-  rows.push_back({{"P", s.normal_impulse},
-                  {"s", s.cushion_slip_speed},
-                  {"phi", s.cushion_slip_angle / kDegree},
-                  {"s_prime", s.bed_slip_speed},
-                  {"phi_prime", s.bed_slip_angle / kDegree},
-                  {"v", {s.velocity.x, s.velocity.y, s.velocity.z}},
-                  {"w", {s.angular_velocity.x, s.angular_velocity.y, s.angular_velocity.z}},
-                  {"work", s.work}});
 }
 
 void print_history_csv(std::ostream& out, const std::vector<CushionImpactSample>& history) {
@@ -247,13 +237,7 @@ void run_cushion(const ImpactFlags& f, std::ostream& out, std::ostream& err) {
                 " m/s exceeds 2.5 m/s, the limit of the rigid-cushion model (Mathavan 2010, Fig 7)");
   }
   if (f.parameters.json) {
-    nlohmann::ordered_json j = report.to_json();
-    if (f.history) {
-      nlohmann::ordered_json rows = nlohmann::ordered_json::array();
-      for (const CushionImpactSample& s : r.history) add_sample(rows, s);
-      j["history"] = rows;
-    }
-    out << j.dump(2) << '\n';
+    out << cushion_report_to_json(report, f.history ? &r.history : nullptr) << '\n';
     for (const std::string& w : report.warnings()) err << "cueball: warning: " << w << '\n';
   } else {
     emit(report, false, out, err);
@@ -286,16 +270,6 @@ void sweep_row(std::ostream& out, const char* family, const PaperIncidence& in, 
                 in.angle / kDegree, in.topspin * radius / in.speed, in.sidespin * radius / in.speed, r.speed,
                 r.angle / kDegree);
   out << line;
-}
-
-// The same row as a JSON object (--json): the CSV's columns as keys.
-nlohmann::ordered_json sweep_row_json(const PaperIncidence& in, const SweepImpact& r, double radius) {
-  return {{"v0", in.speed},
-          {"alpha_deg", in.angle / kDegree},
-          {"topspin_k", in.topspin * radius / in.speed},
-          {"sidespin_k", in.sidespin * radius / in.speed},
-          {"speed", r.speed},
-          {"angle_deg", r.angle / kDegree}};
 }
 
 void run_sweep(const SweepFlags& f, std::ostream& out, std::ostream& err) {
@@ -331,35 +305,27 @@ void run_sweep(const SweepFlags& f, std::ostream& out, std::ostream& err) {
   const std::vector<double> sidespins{-2.0, -1.5, -1.0, -0.5, 0.0, 0.5, 1.0, 1.5, 2.0};
 
   // --json: one object, the family, model, solver and ball with the rows
-  // (fig12: the history over P_I, as cushion --history --json gives it).
-  nlohmann::ordered_json j;
-  if (f.parameters.json) {
-    j["family"] = f.family;
-    j["model"] = f.model;
-    if (mathavan) j["solver"] = f.cushion.solver;
-    j["preset"] = f.parameters.preset;
-  }
+  // (fig12: the history over P_I, as cushion --history --json gives it;
+  // io/cushion_json.hpp).
+  const CushionSweepInfo info{f.family, f.model, mathavan ? f.cushion.solver : std::string(), f.parameters.preset};
   if (f.family == "fig12") {
     // Slip speeds and angles over the impact: V0 = 2, alpha = 45, w_S = 2 V0/R, w_T = 1.5 V0/R.
     PaperIncidence in{2.0, 45.0 * kDegree, 1.5 * 2.0 / radius, 2.0 * 2.0 / radius};
     CushionImpactOptions o = options;
     o.record_history = true;
     const std::vector<CushionImpactSample> history = cushion_impact(incoming_ball(in), p, cushion, o).history;
-    if (!f.parameters.json) {
+    if (f.parameters.json) {
+      out << cushion_sweep_history_to_json(info, history) << '\n';
+    } else {
       print_history_csv(out, history);
-      return;
     }
-    nlohmann::ordered_json rows = nlohmann::ordered_json::array();
-    for (const CushionImpactSample& sample : history) add_sample(rows, sample);
-    j["history"] = rows;
-    out << j.dump(2) << '\n';
     return;
   }
-  nlohmann::ordered_json rows = nlohmann::ordered_json::array();
+  std::vector<CushionSweepRow> rows;
   if (!f.parameters.json) out << "family,solver,v0,alpha_deg,topspin_k,sidespin_k,speed,angle_deg\n";
   const char* family = f.family.c_str();
   const auto row = [&](const PaperIncidence& in, const SweepImpact& r) {
-    if (f.parameters.json) rows.push_back(sweep_row_json(in, r, radius));
+    if (f.parameters.json) rows.push_back({in, r.speed, r.angle});
     else sweep_row(out, family, in, r, radius, label);
   };
   bool beyond_limit = false;
@@ -389,10 +355,7 @@ void run_sweep(const SweepFlags& f, std::ostream& out, std::ostream& err) {
       }
     }
   }
-  if (f.parameters.json) {
-    j["rows"] = rows;
-    out << j.dump(2) << '\n';
-  }
+  if (f.parameters.json) out << cushion_sweep_to_json(info, rows, radius) << '\n';
   if (beyond_limit) err << "cueball: warning: some rows exceed the rigid-cushion limit of 2.5 m/s normal speed\n";
 }
 
@@ -623,9 +586,9 @@ void run_figures(const FigureFlags& f, std::ostream& out, std::ostream& err) {
                                "); see " + quote_input((dir / name).string() + ".log", kMaxEchoedPathChars));
   }
   if (f.parameters.json) {
-    nlohmann::ordered_json files = nlohmann::ordered_json::array();
+    std::vector<std::string> files;
     for (const auto& image : written) files.push_back(image.string());
-    out << nlohmann::ordered_json{{"out", f.out}, {"format", f.format}, {"files", files}}.dump(2) << '\n';
+    out << figures_to_json(f.out, f.format, files) << '\n';
   } else {
     for (const auto& image : written) out << image.string() << '\n';
   }

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "common.hpp"
+#include "cueball/io/batch_json.hpp"
 #include "cueball/io/scenario_json.hpp"
 #include "cueball/io/result_json.hpp"
 #include "cueball/simulation/batch.hpp"
@@ -188,35 +189,12 @@ void run_batch(const BatchFlags& f, std::ostream& out, std::ostream& err) {
       simulate_batch(s, {static_cast<int>(f.shots), f.threads, static_cast<std::uint64_t>(f.seed)},
                      csv ? OutcomeSink([&](int shot, const ShotOutcome& o) { csv->add(shot, o); }) : OutcomeSink());
   if (csv) csv->close();
-  Report report("batch of " + std::to_string(r.shots) + " noisy shots (" + std::to_string(f.threads) + " threads, seed " +
-                std::to_string(f.seed) + ")");
-  report.add_count("shots", r.shots, "requested");
-  report.add_count("simulated", r.simulated, "shots simulated");
-  report.add_count("miscues", r.miscues, "noisy tip offsets beyond the miscue limit (not simulated)");
-  report.add_count("failures", r.failures, "shots stopped at the event limit");
-  report.add_count("speed_reflected", r.speed_reflected, "noisy cue speeds reflected into (0, 12] m/s (simulated)");
-  report.add_count("elevation_reflected", r.elevation_reflected, "noisy elevations reflected into [0, 90) deg (simulated)");
-  report.add("seconds", r.seconds, "s", "wall-clock time");
-  report.add("shots_per_second", r.shots_per_second, "1/s");
-  report.add("events_per_shot", r.simulated ? static_cast<double>(r.events) / r.simulated : 0.0, "");
   if (f.json) {
-    nlohmann::ordered_json j = report.to_json();
-    nlohmann::ordered_json probability = nlohmann::ordered_json::object();
-    nlohmann::ordered_json balls = nlohmann::ordered_json::array();
-    for (std::size_t i = 0; i < r.balls.size(); ++i) {
-      const BallOutcome& b = r.balls[i];
-      probability[std::to_string(b.id)] = b.pocketed_probability;
-      balls.push_back({{"id", b.id},
-                       {"name", s.balls[i].name},
-                       {"pocketed_probability", b.pocketed_probability},
-                       {"mean_position", {b.mean_position.x, b.mean_position.y}},
-                       {"position_std", {b.position_std.x, b.position_std.y}}});
-    }
-    j["pocketed_probability"] = probability;
-    j["balls"] = balls;
-    out << j.dump(2) << '\n';
+    out << batch_result_to_json(s, r) << '\n';
     return;
   }
+  const Report report = batch_report(r, "batch of " + std::to_string(r.shots) + " noisy shots (" +
+                                            std::to_string(f.threads) + " threads, seed " + std::to_string(f.seed) + ")");
   emit(report, false, out, err);
   out << "  ball  name      P(pocketed)   final position: mean (m)      std (m)\n";
   for (std::size_t i = 0; i < r.balls.size(); ++i) {
@@ -337,34 +315,17 @@ void run_many(const ManyFlags& f, std::ostream& out, std::ostream& err) {
     for (int k = 0; k < r.shots; ++k) csv.add(static_cast<long long>(f.first_shot) + k, r.outcome(k));
     csv.close();
   }
-  int miscues = 0, failures = 0;
-  long long events = 0;
-  std::vector<int> potted(s.balls.size(), 0);
-  for (std::size_t k = 0; k < shots; ++k) {
-    miscues += r.miscue[k];
-    failures += r.failure[k];
-    events += r.events[k];
-    for (std::size_t j = 0; j < s.balls.size(); ++j) potted[j] += r.pocketed[k * s.balls.size() + j];
-  }
-  const int simulated = r.shots - miscues - failures;
-  Report report("many: " + std::to_string(r.shots) + " shots (" + std::to_string(f.threads) + " threads" +
-                (f.noise ? ", noise, seed " + std::to_string(f.seed) : std::string(", no noise")) + ")");
-  report.add_count("shots", r.shots, "actions played");
-  report.add_count("simulated", simulated, "shots simulated");
-  report.add_count("miscues", miscues, "noisy tip offsets beyond the miscue limit (not simulated)");
-  report.add_count("failures", failures, "shots stopped at the event limit");
-  report.add("seconds", r.seconds, "s", "wall-clock time");
-  report.add("shots_per_second", r.shots_per_second, "1/s");
-  report.add("events_per_shot", simulated ? static_cast<double>(events) / simulated : 0.0, "");
   if (f.json) {
-    nlohmann::ordered_json j = report.to_json();
-    nlohmann::ordered_json pocketed = nlohmann::ordered_json::object();
-    for (std::size_t i = 0; i < s.balls.size(); ++i) pocketed[std::to_string(s.balls[i].id)] = potted[i];
-    j["pocketed"] = pocketed;
-    if (!f.outcomes.empty()) j["outcomes"] = f.outcomes;
-    out << j.dump(2) << '\n';
+    out << many_result_to_json(r, f.outcomes) << '\n';
     return;
   }
+  std::vector<int> potted(s.balls.size(), 0);
+  for (std::size_t k = 0; k < shots; ++k)
+    for (std::size_t j = 0; j < s.balls.size(); ++j) potted[j] += r.pocketed[k * s.balls.size() + j];
+  const Report report = many_report(r, "many: " + std::to_string(r.shots) + " shots (" + std::to_string(f.threads) +
+                                           " threads" +
+                                           (f.noise ? ", noise, seed " + std::to_string(f.seed) : std::string(", no noise")) +
+                                           ")");
   emit(report, false, out, err);
   out << "  ball  name      pocketed (shots)\n";
   for (std::size_t i = 0; i < s.balls.size(); ++i) {

@@ -13,6 +13,7 @@
 #include <numbers>
 #include <random>
 #include <string>
+#include <thread>
 
 #include "cueball/simulation/batch.hpp"
 #include "cueball/core/errors.hpp"
@@ -330,6 +331,47 @@ TEST(Simulator, JawTooHighForTheBallIsRejectedUpFront) {
   EXPECT_THROW(validate_simulation_input(s.table, s.balls, s.settings), InvalidArgument);
   s.table.jaws[3].contact_height = 1.28 * s.settings.parameters.ball.radius;
   EXPECT_NO_THROW(validate_simulation_input(s.table, s.balls, s.settings));
+}
+
+// simulate() in a loop over one scenario checks its table and settings once
+// (per thread; validate_simulation_input keeps the last ones that passed, and
+// the positions of the last balls that passed), and still the balls every
+// time (a ball's place on the table again only where it moved), and a table
+// or settings that changed, even to an invalid value and back, are checked
+// again.
+TEST(Simulator, ValidationOfAnUnchangedTableAndSettingsIsNotRepeatedButStillCatchesChanges) {
+  Scenario s = default_scenario();
+  const std::vector<SimulationBall> balls = balls_after_strike(s);
+  const SimulationResult first = simulate(s.table, balls, s.settings);
+  const SimulationResult again = simulate(s.table, balls, s.settings);
+  EXPECT_EQ(again.events.size(), first.events.size());
+  EXPECT_EQ(again.end_time, first.end_time);
+  // The balls are checked on every call.
+  std::vector<SimulationBall> bad_balls = balls;
+  bad_balls[1].state.position = bad_balls[0].state.position;
+  EXPECT_THROW(simulate(s.table, bad_balls, s.settings), InvalidArgument);
+  bad_balls = balls;
+  bad_balls[0].state.position = {-0.5, 0.3};  // off the table: positions already checked are not checked again, others are
+  EXPECT_THROW(simulate(s.table, bad_balls, s.settings), InvalidArgument);
+  bad_balls = balls;
+  bad_balls[0].state.velocity.x = std::nan("");
+  EXPECT_THROW(simulate(s.table, bad_balls, s.settings), InvalidArgument);
+  // A changed setting or table is checked again.
+  SimulationSettings bad = s.settings;
+  bad.cushion.friction = 5.0;
+  EXPECT_THROW(simulate(s.table, balls, bad), InvalidArgument);
+  bad = s.settings;
+  bad.parameters.cloth.sliding_friction = std::nan("");
+  EXPECT_THROW(simulate(s.table, balls, bad), InvalidArgument);
+  EXPECT_THROW(simulate(s.table, balls, bad), InvalidArgument);  // NaN equals nothing: checked again
+  Table bad_table = s.table;
+  bad_table.jaws[3].contact_height = 2.0 * s.settings.parameters.ball.radius;
+  EXPECT_THROW(simulate(bad_table, balls, s.settings), InvalidArgument);
+  EXPECT_EQ(simulate(s.table, balls, s.settings).end_time, first.end_time);
+  // On another thread, checked there.
+  std::thread t([&] { EXPECT_THROW(simulate(bad_table, balls, s.settings), InvalidArgument); });
+  t.join();
+  EXPECT_THROW(simulate(bad_table, balls, s.settings), InvalidArgument);
 }
 
 TEST(Simulator, TrajectorySegmentsReproduceTheStatesAtEvents) {

@@ -1054,7 +1054,8 @@ def simulate(scenario: _Scenario = None, sample_rate: _Float = 0.0) -> Result:
     """
 
 def simulate_batch(scenario: _Scenario = None, shots: _Int = 1000, threads: _Int = 1, seed: _Int = 0) -> dict[str, Any]:
-    """Noisy copies of the scenario's shot; the keys of `cueball batch --json`. Releases the GIL."""
+    """Noisy copies of the scenario's shot: json.loads of what `cueball batch --json` prints (one
+    writer, batch_result_to_json), pocketed_probability's keys as int ball ids. Releases the GIL."""
 
 class ManyOutcomes(TypedDict):
     """simulate_many's per-shot outcomes: rows by shot, columns by ball (`ids`)."""
@@ -1109,10 +1110,12 @@ def plan_shot(
 ) -> dict[str, Any]:
     """The strike that pots ball `target`, or any ball of `targets` (the legal targets; give one of
     the two) (cueball plan-shot): the dict of `plan-shot --json`
-    (cue in degrees and ball radii, target (the ball it pots), kind ('direct', 'bank' off one or two cushions, 'kick',
-    'combination'), pocket, cushion, cushions, intermediate_ball, success_probability and its standard error,
-    window_probability, aim_window_deg, speed_window m/s, robot, predicted, alternatives, rejected) and `scenario`,
-    the Scenario with the planned cue. noise 'tournament', 'none', 'scenario' or a dict of sigmas
+    (json.loads of the same writer, plan_to_json: the same keys and values, pairs as lists;
+    cue in degrees and ball radii, target (the ball it pots), kind ('direct', 'bank' off one or two cushions, 'kick',
+    'combination'), pocket, cushion (only off a cushion), cushions, intermediate_ball, success_probability and its
+    standard error, window_probability, aim_window_deg, speed_window m/s, robot, combination_cut_deg (combinations
+    only), predicted, alternatives, rejected) and `scenario`, the one key the CLI has not: the Scenario with the
+    planned cue (in each alternative too). noise 'tournament', 'none', 'scenario' or a dict of sigmas
     as the scenario's "noise" (speed m/s, aim_deg, elevation_deg, side, height ball radii); raises
     NoFeasibleShot when nothing pots. position=True plays for position (plan-shot --position):
     next_targets: the next shots' legal targets in turn ([[2], [3], ...] for 9-ball, [[9, ..., 15], [8]]

@@ -5,6 +5,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include "cueball/io/batch_json.hpp"
 #include "cueball/simulation/batch.hpp"
 #include "cueball/core/errors.hpp"
 #include "cueball/simulation/scenario.hpp"
@@ -13,28 +14,15 @@ namespace cueball_python {
 
 namespace {
 
-// [x, y] as a list: the object json.loads makes of the CLI's output.
-py::list to_list(cueball::Vec2 v) {
-  py::list l;
-  l.append(v.x);
-  l.append(v.y);
-  return l;
-}
-
+// What `cueball batch --json` prints (io/batch_json.hpp: one writer for
+// both), as Python objects; pocketed_probability's keys, JSON's strings,
+// become the balls' ids as ints.
 py::dict batch_dict(const cueball::Scenario& s, const cueball::BatchResult& r) {
+  py::dict d = json_loads(cueball::batch_result_to_json(s, r, -1));
   py::dict probability;
-  py::list balls;
-  for (std::size_t i = 0; i < r.balls.size(); ++i) {
-    const cueball::BallOutcome& b = r.balls[i];
-    probability[py::int_(b.id)] = b.pocketed_probability;
-    balls.append(py::dict("id"_a = b.id, "name"_a = s.balls[i].name, "pocketed_probability"_a = b.pocketed_probability,
-                          "mean_position"_a = to_list(b.mean_position), "position_std"_a = to_list(b.position_std)));
-  }
-  const double events_per_shot = r.simulated > 0 ? static_cast<double>(r.events) / r.simulated : 0.0;
-  return py::dict("shots"_a = r.shots, "simulated"_a = r.simulated, "miscues"_a = r.miscues, "failures"_a = r.failures,
-                  "speed_reflected"_a = r.speed_reflected, "elevation_reflected"_a = r.elevation_reflected,
-                  "seconds"_a = r.seconds, "shots_per_second"_a = r.shots_per_second,
-                  "events_per_shot"_a = events_per_shot, "pocketed_probability"_a = probability, "balls"_a = balls);
+  for (const auto& [id, p] : d["pocketed_probability"].cast<py::dict>()) probability[py::int_(py::reinterpret_borrow<py::object>(id))] = p;
+  d["pocketed_probability"] = probability;
+  return d;
 }
 
 }  // namespace
@@ -72,7 +60,8 @@ void bind_batch(py::module_& m) {
       "error in any shot raises the same exception a single run of it would (the lowest-numbered\n"
       "shot's, whatever `threads`). Returns the keys of `cueball batch --json`: shots, simulated,\n"
       "miscues, failures, speed_reflected, elevation_reflected, seconds, shots_per_second,\n"
-      "events_per_shot, pocketed_probability {ball id (int): probability} and balls [{id, name, pocketed_probability, mean_position, position_std}].\n"
+      "events_per_shot, pocketed_probability {ball id (int): probability} and balls [{id, name, pocketed_probability, mean_position, position_std}],\n"
+      "from the CLI's own writer (batch_result_to_json: json.loads of its output, the ids as ints).\n"
       "Releases the GIL while simulating.");
 }
 

@@ -155,4 +155,9 @@ std::shared_ptr<const cueball::Scenario> load_scenario(const ScenarioInput& inpu
 // the path under `root` ("scenario.cue.speed"). Needs the GIL.
 std::string json_text(const py::handle& dict, const std::string& root);
 
+// json.loads(text): the Python objects of one of the library's JSON writers
+// (io/), so that a dict is what json.loads makes of the CLI's output. Needs
+// the GIL.
+py::object json_loads(const std::string& text);
+
 }  // namespace cueball_python

@@ -40,8 +40,6 @@ py::tuple shot_fields(const ShotStrike& s) {
                         s.target ? py::object(py::int_(*s.target)) : py::object(py::none()));
 }
 
-py::object json_loads(const std::string& text) { return py::module_::import("json").attr("loads")(text); }
-
 py::dict written(const Scenario& s) { return json_loads(cueball::scenario_to_json(s, -1)); }
 
 ScenarioPtr from_json(const std::string& text) {
@@ -250,7 +248,7 @@ void bind_scenario(py::module_& m) {
       "'mathavan_2010', the default, 'han_2005' or 'stronge_compliant') with its restitution and\n"
       "friction (each model's own defaults when not given); for mathavan_2010, cushion_solver 'exact'\n"
       "or 'paper' (the Euler scheme, cushion_paper_steps steps) and cushion_exact_tolerance (the exact\n"
-      "solver's local error per step, [1e-11, 1e-7]; 1e-8 keeps the accuracy goal, 1e-7 is 23-29% cheaper\n"
+      "solver's local error per step, [1e-11, 1e-7]; 1e-8 keeps the accuracy goal, 1e-7 is 14-29% cheaper\n"
       "a sliding impact for planners' inner loops, its error in the README); for stronge_compliant,\n"
       "cushion_frequency_ratio (Omega, (1, 1000]); the ball-ball model by name\n"
       "(ball_collision_model: 'coulomb_impulse', the default, or 'mathavan_2014') with its constants\n"

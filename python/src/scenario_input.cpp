@@ -118,6 +118,8 @@ std::string read_scenario_file(const py::object& path) {
 
 }  // namespace
 
+py::object json_loads(const std::string& text) { return py::module_::import("json").attr("loads")(text); }
+
 std::string json_text(const py::handle& dict, const std::string& root) {
   const py::object plain = ScenarioObjects().normalise(dict, root, 0);
   return py::module_::import("json").attr("dumps")(plain).cast<std::string>();

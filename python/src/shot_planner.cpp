@@ -1,7 +1,8 @@
 // plan_shot: which strike pots this ball, and how sure is it
 // (include/cueball/planning/shot_planner.hpp). The plan comes back as the dict of
-// `cueball plan-shot --json` (the same keys and units), plus the scenario
-// with the planned cue as a Scenario object.
+// `cueball plan-shot --json` (json.loads of plan_to_json, io/plan_json.hpp: the
+// same writer, so the same keys and values), plus each shot's scenario with
+// its planned cue as a Scenario object.
 #include <array>
 #include <memory>
 #include <optional>
@@ -10,6 +11,7 @@
 #include <vector>
 
 #include "bindings.hpp"
+#include "cueball/io/plan_json.hpp"
 #include "cueball/io/scenario_json.hpp"
 #include "cueball/planning/ball_in_hand.hpp"
 #include "cueball/core/errors.hpp"
@@ -82,56 +84,6 @@ cueball::PlacementRegion placement_region(const std::variant<std::string, std::a
   return {*kind};
 }
 
-py::dict shot_dict(const Scenario& s, int cue_ball, const PlannedShot& shot, const cueball::CueStrikeNoise& noise) {
-  const cueball::ShotAction& a = shot.strike;
-  py::dict cue;
-  cue["ball"] = cue_ball;
-  cue["speed"] = a.speed;
-  cue["aim_deg"] = a.aim_deg;
-  cue["elevation_deg"] = a.elevation_deg;
-  cue["side"] = a.side;
-  cue["height"] = a.height;
-  cue["mass"] = s.cue_parameters.mass;
-  cue["tip_restitution"] = s.cue_parameters.tip_restitution;
-  cue["end_mass"] = s.cue_parameters.end_mass;
-  py::dict d;
-  d["cue"] = cue;
-  d["target"] = shot.target;
-  d["kind"] = cueball::to_string(shot.kind);
-  d["pocket"] = shot.pocket_name;
-  d["cushion"] = shot.cushion.empty() ? py::object(py::none()) : py::object(py::str(shot.cushion));
-  d["cushions"] = shot.cushions;
-  d["intermediate_ball"] = shot.intermediate_ball >= 0 ? py::object(py::int_(shot.intermediate_ball)) : py::object(py::none());
-  d["success_probability"] = shot.success_probability;
-  d["success_standard_error"] = shot.success_standard_error;
-  d["noisy_shots"] = shot.noisy_shots;
-  d["window_probability"] = shot.window_probability;
-  d["aim_window_deg"] = py::make_tuple(shot.aim_window_deg[0], shot.aim_window_deg[1]);
-  d["speed_window"] = py::make_tuple(shot.speed_window[0], shot.speed_window[1]);
-  py::dict robot;
-  robot["tip_height"] = shot.robot.tip_height;
-  robot["cue_speed"] = shot.robot.cue_speed;
-  d["robot"] = robot;
-  d["ball_speed"] = shot.ball_speed;
-  d["geometric_aim_deg"] = shot.geometric_aim_deg;
-  d["cut_deg"] = shot.cut_deg;
-  d["combination_cut_deg"] = shot.combination_cut_deg;
-  py::list predicted;
-  for (const cueball::PredictedBall& b : shot.predicted) {
-    py::dict p;
-    p["id"] = b.id;
-    p["position"] = to_tuple(b.position);
-    p["pocketed"] = b.pocketed;
-    p["pocket"] = b.pocketed ? py::object(py::str(s.table.pockets[static_cast<std::size_t>(b.pocket)].name))
-                             : py::object(py::none());
-    predicted.append(p);
-  }
-  d["predicted"] = predicted;
-  d["simulations"] = shot.simulations;
-  d["scenario"] = std::make_shared<Scenario>(cueball::scenario_with_shot(s, cue_ball, shot, noise));
-  return d;
-}
-
 // target or targets (one of them) into the request.
 void set_targets(std::optional<int> target, const std::optional<std::vector<int>>& targets, cueball::PlanRequest& q) {
   if (target && targets)
@@ -146,20 +98,6 @@ void set_targets(std::optional<int> target, const std::optional<std::vector<int>
   if (targets->empty()) throw cueball::InvalidArgument("targets", "targets is empty; allowed: one or more ball ids");
   q.targets = *targets;
   q.target = targets->front();
-}
-
-py::dict leave_dict(const cueball::Leave& l, int next) {
-  py::dict d;
-  d["next"] = next >= 0 ? py::object(py::int_(next)) : py::object(py::none());
-  d["cue_ball"] = to_tuple(l.cue_ball);
-  d["next_feasible"] = l.next_feasible;
-  d["next_success_probability"] = l.next_success_probability;
-  d["next_kind"] = l.next_kind.empty() ? py::object(py::none()) : py::object(py::str(l.next_kind));
-  d["next_pocket"] = l.next_pocket.empty() ? py::object(py::none()) : py::object(py::str(l.next_pocket));
-  d["next_ball"] = l.next_ball >= 0 ? py::object(py::int_(l.next_ball)) : py::object(py::none());
-  d["screened_probability"] = l.screened_probability;
-  d["score"] = l.score;
-  return d;
 }
 
 }  // namespace
@@ -226,25 +164,16 @@ void bind_shot_planner(py::module_& m) {
           }
         }
         const Scenario& on = placed ? placed->table : *s;
-        py::dict out = shot_dict(on, plan.cue_ball, plan.shot, q.noise);
-        if (placed) {
-          py::dict h;
-          h["cue_ball"] = to_tuple(placed->cue_ball);
-          h["spots"] = placed->spots;
-          h["spots_played"] = placed->spots_played;
-          out["in_hand"] = h;
-        }
-        if (position_play) out["position"] = leave_dict(played.leave, played.next_target);
-        out["simulations"] = plan.simulations;
-        out["seconds"] = plan.seconds;
-        py::list alternatives;
-        for (std::size_t k = 0; k < plan.alternatives.size(); ++k) {
-          py::dict a = shot_dict(on, plan.cue_ball, plan.alternatives[k], q.noise);
-          if (position_play) a["position"] = leave_dict(played.alternative_leaves[k], played.next_target);
-          alternatives.append(a);
-        }
-        out["alternatives"] = alternatives;
-        out["rejected"] = plan.rejected;
+        // The CLI's plan-shot --json (io/plan_json.hpp), and each shot's Scenario.
+        py::dict out = json_loads(cueball::plan_to_json(on, plan, q.noise, position_play ? &played : nullptr,
+                                                        placed ? &*placed : nullptr, -1));
+        const auto scenario_of = [&](const PlannedShot& shot) {
+          return std::make_shared<Scenario>(cueball::scenario_with_shot(on, plan.cue_ball, shot, q.noise));
+        };
+        out["scenario"] = scenario_of(plan.shot);
+        const py::list alternatives = out["alternatives"];
+        for (std::size_t k = 0; k < plan.alternatives.size(); ++k)
+          alternatives[k].cast<py::dict>()["scenario"] = scenario_of(plan.alternatives[k]);
         return out;
       },
       "scenario"_a, "target"_a = py::none(), py::kw_only(), "targets"_a = py::none(), "cue_ball"_a = py::none(),
@@ -265,12 +194,14 @@ void bind_shot_planner(py::module_& m) {
       "scenario's own \"noise\") or a dict of sigmas as the scenario's \"noise\" takes them (speed m/s,\n"
       "aim_deg, elevation_deg, side and height in ball radii; missing keys 0); simulations: the budget of engine runs, [500, 1e6]; side, height:\n"
       "tip offsets in ball radii (height None: centre ball, then draw, then follow; then draw, centre and follow at three speeds and side either way, ranked by their windows and screened under noise; given: that height only). Returns the dict\n"
-      "of `cueball plan-shot --json` (cue in the scenario's units, kind, pocket, cushion (the first),\n"
-      "cushions (in order), intermediate_ball (a combination's; else None), combination_cut_deg,\n"
+      "of `cueball plan-shot --json`, json.loads of the same writer (io/plan_json.hpp): the same keys and\n"
+      "values, pairs as lists (cue in the scenario's units, target, kind, pocket, cushion (the first;\n"
+      "only when the shot has one), cushions (in order), intermediate_ball (a combination's; else None),\n"
       "success_probability, success_standard_error, noisy_shots, window_probability, aim_window_deg,\n"
-      "speed_window (m/s),\n"
-      "robot {tip_height m, cue_speed m/s}, predicted, simulations, seconds, alternatives, rejected)\n"
-      "and `scenario`, the Scenario with the planned cue (simulate() replays the plan). position=True\n"
+      "speed_window (m/s), robot {tip_height m, cue_speed m/s}, ball_speed, geometric_aim_deg, cut_deg,\n"
+      "combination_cut_deg (combinations only), predicted, simulations, seconds, alternatives, rejected);\n"
+      "Python adds one key the CLI's JSON has not: `scenario` (also in each alternative), the Scenario\n"
+      "with the planned cue (simulate() replays the plan). position=True\n"
       "plays for position (position_play.hpp; cueball plan-shot --position): every shot and its\n"
       "variants at five tip heights and six speeds, the leaves scored by window probabilities, the three\n"
       "best screened and the next ball planned on the table each leaves; the one played maximises\n"

@@ -7,6 +7,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "cueball/io/report.hpp"
 #include "cueball/simulation/scenario.hpp"
 #include "cueball/simulation/shot_facts.hpp"
 #include "cueball/table/table.hpp"
@@ -31,5 +32,8 @@ nlohmann::json cue_json(const Scenario& s);
 double in_units(double x, double unit, std::optional<double> given);
 /// scenario_to_json() as a value.
 nlohmann::json scenario_json(const Scenario& s);
+/// report_to_json() as a value, for the writers that add to a report
+/// (batch_json.cpp, cushion_json.cpp).
+nlohmann::ordered_json report_json(const Report& report);
 
 }  // namespace cueball::io

@@ -661,16 +661,44 @@ BallState SimulationResult::state_at(std::size_t index, double t, const Paramete
   return evolve(seg.state, std::max(0.0, t - seg.start_time), p);
 }
 
+namespace {
+
+// The table and settings of this thread's last validate_simulation_input()
+// that passed: the same again (==, which no NaN passes) are not checked again
+// (issue 29: simulate() in a user's loop over one scenario). Comparing them
+// costs a small part of checking them (the table's geometry, every cushion's
+// impact model).
+struct CheckedTableAndSettings {
+  bool valid = false;
+  Table table;
+  SimulationSettings settings;
+  // The positions of the balls of the last call that passed, in its order:
+  // a ball at the same place on the same table is on it (ball_on_table, the
+  // dearest check of a ball; a loop over one layout re-strikes the cue ball
+  // from where it stands).
+  std::vector<Vec2> on_table;
+};
+thread_local CheckedTableAndSettings t_checked;
+
+}  // namespace
+
 void validate_simulation_input(const Table& table, const std::vector<SimulationBall>& balls,
                                const SimulationSettings& settings) {
-  validate(settings.parameters);
-  validate(table);
-  (void)ball_collision_contact(settings.parameters, settings.ball_collision_model, settings.ball_collision);
-  if (settings.max_events < 1)
-    throw InvalidArgument("max_events", static_cast<double>(settings.max_events), "[1, 2^31)");
-  // The impact model of every cushion and jaw (the simulator builds them when it starts).
-  for (const CushionSegment& c : table.cushions) (void)cushion_contact(settings.parameters, settings.cushion, c.contact_height);
-  for (const JawArc& j : table.jaws) (void)cushion_contact(settings.parameters, settings.cushion, j.contact_height);
+  if (!(t_checked.valid && t_checked.settings == settings && t_checked.table == table)) {
+    t_checked.valid = false;
+    validate(settings.parameters);
+    validate(table);
+    (void)ball_collision_contact(settings.parameters, settings.ball_collision_model, settings.ball_collision);
+    if (settings.max_events < 1)
+      throw InvalidArgument("max_events", static_cast<double>(settings.max_events), "[1, 2^31)");
+    // The impact model of every cushion and jaw (the simulator builds them when it starts).
+    for (const CushionSegment& c : table.cushions) (void)cushion_contact(settings.parameters, settings.cushion, c.contact_height);
+    for (const JawArc& j : table.jaws) (void)cushion_contact(settings.parameters, settings.cushion, j.contact_height);
+    t_checked.table = table;
+    t_checked.settings = settings;
+    t_checked.on_table.clear();
+    t_checked.valid = true;
+  }
   const double radius = settings.parameters.ball.radius;
   for (std::size_t i = 0; i < balls.size(); ++i) {
     try {
@@ -689,11 +717,14 @@ void validate_simulation_input(const Table& table, const std::vector<SimulationB
                                   " overlap by " + num(2 * radius - d) + " m (centres " + num(d) +
                                   " m apart, allowed >= 2R = " + num(2 * radius) + " m)");
     }
-    if (!ball_on_table(table, balls[i].state.position, radius))
+    const bool known = i < t_checked.on_table.size() && t_checked.on_table[i] == balls[i].state.position;
+    if (!known && !ball_on_table(table, balls[i].state.position, radius))
       throw InvalidArgument(ball_field(i, "position"),
                             ball_field(i, "position") + " = (" + num(balls[i].state.position.x) + ", " +
                                 num(balls[i].state.position.y) + ") m is off the playing surface or inside a cushion");
   }
+  t_checked.on_table.resize(balls.size());
+  for (std::size_t i = 0; i < balls.size(); ++i) t_checked.on_table[i] = balls[i].state.position;
 }
 
 SimulationResult simulate(const Table& table, const std::vector<SimulationBall>& balls,

@@ -17,6 +17,7 @@ namespace cueball {
 struct BallParameters {
   double mass = 0.0;    ///< m, kg
   double radius = 0.0;  ///< R, m
+  friend bool operator==(const BallParameters&, const BallParameters&) = default;
 };
 
 struct ClothParameters {
@@ -24,11 +25,13 @@ struct ClothParameters {
   double rolling_resistance = 0.0;  ///< mu_r, paper 001's energy convention (dimensionless)
   double spin_friction = 0.0;       ///< mu_sp, vertical-spin friction: dw_z/dt = -5 mu_sp g / (2R)
   double gravity = 9.81;            ///< g, m/s^2
+  friend bool operator==(const ClothParameters&, const ClothParameters&) = default;
 };
 
 struct Parameters {
   BallParameters ball;
   ClothParameters cloth;
+  friend bool operator==(const Parameters&, const Parameters&) = default;
 };
 
 /// Moment of inertia of a solid sphere about its centre, I = 2/5 m R^2

@@ -64,6 +64,7 @@ struct SimulationSettings {
   BallCollisionModel ball_collision_model = BallCollisionModel::coulomb_impulse;
   BallCollisionParameters ball_collision = ball_collision_alciatore();
   int max_events = 100000;                  ///< SimulationError beyond this
+  friend bool operator==(const SimulationSettings&, const SimulationSettings&) = default;
 };
 
 enum class EventType {
@@ -128,6 +129,10 @@ std::size_t index_of(const std::vector<SimulationBall>& balls, int id);
 /// Throws InvalidArgument for bad input: parameters out of range, duplicate
 /// ids, a ball off the table or overlapping a cushion, two balls overlapping
 /// (by more than 1e-9 m), non-finite or implausible velocities and spins.
+/// The table and the settings are checked once per thread while they stay
+/// the same: a call with a table and settings equal (==) to those of the
+/// thread's last call that passed checks only the balls (a loop of
+/// simulate() calls on one scenario pays for its table once).
 void validate_simulation_input(const Table& table, const std::vector<SimulationBall>& balls,
                                const SimulationSettings& settings);
 

@@ -649,7 +649,13 @@ struct Exact {
     const ContactMode other = at_cushion ? modes.bed : modes.cushion;
     const Vec2 w = at_cushion ? bed_ref : cushion_ref;
     const SlavedDirection sd = slaved_direction(k, at_cushion, slip / r, r, other, w, other_slip);
-    if (sd.f_phi < 0.0 && std::abs(cross(sd.u, slip / r)) < kManifoldAngle && dot(sd.u, slip) > 0.0) {
+    // Within kManifoldAngle of the manifold; a slip of a few small_slip also
+    // where it is off by no more than 0.05 small_slip (its direction then
+    // chatters about the manifold in steps of ~r / |F_phi|, too short to
+    // settle it: a slip closing in on zero that slowly used to hover there
+    // until it was set to zero).
+    const double angle = std::max(kManifoldAngle, 0.05 * small_slip / r);
+    if (sd.f_phi < 0.0 && std::abs(cross(sd.u, slip / r)) < angle && dot(sd.u, slip) > 0.0) {
       g.slaved = true;
       g.direction = sd.u;
     }
@@ -1013,6 +1019,23 @@ struct ExactLimits {
   static constexpr int max_attempts = 20000;    // Runge-Kutta steps, accepted or not
   static constexpr int hover_attempts = 200;    // steps in one segment before a hovering slip is set to zero
   static constexpr int max_events = 64;
+  // While both contacts slip by more than loose_slip, the local tolerance of
+  // a step is the solver's times their smaller slip over loose_slip, up to
+  // `loosening` times, and never above kMaxExactTolerance: where the slips
+  // are large the directions turn slowly and an error committed there is not
+  // amplified (the steps' errors add up to about the tolerance), while near
+  // zero slip, where the default 1e-8 is needed, the tolerance is the
+  // solver's. On 20,000 random sliding impacts (bench_cushion_impact's
+  // BM_CushionTolerance) this takes 15 % fewer steps (17.9 -> 15.2) and keeps
+  // the error against the solve at 1e-11 at 7e-8 of the largest incoming
+  // velocity (as before). 10x took 25 % fewer steps (13.3) for a worst error
+  // of 1.0e-7, but moved the constants fit of tests/test_constants_fit.cpp
+  // (mu_w 0.127 for a truth of 0.20 on its synthetic carom match: its
+  // objective is flat in mu_w and its shots chaotic). A sticking contact has
+  // zero slip. Only at the default tolerance or looser: reference solves and
+  // the rolling-ball table's are not loosened.
+  static constexpr double loose_slip = 0.01;
+  static constexpr double loosening = 3.0;
 };
 
 }  // namespace
@@ -1022,6 +1045,10 @@ Outcome solve_exact(const Coefficients& k, const State& y0, const Units& units,
   const double scale = std::max(velocity_scale(y0), 1.0);
   const double tiny_slip = ExactLimits::tiny_slip * scale;
   const double atol = tolerance * scale;
+  // The step's tolerance, loosened while both slips are large (see ExactLimits::loose_slip).
+  const double loosen_max =
+      tolerance >= kExactTolerance ? std::max(1.0, std::min(ExactLimits::loosening, kMaxExactTolerance / tolerance)) : 1.0;
+  const double loosen_per_slip = 1.0 / (ExactLimits::loose_slip * scale);
   Exact sys{};
   sys.k = k;
   sys.zero_slip = 1e-13 * scale;
@@ -1106,7 +1133,8 @@ Outcome solve_exact(const Coefficients& k, const State& y0, const Units& units,
         continue;
       }
     }
-    const double err = sys.free_slip ? FreeSlipStep(sys)(y, k1, h, atol, st) : dopri5_step(sys, y, k1, h, atol, st);
+    const double atol_step = atol * std::clamp(std::min(sys.cushion_r, sys.bed_r) * loosen_per_slip, 1.0, loosen_max);
+    const double err = sys.free_slip ? FreeSlipStep(sys)(y, k1, h, atol_step, st) : dopri5_step(sys, y, k1, h, atol_step, st);
     const double root4 = std::sqrt(std::sqrt(std::max(err, 1e-5)));
     if (!(err <= 1.0)) {
       h /= std::min(10.0, root4 / 0.75);
@@ -1142,26 +1170,79 @@ Outcome solve_exact(const Coefficients& k, const State& y0, const Units& units,
       double t_hi = 1.0;
       double g_hi = -dot(slip_end, ref);
       if (!(g_hi > 0.0) && ev.may_dip(at_cushion, y, k1, st.y1, st.k7, h)) {
-        // Probed first on the cubic Hermite interpolant of the step's ends
-        // (the dense output without its fourth-order term, which needs all
-        // the stages); a sign change found there is confirmed on the dense
-        // output, which then locates it.
-        auto hermite = [&](double t, std::size_t i) {
-          const double r2 = st.y1[i] - y[i];
-          const double r3 = h * k1[i] - r2;
-          const double r4 = r2 - h * st.k7[i] - r3;
-          return y[i] + t * (r2 + (1.0 - t) * (r3 + t * r4));
-        };
+        // The dip's deepest point is taken where the cubic Hermite
+        // interpolant of the step's ends (the dense output without its
+        // fourth-order term) has its interior maximum of g (a root of its
+        // derivative, a quadratic), then refined on the dense output by
+        // parabolic steps; g > 0 there is a crossing. (Probes of the cubic at
+        // quarters of the step missed brief dips of a slip arriving along its
+        // slaved direction whose rate turns back within the step: the slip
+        // then passed by instead of reaching zero and sticking, an error of
+        // up to 3.6e-6 of the largest incoming velocity on 200,000 random
+        // impacts.)
         const std::size_t ix = at_cushion ? kSix : kScx;
         const std::size_t iy = at_cushion ? kSiy : kScy;
-        for (const double tt : {0.25, 0.5, 0.75}) {
-          if (!(-dot(Vec2{hermite(tt, ix), hermite(tt, iy)}, ref) > 0.0)) continue;
+        // g = -(c0 + A t + B (t - t^2) + C (t^2 - t^3)) along ref.
+        auto along = [&](double vx, double vy) { return vx * ref.x + vy * ref.y; };
+        const double r2x = st.y1[ix] - y[ix];
+        const double r2y = st.y1[iy] - y[iy];
+        const double r3x = h * k1[ix] - r2x;
+        const double r3y = h * k1[iy] - r2y;
+        const double ca = along(r2x, r2y);
+        const double cb = along(r3x, r3y);
+        const double cc = along(r2x - h * st.k7[ix] - r3x, r2y - h * st.k7[iy] - r3y);
+        auto g_hermite = [&](double t) { return -(ca * t + cb * (t - t * t) + cc * (t * t - t * t * t)); };  // + g(0)
+        // g' = 0: 3C t^2 + 2 (B - C) t - (A + B) = 0.
+        double t_peak = -1.0;
+        auto consider = [&](double t) {
+          if (t > 0.0 && t < 1.0 && (t_peak < 0.0 || g_hermite(t) > g_hermite(t_peak))) t_peak = t;
+        };
+        const double qa = 3.0 * cc;
+        const double qb = 2.0 * (cb - cc);
+        const double qc = -(ca + cb);
+        if (std::abs(qa) > 1e-12 * (std::abs(qb) + std::abs(qc))) {
+          const double disc = qb * qb - 4.0 * qa * qc;
+          if (disc >= 0.0) {
+            const double root = std::sqrt(disc);
+            consider((-qb + root) / (2.0 * qa));
+            consider((-qb - root) / (2.0 * qa));
+          }
+        } else if (qb != 0.0) {
+          consider(-qc / qb);
+        }
+        if (t_peak > 0.0) {
           dense();
-          const double g = -dot(Vec2{interpolate(y, st, tt, ix), interpolate(y, st, tt, iy)}, ref);  // ev.value(e, ...)
-          if (g > 0.0) {
-            t_hi = tt;
-            g_hi = g;
-            break;
+          auto g_at = [&](double tt) {
+            return -dot(Vec2{interpolate(y, st, tt, ix), interpolate(y, st, tt, iy)}, ref);  // ev.value(e, ...)
+          };
+          constexpr double kSpan = 1.0 / 16.0;
+          double a = std::max(0.0, t_peak - kSpan);
+          double b = t_peak;
+          double c = std::min(1.0, t_peak + kSpan);
+          double ga = a == 0.0 ? -dot(slip_start, ref) : g_at(a);
+          double gb = g_at(b);
+          double gc = c == 1.0 ? g_hi : g_at(c);
+          for (int it = 0; it < 4 && !(gb > 0.0); ++it) {
+            const double pa = (b - a) * (gb - gc);
+            const double q = (b - c) * (gb - ga);
+            const double den = pa - q;
+            if (!(den != 0.0)) break;
+            const double tv = b - 0.5 * ((b - a) * pa - (b - c) * q) / den;
+            if (!(tv > a && tv < c) || tv == b) break;
+            const double gv = g_at(tv);
+            if (gv > gb) {
+              (tv < b ? c : a) = b;
+              (tv < b ? gc : ga) = gb;
+              b = tv;
+              gb = gv;
+            } else {
+              (tv < b ? a : c) = tv;
+              (tv < b ? ga : gc) = gv;
+            }
+          }
+          if (gb > 0.0) {
+            t_hi = b;
+            g_hi = gb;
           }
         }
       }

@@ -96,7 +96,7 @@ constexpr int kScan = 512;             // signature scan of [0, beta_max]
 constexpr double kBoundaryWidth = 1e-12;  // a change of signature is located to this (rad)
 constexpr double kMinPiece = 2e-4;     // narrower pieces are left to the exact solver (rad)
 // Tables kept (least recently used evicted; rebuilt, identically, when needed
-// again). A table is ~0.1 MB.
+// again). A table is ~0.2 MB (its coefficients stored twice, by output and by degree).
 constexpr std::size_t kMaxTables = 16;
 // Exact solves a table may cost (~5-50 us each), and their Runge-Kutta
 // steps (~1 us each); past either, what is left is left to the exact solver
@@ -114,6 +114,7 @@ struct Piece {
   bool fitted = false;  // false: the exact solver
   int events = 0;
   std::array<std::array<double, kNodes>, kOutputs> c{};  // Chebyshev coefficients
+  std::array<std::array<double, kOutputs>, kNodes> by_degree{};  // the same, c[o][m] at [m][o]
 };
 
 struct RollingTable {
@@ -175,6 +176,26 @@ double clenshaw(const std::array<double, kNodes>& c, double x) {
     b1 = b0;
   }
   return c[0] + x * b1 - b2;
+}
+
+// clenshaw() of every output at once, from Piece::by_degree: the eight
+// recurrences side by side (each a chain of dependent operations; together
+// they fill the SIMD lanes and overlap), the same operations per output in
+// the same order as clenshaw(), so the same values.
+std::array<double, kOutputs> clenshaw_all(const std::array<std::array<double, kOutputs>, kNodes>& c, double x) {
+  std::array<double, kOutputs> b1{};
+  std::array<double, kOutputs> b2{};
+  const double x2 = 2.0 * x;
+  for (std::size_t m = kNodes - 1; m >= 1; --m) {
+    for (std::size_t o = 0; o < kOutputs; ++o) {
+      const double b0 = c[m][o] + x2 * b1[o] - b2[o];
+      b2[o] = b1[o];
+      b1[o] = b0;
+    }
+  }
+  std::array<double, kOutputs> out;
+  for (std::size_t o = 0; o < kOutputs; ++o) out[o] = c[0][o] + x * b1[o] - b2[o];
+  return out;
 }
 
 struct Builder {
@@ -299,6 +320,11 @@ RollingTable build_table(const Coefficients& k) {
     run_signature = signature_at(hi);  // scan point i is compared with the new run next
   }
   t.pieces = std::move(b.pieces);
+  for (Piece& p : t.pieces) {
+    for (std::size_t o = 0; o < kOutputs; ++o) {
+      for (std::size_t m = 0; m < kNodes; ++m) p.by_degree[m][o] = p.c[o][m];
+    }
+  }
   t.solves = b.solves;
   t.steps = b.steps;
   t.starts.reserve(t.pieces.size());
@@ -387,14 +413,15 @@ bool solve_rolling(const Coefficients& k, const State& y0, Outcome& out) {
   // The mirror image X -> -X of an impact (xi -> -xi) turns xG', u_y, u_z
   // and keeps yG', u_x, the impulses and the work.
   const double mirror = xi < 0.0 ? -1.0 : 1.0;
-  out.final_state[kVx] = y0[kVx] + mirror * clenshaw(p.c[kVx], x);
-  out.final_state[kVy] = y0[kVy] + clenshaw(p.c[kVy], x);
-  out.final_state[kUx] = y0[kUx] + clenshaw(p.c[kUx], x);
-  out.final_state[kUy] = y0[kUy] + mirror * clenshaw(p.c[kUy], x);
-  out.final_state[kUz] = y0[kUz] + mirror * clenshaw(p.c[kUz], x);
-  out.compression_impulse = clenshaw(p.c[5], x);
-  out.total_impulse = clenshaw(p.c[6], x);
-  out.compression_work = clenshaw(p.c[7], x);
+  const std::array<double, kOutputs> v = clenshaw_all(p.by_degree, x);
+  out.final_state[kVx] = y0[kVx] + mirror * v[kVx];
+  out.final_state[kVy] = y0[kVy] + v[kVy];
+  out.final_state[kUx] = y0[kUx] + v[kUx];
+  out.final_state[kUy] = y0[kUy] + mirror * v[kUy];
+  out.final_state[kUz] = y0[kUz] + mirror * v[kUz];
+  out.compression_impulse = v[5];
+  out.total_impulse = v[6];
+  out.compression_work = v[7];
   out.final_state[kWork] = (1.0 - k.e * k.e) * out.compression_work;  // (16b)
   out.steps = 0;
   out.events = p.events;

@@ -79,6 +79,7 @@ struct BallCollisionParameters {
   double friction = 0.0;         ///< mu at high slip speed (the constant mu when friction_excess = 0), [0, 1]
   double friction_excess = 0.0;  ///< extra mu at zero slip speed, [0, 1]; friction + friction_excess <= 1
   double friction_decay = 0.0;   ///< c, s/m: how fast the excess fades with slip speed, [0, 100]
+  friend bool operator==(const BallCollisionParameters&, const BallCollisionParameters&) = default;
 };
 
 inline constexpr ParameterRange kBallRestitutionRange{

@@ -160,7 +160,8 @@ struct CushionImpactOptions {
   /// default 1e-8 keeps the accuracy goal (1e-6 of that velocity from the
   /// N -> infinity limit of `paper`) on random impacts where 1e-7 did not (a
   /// slip passing close to zero); smaller values are for reference solutions
-  /// and cost more steps, 1e-7 trades that accuracy for ~30% fewer steps.
+  /// and cost more steps, 1e-7 trades that accuracy for ~20% fewer steps
+  /// (random sliding impacts; ~30% on a planner's, README "Cushion models").
   double exact_tolerance = 1e-8;
   /// `exact` on a rolling ball (no slip at C, a simulator's usual cushion hit)
   /// at exact_tolerance >= 1e-8: look the answer up in a table of the solver's

@@ -80,6 +80,7 @@ struct CushionSettings {
   /// 99.9th percentile, 6.8e-6 at worst (6 impacts beyond 1e-6, where a slip
   /// passes close to zero). Rolling balls are looked up in the same table.
   double exact_tolerance = CushionImpactOptions{}.exact_tolerance;
+  friend bool operator==(const CushionSettings&, const CushionSettings&) = default;
 };
 
 /// Each model's own constants, as its source gives them: mathavan_2010 the

@@ -1,0 +1,27 @@
+# The long pure-numerics tests: accuracy and convergence checks whose cost is
+# a reference computation repeated many times (Euler schemes with 1e5-1e6
+# steps and their Richardson limits, a direct integration of the collision,
+# the table's constants fitted to a synthetic match). They carry the ctest
+# label `long_numerics`; the asan test preset (CMakePresets.json) leaves them
+# out, the Release suite runs them in full (build.sh runs both). Under the
+# sanitizers their code paths still run, in the shorter tests of the same
+# code named beside each entry; a tenth of the cases of the long random scans
+# run there too (tests/support/test_scale.hpp).
+#
+# ctest `long_numerics_listed` fails when a name here matches no test (a
+# renamed test would silently come back into the sanitizer run).
+set(CUEBALL_LONG_NUMERICS
+  # N = 1e4, 1e5, 1e6 Euler steps per case (the paper solver, the exact one:
+  # every other cushion test, CliCushion.*).
+  CushionImpactConvergence.PaperSchemeConvergesToExactAtFirstOrder
+  # Richardson limits of 2 x 1e6-step runs per case (as above).
+  CushionImpactConvergence.ExactMatchesTheRichardsonLimitOfThePaperScheme
+  CushionImpactConvergence.RollingBallsMatchTheLimitOnOtherCushionHeights
+  # 45 head-on impacts against a closed form, each also at 4e5 paper steps.
+  CushionImpactConvergence.HeadOnMatchesTheClosedForm
+  # 300 collisions against the test's own 4000-step integration (the impulse
+  # model: the other BallCollision tests).
+  BallCollision.MatchesADirectIntegrationOfCoulombFriction
+  # The whole calibration of a synthetic match to 3 % (calibrate(), the
+  # strike and constants fits: Calibrate.*, StrikeFit.*, CliCalibrate.*).
+  ConstantsFit.RecoversTheCushionAndRollingConstants)

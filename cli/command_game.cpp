@@ -15,8 +15,10 @@
 #include "cueball/agents/match.hpp"
 #include "cueball/core/errors.hpp"
 #include "cueball/io/game_json.hpp"
+#include "cueball/io/game_viewer_json.hpp"
 #include "cueball/io/scenario_json.hpp"
 #include "cueball/planning/shot_planner.hpp"
+#include "viewer_page.hpp"
 
 namespace cueball::cli {
 
@@ -290,6 +292,7 @@ struct PlayFlags {
   std::string noise = "none";
   std::string simulations;
   std::string record;
+  std::string html;
   bool json = false;
 };
 
@@ -326,6 +329,8 @@ void run_play(const PlayFlags& f, std::ostream& out) {
     }
   }
   if (!f.record.empty()) write_text_file(f.record, game_records_to_json(records) + '\n', "--record", "the game record");
+  if (!f.html.empty())
+    write_text_file(f.html, viewer_page(viewer_template(), game_viewer_json(records.front())), "--html", "the viewer page");
   if (f.json) {
     out << game_summary_to_json(records) << '\n';
     return;
@@ -352,6 +357,7 @@ void run_play(const PlayFlags& f, std::ostream& out) {
   out << "  total: " << records.size() << " games, wins " << wins[0] << "-" << wins[1] << " (" << truncated
       << " truncated), fouls " << fouls[0] << "-" << fouls[1] << ", pots " << pots[0] << "-" << pots[1] << '\n';
   if (!f.record.empty()) out << "  record written to " << f.record << " (cueball game replay checks it)\n";
+  if (!f.html.empty()) out << "  viewer of game 1 written to " << f.html << " (open it in a browser)\n";
 }
 
 // ------------------------------------------------------------------ game replay
@@ -419,6 +425,7 @@ Command add_game_command(CLI::App& app) {
       ->capture_default_str();
   p->add_option("--simulations", pf->simulations, "Engine runs an agent may spend on a decision (planner, carom_search)");
   p->add_option("--record", pf->record, "Write the game record here (game replay re-plays it)");
+  p->add_option("--html", pf->html, "Write the first game as a self-contained HTML viewer page (every shot, its ruling) to this file");
   p->add_flag("--json", pf->json, "Print one JSON object: the games and the totals");
 
   auto rf = std::make_shared<ReplayFlags>();

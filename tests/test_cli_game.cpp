@@ -126,6 +126,31 @@ TEST(CliGame, StatesThatBreakTheRulesExitTwoNamingTheKey) {
   expect_usage_error({"game"}, "");
 }
 
+TEST(CliGame, PlayWritesTheFirstGameAsAViewerPage) {
+  const TempDir dir;
+  const std::string page = dir.path("game.html"), record = dir.path("r.json");
+  const CliRun r = run_cli({"game", "play", "--game", "nine_ball", "--players", "ghost_ball,random", "--games", "2", "--seed", "2",
+                            "--record", record, "--html", page});
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.out.find("viewer of game 1 written to"), std::string::npos) << r.out;
+  const std::string html = read_text(page);
+  const std::string open = R"(<script type="application/json" id="cueball-result">)";
+  const std::size_t at = html.find(open);
+  ASSERT_NE(at, std::string::npos);
+  EXPECT_EQ(html.find("__CUEBALL_RESULT__"), std::string::npos);
+  const std::size_t from = at + open.size();
+  const std::string doc_text = html.substr(from, html.find("</script>", from) - from);
+  EXPECT_EQ(doc_text.find('<'), std::string::npos) << "every < escaped";
+  const Json doc = Json::parse(doc_text);
+  const Json games = Json::parse(read_text(record))["games"];
+  ASSERT_EQ(games.size(), 2u);
+  // the first game: one entry per recorded step, the players and the end as recorded
+  EXPECT_EQ(doc["game"]["shots"].size(), games[0]["steps"].size());
+  EXPECT_EQ(doc["game"]["players"], Json::array({"ghost_ball", "random"}));
+  EXPECT_EQ(doc["game"]["kind"], "nine_ball");
+  for (const Json& shot : doc["game"]["shots"]) EXPECT_TRUE(shot.contains("result") && shot.contains("caption"));
+}
+
 TEST(CliGame, PlayPrintsEveryGameAndRecordsWhatReplayReproduces) {
   const TempDir dir;
   const std::string record = dir.path("r.json");

@@ -25,6 +25,10 @@ export class Viewer {
    */
   constructor(el, model) {
     this.el = el;
+    // every listener of this viewer goes with it (destroy(): the game page
+    // replaces the viewer when another shot is loaded)
+    this.abort = new AbortController();
+    const signal = this.abort.signal;
     this.model = model;
     this.layout = tableLayout(model.table, model.radius);
     this.theme = tableTheme(model.table.name);
@@ -39,7 +43,7 @@ export class Viewer {
     this.showTrails = el.trails.checked;
 
     this.player = new Player(model.duration, () => this.render());
-    this.plot = new SpeedPlot(el.plot, model.duration, (t) => this.seek(t));
+    this.plot = new SpeedPlot(el.plot, model.duration, (t) => this.seek(t), signal);
     this.timeline = new Timeline(
       { track: el.timeline, list: el.eventList, legend: el.timelineLegend },
       model,
@@ -50,26 +54,39 @@ export class Viewer {
     bindControls(el, this.player, {
       previous: (t) => last(keyTimes.filter((k) => k < t - 1e-9)),
       next: (t) => keyTimes.find((k) => k > t + 1e-9) ?? null,
-    });
+    }, signal);
 
     el.hudTable.textContent = model.table.name;
     document.title = `cueball – ${model.table.name}`;
     this.fillBallList();
-    el.ballSelect.addEventListener('change', () => this.select(Number(el.ballSelect.value)));
-    el.canvas.addEventListener('click', (e) => this.pick(e));
+    el.ballSelect.addEventListener('change', () => this.select(Number(el.ballSelect.value)), { signal });
+    el.canvas.addEventListener('click', (e) => this.pick(e), { signal });
     el.trails.addEventListener('change', () => {
       this.showTrails = el.trails.checked;
       this.render();
-    });
+    }, { signal });
     const showTransitions = () => this.timeline.showTransitions(el.showTransitions.checked);
-    el.showTransitions.addEventListener('change', showTransitions);
+    el.showTransitions.addEventListener('change', showTransitions, { signal });
     showTransitions();
 
     const cue = model.balls.find((b) => b.name === 'cue') || model.balls[0];
     this.selected = null;
     this.select(cue ? cue.id : null);
-    new ResizeObserver(() => this.resize()).observe(el.stage);
+    this.resizeObserver = new ResizeObserver(() => this.resize());
+    this.resizeObserver.observe(el.stage);
     this.resize();
+  }
+
+  /** Stops this viewer and empties what it filled, for another to take the elements. */
+  destroy() {
+    this.player.pause();
+    this.player.onChange = () => {};
+    this.abort.abort();
+    this.resizeObserver.disconnect();
+    const el = this.el;
+    for (const e of [el.ballSelect, el.speed, el.timeline, el.eventList, el.timelineLegend, el.readout]) {
+      e.replaceChildren();
+    }
   }
 
   /** Pauses and jumps to time t (s). */

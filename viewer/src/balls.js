@@ -27,6 +27,23 @@ const NAMED_COLOURS = {
 
 const NEUTRAL = '#b9b2a0';
 
+/** The white of a stripe's caps and number discs. */
+const STRIPE_WHITE = '#fbfaf5';
+
+/**
+ * Proportions of a pool ball drawn with radius r px (fractions of r): the
+ * stripe's half band, the number disc's radius, the label's font size (one
+ * digit, two digits). Small balls (the whole table in a window: r of 6 to 10
+ * px) get a larger disc and figures, as large as the ball allows, so the
+ * number stays readable; from r = 14 px on, the proportions of a real ball
+ * (disc about 0.45 of the radius, band about half the ball's height).
+ */
+export function ballLook(r) {
+  const k = Math.min(1, Math.max(0, (r - 8) / 6)); // 0 at r <= 8 px, 1 at r >= 14 px
+  const mix = (small, large) => small + (large - small) * k;
+  return { band: mix(0.5, 0.52), disc: mix(0.66, 0.46), font1: mix(1.1, 0.72), font2: mix(0.92, 0.6) };
+}
+
 /**
  * How a ball looks: base colour, stripe, and the label drawn on it.
  * @returns {{colour:string, stripe:boolean, label:string, disc:boolean}}
@@ -66,38 +83,44 @@ export function drawBall(ctx, style, cx, cy, r, { alpha = 1, selected = false } 
 
   ctx.beginPath();
   ctx.arc(cx, cy, r, 0, 2 * Math.PI);
-  ctx.fillStyle = style.stripe ? NAMED_COLOURS.white : style.colour;
+  ctx.fillStyle = style.stripe ? STRIPE_WHITE : style.colour;
   ctx.fill();
+  const look = ballLook(r);
   if (style.stripe) {
+    // the band across the middle, narrow enough that the white caps above
+    // and below it show (a stripe is white with a coloured band; the solid
+    // of the same colour is coloured all over)
     ctx.save();
     ctx.clip();
     ctx.fillStyle = style.colour;
-    ctx.fillRect(cx - r, cy - 0.58 * r, 2 * r, 1.16 * r);
+    ctx.fillRect(cx - r, cy - look.band * r, 2 * r, 2 * look.band * r);
     ctx.restore();
   }
-  // shading: a highlight up-left, darker towards the rim
+  // shading: a highlight up-left, darker towards the rim (lightly, so the
+  // stripes' white caps stay white)
   const shade = ctx.createRadialGradient(cx - 0.35 * r, cy - 0.4 * r, 0.05 * r, cx, cy, r);
-  shade.addColorStop(0, 'rgba(255, 255, 255, 0.55)');
+  shade.addColorStop(0, 'rgba(255, 255, 255, 0.5)');
   shade.addColorStop(0.35, 'rgba(255, 255, 255, 0)');
-  shade.addColorStop(1, 'rgba(0, 0, 0, 0.3)');
+  shade.addColorStop(1, 'rgba(0, 0, 0, 0.18)');
   ctx.fillStyle = shade;
   ctx.fill();
   ctx.lineWidth = 1;
   ctx.strokeStyle = 'rgba(0, 0, 0, 0.55)';
   ctx.stroke();
 
-  if (style.label && r >= 5) {
+  if (style.label && r >= 4) {
     if (style.disc) {
       ctx.beginPath();
-      ctx.arc(cx, cy, 0.52 * r, 0, 2 * Math.PI);
+      ctx.arc(cx, cy, look.disc * r, 0, 2 * Math.PI);
       ctx.fillStyle = '#fbfaf5';
       ctx.fill();
     }
     ctx.fillStyle = '#111';
-    ctx.font = `600 ${Math.max(7, Math.round((style.label.length > 1 ? 0.58 : 0.7) * r))}px system-ui, sans-serif`;
+    const size = (style.label.length > 1 ? look.font2 : look.font1) * r;
+    ctx.font = `700 ${Math.max(6, Math.round(size))}px system-ui, sans-serif`;
     ctx.textAlign = 'center';
     ctx.textBaseline = 'middle';
-    ctx.fillText(style.label, cx, cy + 0.05 * r);
+    ctx.fillText(style.label, cx, cy + 0.06 * r, 1.9 * look.disc * r);
   }
   if (selected) {
     ctx.beginPath();

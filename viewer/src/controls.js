@@ -9,9 +9,10 @@ export const SPEEDS = [0.05, 0.1, 0.25, 0.5, 1, 2];
  * @param {Record<string, HTMLElement>} el the control elements (see template.html)
  * @param {import('./player.js').Player} player
  * @param {{previous:(t:number)=>number|null, next:(t:number)=>number|null}} events times of key events
+ * @param {AbortSignal} [signal] removes the listeners when aborted
  */
-export function bindControls(el, player, events) {
-  el.play.addEventListener('click', () => player.toggle());
+export function bindControls(el, player, events, signal = undefined) {
+  el.play.addEventListener('click', () => player.toggle(), { signal });
 
   for (const s of SPEEDS) {
     const option = document.createElement('option');
@@ -20,22 +21,22 @@ export function bindControls(el, player, events) {
     option.selected = s === player.speed;
     el.speed.append(option);
   }
-  el.speed.addEventListener('change', () => player.setSpeed(Number(el.speed.value)));
+  el.speed.addEventListener('change', () => player.setSpeed(Number(el.speed.value)), { signal });
 
   el.scrubber.max = String(player.duration);
   el.scrubber.step = 'any';
   el.scrubber.addEventListener('input', () => {
     player.pause();
     player.seek(Number(el.scrubber.value));
-  });
+  }, { signal });
 
   const jump = (t) => {
     if (t === null) return;
     player.pause();
     player.seek(t);
   };
-  el.previous.addEventListener('click', () => jump(events.previous(player.time)));
-  el.next.addEventListener('click', () => jump(events.next(player.time)));
+  el.previous.addEventListener('click', () => jump(events.previous(player.time)), { signal });
+  el.next.addEventListener('click', () => jump(events.next(player.time)), { signal });
 
   document.addEventListener('keydown', (e) => {
     if (e.altKey || e.ctrlKey || e.metaKey) return;
@@ -52,7 +53,7 @@ export function bindControls(el, player, events) {
       return;
     }
     e.preventDefault();
-  });
+  }, { signal });
 }
 
 /** Shows the player's state in the controls. */

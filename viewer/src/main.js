@@ -1,8 +1,10 @@
 // Entry point: reads the result embedded by `cueball view` / `simulate --html`
-// (the JSON in <script id="cueball-result">), starts the viewer and exposes a
+// (the JSON in <script id="cueball-result">), or a whole game's document
+// (`cueball game play --html`: src/game.js), starts the viewer and exposes a
 // small read-only hook for tests: window.cueballViewer.
 
 import { Viewer } from './app.js';
+import { GameList, isGame, loadGame } from './game.js';
 import { loadResult } from './model.js';
 
 function elements() {
@@ -27,22 +29,65 @@ function elements() {
     timelineLegend: get('timeline-legend'),
     timeText: get('time-text'),
     trails: get('trails'),
+    gamePanel: get('game-panel'),
+    gameTitle: get('game-title'),
+    prevShot: get('prev-shot'),
+    nextShot: get('next-shot'),
+    shotCaption: get('shot-caption'),
+    shotList: get('shot-list'),
+    gameResult: get('game-result'),
   };
 }
 
-function start(el, result) {
+// The viewer now shown (a game page replaces it shot by shot).
+let viewer = null;
+let gameList = null;
+
+function show(el, result, atEnd = false) {
   const model = loadResult(result);
-  const viewer = new Viewer(el, model);
+  if (viewer) viewer.destroy();
+  viewer = new Viewer(el, model);
+  if (atEnd) viewer.player.seek(model.duration);
+}
+
+function exposeHook() {
   window.cueballViewer = Object.freeze({
     ready: true,
-    time: () => viewer.player.time,
-    duration: () => model.duration,
-    seek: (t) => viewer.player.seek(t), // keeps playing if it was
-    play: () => viewer.player.play(),
-    pause: () => viewer.player.pause(),
-    ballPixel: (id) => viewer.ballPixel(id),
-    ghostPixel: () => viewer.ghostPixel(),
+    time: () => (viewer ? viewer.player.time : 0),
+    duration: () => (viewer ? viewer.model.duration : 0),
+    seek: (t) => viewer && viewer.player.seek(t), // keeps playing if it was
+    play: () => viewer && viewer.player.play(),
+    pause: () => viewer && viewer.player.pause(),
+    ballPixel: (id) => (viewer ? viewer.ballPixel(id) : null),
+    ghostPixel: () => (viewer ? viewer.ghostPixel() : null),
+    /** A game page: the index of the shot shown (null on a one-shot page). */
+    shot: () => (gameList ? gameList.current : null),
   });
+}
+
+function start(el, doc) {
+  if (isGame(doc)) {
+    const game = loadGame(doc);
+    gameList = new GameList(el, game, (entry) => {
+      if (entry.result) {
+        el.message.hidden = true;
+        show(el, entry.result, entry.atEnd);
+      } else {
+        // a decision before any shot: nothing on the table to show yet
+        if (viewer) viewer.destroy();
+        viewer = null;
+        showMessage(el, entry.caption);
+      }
+    });
+    if (game.entries.length === 0) {
+      showMessage(el, 'This game has no shots.');
+      return;
+    }
+    gameList.select(0);
+  } else {
+    show(el, doc);
+  }
+  exposeHook();
 }
 
 function showMessage(el, text) {
@@ -92,7 +137,7 @@ function main() {
   try {
     start(el, result);
   } catch (err) {
-    showMessage(el, `Cannot show this result: ${err.message}`);
+    showMessage(el, `Cannot show this ${isGame(result) ? 'game' : 'result'}: ${err.message}`);
     throw err;
   }
 }

@@ -9,8 +9,9 @@ export class SpeedPlot {
   /**
    * @param {HTMLCanvasElement} canvas
    * @param {(t:number) => void} onSeek
+   * @param {AbortSignal} [signal] removes the listener when aborted
    */
-  constructor(canvas, duration, onSeek) {
+  constructor(canvas, duration, onSeek, signal = undefined) {
     this.canvas = canvas;
     this.duration = duration > 0 ? duration : 1;
     this.series = null;
@@ -21,7 +22,7 @@ export class SpeedPlot {
       const x = e.clientX - rect.left;
       const width = rect.width - MARGIN.left - MARGIN.right;
       onSeek(Math.min(1, Math.max(0, (x - MARGIN.left) / width)) * this.duration);
-    });
+    }, { signal });
   }
 
   /** Shows a ball's series from speedSeries(). */

@@ -21,7 +21,7 @@ import {
   tempDir,
   VIEWER_DIR,
 } from '../scripts/cueball.mjs';
-import { TEMPLATE_PATH } from '../scripts/fill-template.mjs';
+import { fillTemplate, TEMPLATE_PATH } from '../scripts/fill-template.mjs';
 import { ballStyle } from '../src/balls.js';
 import { loadResult, stateAt } from '../src/model.js';
 import { decodePng } from './png.mjs';
@@ -337,6 +337,128 @@ describe('viewer in Chromium', { timeout: TIMEOUT }, () => {
       await page.waitForFunction(() => window.cueballViewer.time() > 1.1);
       await close();
     }
+  });
+
+  test('stripes show white caps, solids are coloured all over (the 1 and the 9 differ)', async () => {
+    const model = loadResult(breakPage.result);
+    const { page, close } = await openPage(breakPage.html);
+    const frame = await tableFrame(page, model, 0);
+    const at = async (id, dx, dy) => {
+      const s = stateAt(model, model.byId.get(id), 0);
+      const [x, y] = frame.toScreen(s.x, s.y);
+      return pixel(page, [x + dx * frame.radius, y + dy * frame.radius]);
+    };
+    const white = '#fbfaf5';
+    const oneTop = await at(1, 0, -0.78);
+    const nineTop = await at(9, 0, -0.78);
+    const nineSide = await at(9, 0.8, 0);
+    assert.ok(looksLike(oneTop, ballStyle('1').colour), `the 1 is yellow at the top: ${show(oneTop)}`);
+    assert.ok(looksLike(nineTop, white) && !looksLike(nineTop, ballStyle('1').colour), `the 9 has a white cap: ${show(nineTop)}`);
+    assert.ok(looksLike(nineSide, ballStyle('9').colour), `the 9's band is yellow: ${show(nineSide)}`);
+    const eight = await at(8, 0.8, 0);
+    assert.ok(looksLike(eight, '#121212'), `the 8 is black: ${show(eight)}`);
+    await close();
+  });
+
+  test('a game document: one row per shot, rows, [ ] and the buttons load shots, decisions show the table', async () => {
+    const cut = simulateToPage(dir, 'game-cut', resolve(VIEWER_DIR, 'test/fixtures/scenarios/cut-shot.json'));
+    const game = {
+      game: {
+        kind: 'nine_ball',
+        players: ['planner', 'ghost_ball'],
+        winner: 1,
+        end_reason: 'the 9 potted legally (WPA 2.1)',
+        shots: [
+          { player: 0, caption: 'shot 1, player 0: nothing potted', scores: [0, 0], foul: null, result: breakPage.result },
+          { player: 1, caption: 'shot 2, player 1: 1 potted; foul: scratch (WPA 6.1)', scores: [0, 0], foul: 'scratch', result: cut.result },
+          { player: 0, caption: 'shot 3, player 0: pass (WPA 2.4)', scores: [0, 0], decision: 'pass' },
+          { player: 1, caption: 'shot 4, player 1: 9 potted (WPA 2.1)', scores: [0, 1], foul: null, result: breakPage.result },
+        ],
+      },
+    };
+    const html = join(dir, 'game.html');
+    writeFileSync(html, fillTemplate(readFileSync(TEMPLATE_PATH, 'utf8'), JSON.stringify(game)));
+    const { page, close } = await openPage(html);
+    const shot = () => hook(page, () => window.cueballViewer.shot());
+    const duration = () => hook(page, () => window.cueballViewer.duration());
+    const rows = page.locator('[data-testid=shot-list] li');
+    assert.equal(await rows.count(), 4, 'one row per shot');
+    assert.equal(await shot(), 0);
+    assert.equal(await duration(), breakPage.result.end_time);
+    assert.match(await rows.nth(0).getAttribute('class'), /current/);
+    assert.match(await page.locator('[data-testid=game-result]').innerText(), /player 1 \(ghost_ball\) wins/);
+    assert.match(await page.locator('[data-testid=shot-1]').innerText(), /foul: scratch/);
+
+    // a click on a row loads its result
+    await page.click('[data-testid=shot-1]');
+    assert.equal(await shot(), 1);
+    assert.equal(await duration(), cut.result.end_time);
+    assert.notEqual(cut.result.end_time, breakPage.result.end_time);
+    assert.match(await rows.nth(1).getAttribute('class'), /current/);
+    assert.doesNotMatch(await rows.nth(0).getAttribute('class'), /current/);
+    assert.equal(await page.locator('[data-testid=shot-caption]').innerText(), game.game.shots[1].caption);
+    assert.equal(await page.locator('[data-testid=event-list] li').count(), cut.result.events.length, 'the events of this shot only');
+    assert.equal(await page.locator('[data-testid=ball-select] option').count(), cut.result.balls.length);
+
+    // the loaded shot plays (its controls are bound once: a double binding would toggle twice)
+    await page.click('[data-testid=play]');
+    assert.equal(await page.locator('[data-testid=play]').getAttribute('data-state'), 'playing');
+    await page.waitForFunction(() => window.cueballViewer.time() > 0.05);
+
+    // ] : the decision shows the table as it stands (the shot before at its end) with the caption
+    await page.locator('body').press(']');
+    assert.equal(await shot(), 2);
+    assert.equal(await hook(page, () => window.cueballViewer.time()), cut.result.end_time);
+    assert.equal(await page.locator('[data-testid=shot-caption]').innerText(), 'shot 3, player 0: pass (WPA 2.4)');
+    assert.match(await rows.nth(2).getAttribute('class'), /decision/);
+    const centre = await ballOnScreen(page, 0);
+    const cue = cut.result.balls.find((b) => b.id === 0);
+    if (!cue.pocketed) assert.ok(looksLike(await pixel(page, centre), ballStyle('cue').colour), 'the cue ball where it stopped');
+
+    await page.click('[data-testid=next-shot]');
+    assert.equal(await shot(), 3);
+    assert.equal(await page.locator('[data-testid=next-shot]').isDisabled(), true);
+    await page.locator('body').press('[');
+    await page.click('[data-testid=prev-shot]');
+    assert.equal(await shot(), 1);
+    assert.equal(await duration(), cut.result.end_time);
+    await close();
+  });
+
+  test('a game page written by `cueball game play --html`: every shot loads, decisions and snooker too', async () => {
+    for (const [kind, players] of [['nine_ball', 'ghost_ball,random'], ['snooker', 'ghost_ball,ghost_ball']]) {
+      const html = join(dir, `played-${kind}.html`);
+      cueball(['game', 'play', '--game', kind, '--players', players, '--seed', '2', '--html', html]);
+      const text = readFileSync(html, 'utf8');
+      const open = '<script type="application/json" id="cueball-result">';
+      const from = text.indexOf(open) + open.length;
+      const doc = JSON.parse(text.slice(from, text.indexOf('</script>', from)));
+      const shots = doc.game.shots;
+      const { page, close } = await openPage(html);
+      assert.equal(await page.locator('[data-testid=shot-list] li').count(), shots.length, `${kind}: one row per shot`);
+      // every shot, by ]: its own result (a decision: the table at rest, duration 0)
+      for (let i = 0; i < shots.length; ++i) {
+        if (i > 0) await page.locator('body').press(']');
+        assert.equal(await hook(page, () => window.cueballViewer.shot()), i);
+        assert.equal(await hook(page, () => window.cueballViewer.duration()), shots[i].result.end_time, `${kind} shot ${i}`);
+      }
+      assert.equal(await page.locator('[data-testid=shot-caption]').innerText(), shots[shots.length - 1].caption);
+      await close();
+    }
+  });
+
+  test('a game page in a narrow window keeps the table visible', async () => {
+    const game = { game: { kind: 'nine_ball', players: ['a', 'b'], winner: null, end_reason: '', shots: [
+      { player: 0, caption: 'shot 1, player 0: nothing potted', scores: [0, 0], foul: null, result: breakPage.result },
+    ] } };
+    const html = join(dir, 'game-narrow.html');
+    writeFileSync(html, fillTemplate(readFileSync(TEMPLATE_PATH, 'utf8'), JSON.stringify(game)));
+    const { page, close } = await openPage(html, { width: 600, height: 900 });
+    const box = await page.locator('[data-testid=table-canvas]').boundingBox();
+    assert.ok(box.width > 500 && box.height > 200, `table ${box.width}×${box.height}`);
+    assert.ok(await page.locator('[data-testid=shot-list]').isVisible());
+    assert.match(await page.locator('[data-testid=game-result]').innerText(), /no result yet/);
+    await close();
   });
 
   test('the template alone asks for a result file, then shows it', async () => {

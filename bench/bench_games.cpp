@@ -1,7 +1,8 @@
-// Benchmarks of whole games (src/games/, src/agents/): 9-ball games per
-// second between two random agents (each iteration a whole game from its
-// own seed: the break, every shot simulated and judged), the same between
-// two ghost-ball agents with tournament noise, and the cost of one agent
+// Benchmarks of whole games (src/games/, src/agents/): games per second of
+// every discipline between two random agents (each iteration a whole game
+// from its own seed: the break, every shot simulated and judged; the
+// discipline's default config), the pocket games between two ghost-ball
+// agents with tournament noise, and the cost of one agent
 // decision on a mid-rack table: the ghost-ball agent's, the planner agent's
 // at its default budget and with position play, and its ball in hand.
 // Counters: games per second and shots per game, or engine runs per
@@ -20,10 +21,10 @@ namespace {
 
 using namespace cueball;
 
-void play_games(benchmark::State& st, AgentKind kind, bool noise) {
+void play_games(benchmark::State& st, GameKind game_kind, AgentKind kind, bool noise) {
   AgentOptions agent;
   agent.kind = kind;
-  GameConfig config = default_config(GameKind::nine_ball);
+  GameConfig config = default_config(game_kind);
   if (noise) config.noise = tournament_noise();
   std::uint64_t game = 0;
   long long shots = 0;
@@ -41,11 +42,17 @@ void play_games(benchmark::State& st, AgentKind kind, bool noise) {
   st.counters["shots_per_game"] = static_cast<double>(shots) / static_cast<double>(st.iterations());
 }
 
-void BM_RandomVsRandomNineBall(benchmark::State& st) { play_games(st, AgentKind::random, false); }
-BENCHMARK(BM_RandomVsRandomNineBall)->Unit(benchmark::kMillisecond);
+void BM_RandomVsRandom(benchmark::State& st) {
+  play_games(st, static_cast<GameKind>(st.range(0)), AgentKind::random, false);
+  st.SetLabel(to_string(static_cast<GameKind>(st.range(0))));
+}
+BENCHMARK(BM_RandomVsRandom)->DenseRange(0, 4)->Unit(benchmark::kMillisecond);
 
-void BM_GhostBallVsGhostBallNineBall(benchmark::State& st) { play_games(st, AgentKind::ghost_ball, true); }
-BENCHMARK(BM_GhostBallVsGhostBallNineBall)->Unit(benchmark::kMillisecond);
+void BM_GhostBallVsGhostBall(benchmark::State& st) {
+  play_games(st, static_cast<GameKind>(st.range(0)), AgentKind::ghost_ball, true);
+  st.SetLabel(to_string(static_cast<GameKind>(st.range(0))));
+}
+BENCHMARK(BM_GhostBallVsGhostBall)->DenseRange(0, 3)->Unit(benchmark::kMillisecond);
 
 // A mid-rack 9-ball table: the 3 to play, five balls left, the cue ball in
 // the middle (or in hand anywhere).

@@ -20,28 +20,6 @@ constexpr int kNine = 9;
 
 bool contains(const std::vector<int>& v, int id) { return std::find(v.begin(), v.end(), id) != v.end(); }
 
-
-// After a foul or a push-out, a pocketed 9 comes back (WPA 2.6).
-void respot_nine(GameState& next, Ruling& ruling, const std::vector<int>& pocketed) {
-  if (!contains(pocketed, kNine)) return;
-  if (respot_on_long_string(next.table, kNine, 0)) ruling.respotted.push_back(kNine);
-}
-
-// A foul (WPA 6; 2.7): ball in hand anywhere for the opponent, a pocketed 9
-// respotted, and the third foul in a row loses (WPA 2.8).
-void foul(GameState& next, Ruling& ruling, Foul f, int shooter, const std::vector<int>& pocketed, std::string reason) {
-  pool_foul(next, ruling, f, shooter, PlacementRegion::Kind::anywhere, std::move(reason));
-  respot_nine(next, ruling, pocketed);
-  const int limit = next.config.fouls_to_lose;
-  if (limit > 0 && of(next.fouls_in_a_row, shooter) >= limit)
-    win_rack(next, ruling, opponent(shooter), "WPA 2.8: " + std::to_string(limit) + " consecutive fouls lose the game");
-}
-
-void set_on(GameState& next) {
-  const int lowest = lowest_object_ball(next.table);
-  next.on = lowest < 0 ? std::vector<int>{} : std::vector<int>{lowest};
-}
-
 // Break shot (WPA 2.3): the lowest ball first, then a ball pocketed or at
 // least four object balls driven to a rail, else a foul.
 Judgement judge_break(const ShotContext& shot, Judgement j, const std::vector<int>& pocketed) {
@@ -55,7 +33,7 @@ Judgement judge_break(const ShotContext& shot, Judgement j, const std::vector<in
     reason = "WPA 2.3: no ball pocketed and fewer than four object balls driven to a rail";
   }
   if (f) {
-    foul(next, ruling, *f, shooter, pocketed, reason);
+    rotation_foul(next, ruling, *f, shooter, pocketed, kNine, "WPA 2.8", "game", reason);
     return j;
   }
   of(next.fouls_in_a_row, shooter) = 0;
@@ -64,7 +42,7 @@ Judgement judge_break(const ShotContext& shot, Judgement j, const std::vector<in
       win_rack(next, ruling, shooter, "WPA 2.5: the 9 pocketed on a legal break wins");
       return j;
     }
-    respot_nine(next, ruling, pocketed);  // the variant: respotted, and the breaker continues
+    respot_if_pocketed(next, ruling, pocketed, kNine);  // the variant: respotted, and the breaker continues
   }
   next.push_out_available = next.config.push_out;  // WPA 2.4: the shot after a legal break
   if (pocketed.empty()) {
@@ -77,27 +55,6 @@ Judgement judge_break(const ShotContext& shot, Judgement j, const std::vector<in
   return j;
 }
 
-// Push-out (WPA 2.4): 6.2 and 6.3 suspended; the other player then chooses
-// who shoots next. A pocketed 9 is respotted (WPA 2.6), other balls stay down.
-Judgement judge_push_out(const ShotContext& shot, Judgement j, const std::vector<int>& pocketed) {
-  GameState& next = j.next;
-  Ruling& ruling = j.ruling;
-  const int shooter = shot.shooter;
-  std::string reason;
-  const std::optional<Foul> f = pool_standard_foul(shot, {}, false, reason);
-  if (f == Foul::miscue || f == Foul::scratch) {
-    foul(next, ruling, *f, shooter, pocketed, reason);
-    return j;
-  }
-  of(next.fouls_in_a_row, shooter) = 0;
-  respot_nine(next, ruling, pocketed);
-  next.phase = GamePhase::decision;
-  next.to_shoot = opponent(shooter);
-  next.decisions = {Decision::play, Decision::pass};
-  ruling.turn_over = true;
-  ruling.reason = "WPA 2.4: push-out; the opponent plays from here or passes it back";
-  return j;
-}
 
 }  // namespace
 
@@ -107,7 +64,7 @@ GameState nine_ball_new_game(GameState base) {
   PlacementRegion kitchen;
   kitchen.kind = PlacementRegion::Kind::behind_head_string;  // WPA 2.3(a)
   base.ball_in_hand = kitchen;
-  set_on(base);
+  set_on_lowest(base);
   return base;
 }
 
@@ -133,12 +90,12 @@ Judgement nine_ball_judge_shot(const ShotContext& shot) {
   if (shot.before.phase == GamePhase::break_shot) {
     j = judge_break(shot, std::move(j), pocketed);
   } else if (shot.action.push_out) {
-    j = judge_push_out(shot, std::move(j), pocketed);
+    j = judge_push_out(shot, std::move(j), pocketed, kNine, "WPA 2.4", "WPA 2.8", "game");
   } else {
     std::string reason;
     const std::optional<Foul> f = pool_standard_foul(shot, shot.before.on, true, reason);
     if (f) {
-      foul(next, j.ruling, *f, shooter, pocketed, reason);
+      rotation_foul(next, j.ruling, *f, shooter, pocketed, kNine, "WPA 2.8", "game", reason);
     } else {
       of(next.fouls_in_a_row, shooter) = 0;
       if (contains(pocketed, kNine)) {
@@ -152,7 +109,7 @@ Judgement nine_ball_judge_shot(const ShotContext& shot) {
       }
     }
   }
-  if (!j.next.over) set_on(j.next);
+  if (!j.next.over) set_on_lowest(j.next);
   return j;
 }
 

@@ -142,4 +142,44 @@ PlacementRegion region_of(PlacementRegion::Kind kind) {
   return r;
 }
 
+// ------------------------------------------------------------------ the rotation games
+
+void set_on_lowest(GameState& next) {
+  const int lowest = lowest_object_ball(next.table);
+  next.on = lowest < 0 ? std::vector<int>{} : std::vector<int>{lowest};
+}
+
+void rotation_foul(GameState& next, Ruling& ruling, Foul foul, int shooter, const std::vector<int>& pocketed,
+                   int game_ball, const std::string& rule, const std::string& what, std::string reason) {
+  pool_foul(next, ruling, foul, shooter, PlacementRegion::Kind::anywhere, std::move(reason));
+  respot_if_pocketed(next, ruling, pocketed, game_ball);
+  const int limit = next.config.fouls_to_lose;
+  if (limit > 0 && of(next.fouls_in_a_row, shooter) >= limit)
+    win_rack(next, ruling, opponent(shooter),
+             rule + ": " + std::to_string(limit) + " consecutive fouls lose the " + what);
+}
+
+void offer_play_or_pass(GameState& next, Ruling& ruling, int shooter) {
+  next.phase = GamePhase::decision;
+  next.to_shoot = opponent(shooter);
+  next.decisions = {Decision::play, Decision::pass};
+  ruling.turn_over = true;
+}
+
+Judgement judge_push_out(const ShotContext& shot, Judgement j, const std::vector<int>& pocketed, int game_ball,
+                         const std::string& rule, const std::string& three_foul_rule, const std::string& what) {
+  const int shooter = shot.shooter;
+  std::string reason;
+  const std::optional<Foul> f = pool_standard_foul(shot, {}, false, reason);
+  if (f == Foul::miscue || f == Foul::scratch) {
+    rotation_foul(j.next, j.ruling, *f, shooter, pocketed, game_ball, three_foul_rule, what, reason);
+    return j;
+  }
+  of(j.next.fouls_in_a_row, shooter) = 0;
+  respot_if_pocketed(j.next, j.ruling, pocketed, game_ball);
+  offer_play_or_pass(j.next, j.ruling, shooter);
+  j.ruling.reason = rule + ": push-out; the opponent plays from here or passes it back";
+  return j;
+}
+
 }  // namespace cueball

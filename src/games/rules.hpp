@@ -106,6 +106,28 @@ int lowest_object_ball(const Scenario& table);
 /// cited, completed with what the decision did.
 Judgement play_or_pass(const GameState& state, Decision decision, const std::string& rule);
 
+// 9-ball and 10-ball, the rotation games: the ball on is the lowest, the
+// game ball (the 9, the 10) comes back after a foul or a push-out.
+
+/// on = {the lowest object ball}, or none when the table is empty.
+void set_on_lowest(GameState& next);
+
+/// A foul of a rotation game (WPA 2.7, 9.10): ball in hand anywhere for the
+/// opponent, the game ball respotted when pocketed (WPA 2.6, 9.9), and the
+/// config's consecutive fouls lose (WPA 2.8, 9.11; `rule` and `what` name
+/// them in the reason: "<rule>: 3 consecutive fouls lose the <what>").
+void rotation_foul(GameState& next, Ruling& ruling, Foul foul, int shooter, const std::vector<int>& pocketed,
+                   int game_ball, const std::string& rule, const std::string& what, std::string reason);
+
+/// The push-out of a rotation game (WPA 2.4, 9.4): wrong ball first and no
+/// rail suspended, a scratch still a foul, the game ball respotted, then the
+/// opponent plays from there or passes it back. `rule` is cited in the reason.
+Judgement judge_push_out(const ShotContext& shot, Judgement j, const std::vector<int>& pocketed, int game_ball,
+                         const std::string& rule, const std::string& three_foul_rule, const std::string& what);
+
+/// The incoming player chooses who shoots next: phase decision, {play, pass}.
+void offer_play_or_pass(GameState& next, Ruling& ruling, int shooter);
+
 /// The pool games: `winner` wins the rack (scores[winner] += 1, end_game).
 void win_rack(GameState& next, Ruling& ruling, int winner, std::string reason);
 

@@ -38,32 +38,6 @@ constexpr int kTen = 10;
 
 bool contains(const std::vector<int>& v, int id) { return std::find(v.begin(), v.end(), id) != v.end(); }
 
-void set_on(GameState& next) {
-  const int lowest = lowest_object_ball(next.table);
-  next.on = lowest < 0 ? std::vector<int>{} : std::vector<int>{lowest};
-}
-
-// A foul (WPA 9.10): ball in hand anywhere for the opponent, a pocketed 10
-// spotted (WPA 9.9), and the third foul in a row loses (WPA 9.11).
-void foul(GameState& next, Ruling& ruling, Foul f, int shooter, const std::vector<int>& pocketed, std::string reason) {
-  pool_foul(next, ruling, f, shooter, PlacementRegion::Kind::anywhere, std::move(reason));
-  respot_if_pocketed(next, ruling, pocketed, kTen);
-  const int limit = next.config.fouls_to_lose;
-  if (limit > 0 && of(next.fouls_in_a_row, shooter) >= limit)
-    win_rack(next, ruling, opponent(shooter),
-             "WPA 9.11: " + std::to_string(limit) + " consecutive fouls lose the rack");
-}
-
-
-// The incoming player chooses who shoots next (WPA 9.4 after a push-out,
-// 9.7 after a wrongfully pocketed ball).
-void offer_choice(GameState& next, Ruling& ruling, int shooter) {
-  next.phase = GamePhase::decision;
-  next.to_shoot = opponent(shooter);
-  next.decisions = {Decision::play, Decision::pass};
-  ruling.turn_over = true;
-}
-
 // Break shot (WPA 9.3): the 1 first, then a ball pocketed or at least four
 // object balls driven to a rail, else a foul.
 Judgement judge_break(const ShotContext& shot, Judgement j, const std::vector<int>& pocketed) {
@@ -77,7 +51,7 @@ Judgement judge_break(const ShotContext& shot, Judgement j, const std::vector<in
     reason = "WPA 9.3(b): no ball pocketed and fewer than four object balls driven to a rail";
   }
   if (f) {
-    foul(next, ruling, *f, shooter, pocketed, reason);
+    rotation_foul(next, ruling, *f, shooter, pocketed, kTen, "WPA 9.11", "rack", reason);
     return j;
   }
   of(next.fouls_in_a_row, shooter) = 0;
@@ -94,25 +68,6 @@ Judgement judge_break(const ShotContext& shot, Judgement j, const std::vector<in
   return j;
 }
 
-// Push-out (WPA 9.4): 6.2 and 6.3 suspended; the other player then chooses
-// who shoots next. A pocketed 10 is spotted, other balls stay down.
-Judgement judge_push_out(const ShotContext& shot, Judgement j, const std::vector<int>& pocketed) {
-  GameState& next = j.next;
-  Ruling& ruling = j.ruling;
-  const int shooter = shot.shooter;
-  std::string reason;
-  const std::optional<Foul> f = pool_standard_foul(shot, {}, false, reason);
-  if (f == Foul::miscue || f == Foul::scratch) {
-    foul(next, ruling, *f, shooter, pocketed, reason);
-    return j;
-  }
-  of(next.fouls_in_a_row, shooter) = 0;
-  respot_if_pocketed(next, ruling, pocketed, kTen);
-  offer_choice(next, ruling, shooter);
-  ruling.reason = "WPA 9.4: push-out; the opponent plays from here or passes it back";
-  return j;
-}
-
 // A called shot (WPA 9.5, 9.7, 9.8).
 Judgement judge_called_shot(const ShotContext& shot, Judgement j, const std::vector<int>& pocketed) {
   GameState& next = j.next;
@@ -121,7 +76,7 @@ Judgement judge_called_shot(const ShotContext& shot, Judgement j, const std::vec
   std::string reason;
   const std::optional<Foul> f = pool_standard_foul(shot, shot.before.on, true, reason);
   if (f) {
-    foul(next, ruling, *f, shooter, pocketed, reason);
+    rotation_foul(next, ruling, *f, shooter, pocketed, kTen, "WPA 9.11", "rack", reason);
     return j;
   }
   of(next.fouls_in_a_row, shooter) = 0;
@@ -136,7 +91,7 @@ Judgement judge_called_shot(const ShotContext& shot, Judgement j, const std::vec
   if (called_pot) {
     ruling.reason = "WPA 9.8: the called ball pocketed in the called pocket: the shooter continues";
   } else if (!pocketed.empty()) {
-    offer_choice(next, ruling, shooter);
+    offer_play_or_pass(next, ruling, shooter);
     ruling.reason = dropped_in >= 0 ? "WPA 9.7: the called ball dropped in pocket " + std::to_string(dropped_in) +
                                           ", not the called one (no foul)"
                                     : std::string("WPA 9.7: a ball other than the called one was pocketed (no foul)");
@@ -156,7 +111,7 @@ GameState ten_ball_new_game(GameState base) {
   base.phase = GamePhase::break_shot;
   base.to_shoot = base.breaker;
   base.ball_in_hand = region_of(PlacementRegion::Kind::behind_head_string);  // WPA 9.3(a)
-  set_on(base);
+  set_on_lowest(base);
   return base;
 }
 
@@ -183,10 +138,10 @@ Judgement ten_ball_judge_shot(const ShotContext& shot) {
   if (shot.before.phase == GamePhase::break_shot)
     j = judge_break(shot, std::move(j), pocketed);
   else if (shot.action.push_out)
-    j = judge_push_out(shot, std::move(j), pocketed);
+    j = judge_push_out(shot, std::move(j), pocketed, kTen, "WPA 9.4", "WPA 9.11", "rack");
   else
     j = judge_called_shot(shot, std::move(j), pocketed);
-  if (!j.next.over) set_on(j.next);
+  if (!j.next.over) set_on_lowest(j.next);
   return j;
 }
 

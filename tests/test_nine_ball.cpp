@@ -20,15 +20,7 @@ constexpr double kDeg = std::numbers::pi / 180.0;
 
 // A 9-ball game in play (after the break) with exactly these balls.
 GameState in_play(const std::vector<std::pair<int, Vec2>>& balls) {
-  GameState s = new_game(default_config(GameKind::nine_ball));
-  s.phase = GamePhase::play;
-  s.ball_in_hand.reset();
-  test::place_balls(s, balls);
-  int lowest = 99;
-  for (const auto& [id, p] : balls)
-    if (id != 0) lowest = std::min(lowest, id);
-  s.on = {lowest};
-  return s;
+  return test::rotation_in_play(GameKind::nine_ball, balls);
 }
 
 // The bottom-left corner pocket's centre and a straight line into it.

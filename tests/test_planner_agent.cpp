@@ -11,6 +11,7 @@
 #include "cueball/agents/agent.hpp"
 #include "cueball/games/break_shot.hpp"
 #include "cueball/core/random.hpp"
+#include "game_actions.hpp"
 #include "expect_invalid.hpp"
 
 namespace cueball {
@@ -25,21 +26,7 @@ AgentOptions cheap() {
 
 // A 9-ball game in play (after the break) with exactly these balls.
 GameState in_play(const std::vector<std::pair<int, Vec2>>& balls) {
-  GameState s = new_game(default_config(GameKind::nine_ball));
-  s.phase = GamePhase::play;
-  s.ball_in_hand.reset();
-  s.table.balls.clear();
-  int lowest = 99;
-  for (const auto& [id, p] : balls) {
-    SimulationBall b;
-    b.id = id;
-    b.name = id == 0 ? "cue" : std::to_string(id);
-    b.state.position = p;
-    s.table.balls.push_back(b);
-    if (id != 0) lowest = std::min(lowest, id);
-  }
-  s.on = {lowest};
-  return s;
+  return test::rotation_in_play(GameKind::nine_ball, balls);
 }
 
 bool contains(const std::vector<int>& v, int id) { return std::find(v.begin(), v.end(), id) != v.end(); }

@@ -24,15 +24,7 @@ constexpr int kBottomLeft = 0;  // pocket index of the bottom-left corner (pool_
 
 // A 10-ball game in play (after the break) with exactly these balls.
 GameState in_play(const std::vector<std::pair<int, Vec2>>& balls) {
-  GameState s = new_game(default_config(GameKind::ten_ball));
-  s.phase = GamePhase::play;
-  s.ball_in_hand.reset();
-  test::place_balls(s, balls);
-  int lowest = 99;
-  for (const auto& [id, p] : balls)
-    if (id != 0) lowest = std::min(lowest, id);
-  s.on = {lowest};
-  return s;
+  return test::rotation_in_play(GameKind::ten_ball, balls);
 }
 
 TEST(TenBall, NewGameIsATriangleOfTenBrokenFromTheKitchen) {

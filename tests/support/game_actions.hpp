@@ -24,6 +24,20 @@ inline void place_balls(GameState& s, const std::vector<std::pair<int, Vec2>>& b
   }
 }
 
+/// A rotation game (9-ball, 10-ball) in play after the break with exactly
+/// these balls: no ball in hand, the lowest ball on.
+inline GameState rotation_in_play(GameKind kind, const std::vector<std::pair<int, Vec2>>& balls) {
+  GameState s = new_game(default_config(kind));
+  s.phase = GamePhase::play;
+  s.ball_in_hand.reset();
+  place_balls(s, balls);
+  int lowest = 99;
+  for (const auto& [id, p] : balls)
+    if (id != 0 && id < lowest) lowest = id;
+  s.on = {lowest};
+  return s;
+}
+
 /// The direction from `from` to `to`, degrees anticlockwise from +x.
 inline double aim_deg(Vec2 from, Vec2 to) {
   return std::atan2(to.y - from.y, to.x - from.x) * 180.0 / std::numbers::pi;

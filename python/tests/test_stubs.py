@@ -16,7 +16,7 @@ from cueball import _cueball
 STUB = pathlib.Path(__file__).resolve().parents[1] / "cueball" / "_cueball.pyi"
 # The extension's submodule games has its own stub (cueball/games.pyi).
 GAMES_STUB = STUB.with_name("games.pyi")
-SUBMODULES = {"games"}
+SUBMODULES = {"games", "_rl"}  # _rl: cueball.rl's native part, typed by rl.py itself
 # Names only for type checkers: the dicts' TypedDicts and the private aliases.
 STUB_ONLY = {"EventArrays", "BallArrays", "SegmentArrays", "StateArrays", "ManyOutcomes", "_Float", "_Int", "_Vec", "_Scenario"}
 

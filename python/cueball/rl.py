@@ -355,11 +355,20 @@ class CueballEnv(_EnvBase):  # type: ignore[misc]
 
     def reset(self, *, seed: int | None = None, options: Mapping[str, Any] | None = None
               ) -> tuple[NDArray[np.float32], dict[str, Any]]:
-        """A new game (seeded: episode 0 of that seed; else the next episode); plays the opponent up to the learner's turn."""
+        """A new game (seeded: episode 0 of that seed; else the next episode); plays the opponent up to the learner's turn.
+
+        options={'state': s} starts from the cueball.games.GameState s instead (a drill, a saved position).
+        """
         if seed is not None:
             for i, space in enumerate((self.observation_space, self.action_space)):
                 space.seed(seed + i)
-        self._table.reset(seed)
+        start = None if options is None else options.get("state")
+        if start is not None:  # a given position (a cueball.games.GameState of this game)
+            if seed is not None:
+                self._table.reset(seed)  # the table's seeds restart from `seed`
+            self._table.reset_from(start)
+        else:
+            self._table.reset(seed)
         if self.options.callable_opponent is not None:
             self._seat = int(self.options.seat) if self.options.seat >= 0 else int(self._table.game_seed % 2)
             self._play_callable(0.0, [])

@@ -255,6 +255,14 @@ void bind_rl(py::module_& m) {
              }
              return observation_array(t.table.observation);
            })
+      .def("reset_from",
+           [](NativeTable& t, const cueball::GameState& start) {
+             {
+               py::gil_scoped_release release;
+               cueball::env_reset_from(t.options, t.table, start);
+             }
+             return observation_array(t.table.observation);
+           })
       .def("step",
            [](NativeTable& t, std::array<double, 5> strike, std::array<double, 2> place, int ball, int pocket,
               int decision, int push_out) {

@@ -55,7 +55,8 @@ void tip_offsets(double s, double h, double& side, double& height) {
     side = height = 0.0;
     return;
   }
-  const double k = kMiscueOffsetFraction * std::max(std::abs(s), std::abs(h)) / r;
+  // A hair inside the limit, so that rounding never puts the rim beyond it.
+  const double k = kMiscueOffsetFraction * (1.0 - 1e-12) * std::max(std::abs(s), std::abs(h)) / r;
   side = s * k;
   height = h * k;
 }

@@ -3,6 +3,7 @@
 // break, the opponent's replies), the reward, the observation.
 #include "cueball/rl/environment.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 #include <utility>
@@ -192,6 +193,25 @@ void env_reset(const EnvOptions& options, EnvTable& table, std::optional<std::ui
       return;
     }
   }
+}
+
+void env_reset_from(const EnvOptions& options, EnvTable& table, const GameState& start) {
+  if (start.config.kind != options.game)
+    throw InvalidArgument("state", std::string("a ") + to_string(start.config.kind) + " state for a " +
+                                       to_string(options.game) + " environment");
+  if (start.over) throw InvalidArgument("state", "the game is over (" + start.end_reason + ")");
+  table.episode += 1;
+  start_episode(options, table);
+  const CueStrikeNoise noise = table.state.config.noise;
+  table.state = start;
+  table.state.config.noise = noise;
+  table.state.config.max_shots = std::max(start.config.max_shots, start.shots + 1);
+  if (options.opponent.kind && options.seat < 0) table.learner = start.to_shoot;
+  if (table.record_steps) table.start = table.state;
+  EnvStepResult ignored;
+  StepRun run{options, table, ignored};
+  advance(run);
+  finish(run);
 }
 
 EnvStepResult env_step(const EnvOptions& options, EnvTable& table, const EnvAction& action) {

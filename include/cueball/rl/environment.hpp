@@ -264,6 +264,13 @@ struct EnvStepResult {
 /// episode is drawn (up to 100 in a row).
 void env_reset(const EnvOptions& options, EnvTable& table, std::optional<std::uint64_t> seed = std::nullopt);
 
+/// A new episode from `start` (a game of options.game, not over: a
+/// drill, a layout to practise, a saved position): its balls, its player to
+/// act and its rules' state, with the episode's noise; the learner's seat
+/// is options.seat, or with -1 the player to act in `start`. Throws
+/// InvalidArgument("state") for another discipline or a game that is over.
+void env_reset_from(const EnvOptions& options, EnvTable& table, const GameState& start);
+
 /// One action of the player to act on `table` (the learner, or in
 /// self-play whoever acts), then the opponent's replies; updates the
 /// observation. The table's game must not be over (InvalidArgument "step").

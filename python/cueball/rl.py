@@ -471,7 +471,14 @@ class TwoPlayerEnv:
             to_shoot if to_shoot in self.agents else self.agents[0])
 
     def reset(self, seed: int | None = None, options: Mapping[str, Any] | None = None) -> None:
-        self._table.reset(seed)
+        """A new game; options={'state': s} starts from the cueball.games.GameState s instead."""
+        start = None if options is None else options.get("state")
+        if start is not None:
+            if seed is not None:
+                self._table.reset(seed)
+            self._table.reset_from(start)
+        else:
+            self._table.reset(seed)
         self.agents = list(self.possible_agents)
         self.rewards = {a: 0.0 for a in self.agents}
         self._cumulative_rewards = {a: 0.0 for a in self.agents}

@@ -146,22 +146,22 @@ int EnvTable::viewer() const { return learner >= 0 ? learner : state.to_shoot; }
 
 void validate(const EnvOptions& options) {
   if (options.max_shots < 1 || options.max_shots > 100000)
-    throw InvalidArgument("max_shots", std::to_string(options.max_shots) + " is out of range [1, 100000]");
+    throw InvalidArgument("max_shots", options.max_shots, "[1, 100000]", "shots and decisions a game may last");
   if (!(options.max_speed > kEnvMinSpeed && options.max_speed <= 12.0))
-    throw InvalidArgument("max_speed", num(options.max_speed) + " m/s is out of range (0.2, 12]");
+    throw InvalidArgument("max_speed", options.max_speed, "(0.2, 12]", "m/s, the cue speed of strike[0] = 1");
   if (options.seat < -1 || options.seat > 1)
-    throw InvalidArgument("seat", std::to_string(options.seat) + " is out of range: 0, 1 or -1 (drawn per episode)");
+    throw InvalidArgument("seat", options.seat, "0, 1 or -1", "the learner's seat; -1: drawn per episode");
   validate(options.noise.base);
   const NoiseRange& n = options.noise;
   if (!(n.scale_min >= 0.0 && n.scale_max >= n.scale_min && n.scale_max <= 100.0))
-    throw InvalidArgument("noise.scale", "[" + num(n.scale_min) + ", " + num(n.scale_max) +
+    throw InvalidArgument("noise.scale", "noise.scale = [" + num(n.scale_min) + ", " + num(n.scale_max) +
                                              "] is not a range within [0, 100]");
   if (options.opponent.kind && (options.opponent.simulations < 1 || options.opponent.simulations > 1000000))
-    throw InvalidArgument("opponent.simulations",
-                          std::to_string(options.opponent.simulations) + " is out of range [1, 1000000]");
+    throw InvalidArgument("opponent.simulations", options.opponent.simulations, "[1, 1000000]",
+                          "engine runs of an opponent's decision");
   const RewardWeights& w = options.reward;
   for (const double v : {w.win, w.points, w.pots, w.fouls, w.illegal})
-    if (!std::isfinite(v)) throw InvalidArgument("reward", "every weight must be finite");
+    if (!std::isfinite(v)) throw InvalidArgument("reward", "reward: every weight must be finite");
 }
 
 GameConfig env_game_config(const EnvOptions& options) {
@@ -197,9 +197,9 @@ void env_reset(const EnvOptions& options, EnvTable& table, std::optional<std::ui
 
 void env_reset_from(const EnvOptions& options, EnvTable& table, const GameState& start) {
   if (start.config.kind != options.game)
-    throw InvalidArgument("state", std::string("a ") + to_string(start.config.kind) + " state for a " +
+    throw InvalidArgument("state", std::string("state: a ") + to_string(start.config.kind) + " state for a " +
                                        to_string(options.game) + " environment");
-  if (start.over) throw InvalidArgument("state", "the game is over (" + start.end_reason + ")");
+  if (start.over) throw InvalidArgument("state", "state: the game is over (" + start.end_reason + ")");
   table.episode += 1;
   start_episode(options, table);
   const CueStrikeNoise noise = table.state.config.noise;
@@ -215,7 +215,7 @@ void env_reset_from(const EnvOptions& options, EnvTable& table, const GameState&
 }
 
 EnvStepResult env_step(const EnvOptions& options, EnvTable& table, const EnvAction& action) {
-  if (table.state.over) throw InvalidArgument("step", "the episode is over: reset the table first");
+  if (table.state.over) throw InvalidArgument("step", "step: the episode is over; reset the table first");
   EnvStepResult result;
   result.player = table.state.to_shoot;
   StepRun run{options, table, result};

@@ -65,10 +65,9 @@ void for_each_table(const VectorEnvironment& env, const Work& work) {
 VectorEnvironment make_vector_environment(const EnvOptions& options, int n, int threads, std::uint64_t seed) {
   validate(options);
   if (n < 1 || n > kMaxVectorTables)
-    throw InvalidArgument("n", std::to_string(n) + " is out of range [1, " + std::to_string(kMaxVectorTables) + "]");
+    throw InvalidArgument("n", n, "[1, " + std::to_string(kMaxVectorTables) + "]", "tables");
   if (threads < 1 || threads > kMaxVectorThreads)
-    throw InvalidArgument("threads",
-                          std::to_string(threads) + " is out of range [1, " + std::to_string(kMaxVectorThreads) + "]");
+    throw InvalidArgument("threads", threads, "[1, " + std::to_string(kMaxVectorThreads) + "]", "worker threads");
   VectorEnvironment env;
   env.options = options;
   env.threads = threads;
@@ -93,7 +92,7 @@ void vector_reset(VectorEnvironment& env, std::optional<std::uint64_t> seed) {
 
 void vector_step(VectorEnvironment& env, const std::vector<EnvAction>& actions) {
   if (actions.size() != env.tables.size())
-    throw InvalidArgument("actions", std::to_string(actions.size()) + " actions for " +
+    throw InvalidArgument("actions", "actions: " + std::to_string(actions.size()) + " actions for " +
                                          std::to_string(env.tables.size()) + " tables");
   for_each_table(env, [&](std::size_t i) {
     EnvTable& t = env.tables[i];

@@ -120,3 +120,19 @@ BENCHMARK(BM_VectorStep)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->UseReal
 
 }  // namespace
 
+
+namespace {
+
+// One reset: a new 9-ball game and the recommended break played (self-play).
+void BM_EnvReset(benchmark::State& st) {
+  const EnvOptions o = self_play();
+  EnvTable t;
+  env_reset(o, t, 1);
+  for (auto _ : st) {
+    env_reset(o, t);
+    benchmark::DoNotOptimize(t.observation.data());
+  }
+}
+BENCHMARK(BM_EnvReset)->Unit(benchmark::kMicrosecond);
+
+}  // namespace

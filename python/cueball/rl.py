@@ -320,21 +320,22 @@ class CueballEnv(_EnvBase):  # type: ignore[misc]
         self._table = _native.Table(*self.options.native_args(self.options.opponent), render_mode == "html")
         self.observation_space, self.action_space = _spaces(game, 6 if game != "three_cushion" else 0)
         self._seat = 0
+        self._noise: dict[str, float] = {}
         self._last_info: dict[str, Any] = {}
 
     # The learner's seat; the observation is from its point of view.
     def _learner(self) -> int:
-        return int(self._table.learner) if self._table.learner >= 0 else int(self._table.state.to_shoot)
+        return int(self._table.status[3])
 
     def _callable_to_act(self) -> bool:
-        s = self._table.state
-        return self.options.callable_opponent is not None and not s.over and s.to_shoot != self._seat
+        over, _, to_shoot, _ = self._table.status
+        return self.options.callable_opponent is not None and not over and to_shoot != self._seat
 
     def _play_callable(self, reward: float, infos: list[dict[str, Any]]) -> float:
         opponent = self.options.callable_opponent
         assert opponent is not None
         while self._callable_to_act():
-            seat = int(self._table.state.to_shoot)
+            seat = int(self._table.status[2])
             obs = self._table.observe(seat)
             action = opponent(obs, {"action_mask": self._table.masks(), "player": seat})
             _, _, _, _, info = self._table.step(*_action_parts(action))
@@ -345,8 +346,8 @@ class CueballEnv(_EnvBase):  # type: ignore[misc]
     def _info(self, step_info: dict[str, Any] | None = None) -> dict[str, Any]:
         info: dict[str, Any] = {} if step_info is None else dict(step_info)
         info["action_mask"] = self._table.masks()
-        info["noise"] = self._table.noise
-        info["to_shoot"] = int(self._table.state.to_shoot)
+        info["noise"] = self._noise
+        info["to_shoot"] = int(self._table.status[2])
         info["seat"] = self._seat
         return info
 
@@ -369,6 +370,7 @@ class CueballEnv(_EnvBase):  # type: ignore[misc]
             self._table.reset_from(start)
         else:
             self._table.reset(seed)
+        self._noise = self._table.noise
         if self.options.callable_opponent is not None:
             self._seat = int(self.options.seat) if self.options.seat >= 0 else int(self._table.game_seed % 2)
             self._play_callable(0.0, [])
@@ -379,8 +381,7 @@ class CueballEnv(_EnvBase):  # type: ignore[misc]
 
     def step(self, action: Action) -> tuple[NDArray[np.float32], float, bool, bool, dict[str, Any]]:
         """One action of the learner, then the opponent's replies up to the learner's next turn."""
-        state = self._table.state
-        if state.over:
+        if self._table.status[0]:
             raise _cueball.InvalidArgument("step: the episode is over; call reset()")
         if self.options.callable_opponent is None:
             self._seat = self._learner()
@@ -391,12 +392,12 @@ class CueballEnv(_EnvBase):  # type: ignore[misc]
             reward = self._play_callable(reward, replies)
         elif self.options.opponent is None:
             self._seat = self._learner()
-        s = self._table.state
+        over, truncated, _, _ = self._table.status
         info = self._info(info)
         if replies:
             info["replies"] = replies
         self._last_info = info
-        return self._observation(), reward, bool(s.over and not s.truncated), bool(s.over and s.truncated), info
+        return self._observation(), reward, bool(over and not truncated), bool(over and truncated), info
 
     @property
     def state(self) -> Any:
@@ -466,7 +467,7 @@ class TwoPlayerEnv:
 
     def _select(self) -> None:
         live = [a for a in self.agents if not (self.terminations[a] or self.truncations[a])]
-        to_shoot = self.possible_agents[int(self._table.state.to_shoot)]
+        to_shoot = self.possible_agents[int(self._table.status[2])]
         self.agent_selection = to_shoot if to_shoot in live or not self.agents else (
             to_shoot if to_shoot in self.agents else self.agents[0])
 

@@ -14,6 +14,7 @@
 #include "cueball/core/errors.hpp"
 #include "cueball/io/game_json.hpp"
 #include "cueball/io/game_viewer_json.hpp"
+#include "cueball/io/scenario_json.hpp"
 #include "cueball/planning/shot_planner.hpp"
 #include "cueball/rl/environment.hpp"
 
@@ -276,6 +277,11 @@ void bind_rl(py::module_& m) {
            })
       .def("masks", [](const NativeTable& t) { return masks_dict(cueball::action_masks(t.table.state)); })
       .def_property_readonly("state", [](const NativeTable& t) { return t.table.state; })
+      .def_property_readonly("status",
+                             [](const NativeTable& t) {  // (over, truncated, to_shoot, viewer): no state copy
+                               const cueball::GameState& s = t.table.state;
+                               return py::make_tuple(s.over, s.truncated, s.to_shoot, t.table.viewer());
+                             })
       .def_property_readonly("learner", [](const NativeTable& t) { return t.table.learner; })
       .def_property_readonly("episode", [](const NativeTable& t) { return t.table.episode; })
       .def_property_readonly("game_seed", [](const NativeTable& t) { return t.table.game_seed; })
@@ -289,6 +295,13 @@ void bind_rl(py::module_& m) {
                                                "elevation_deg"_a = n.elevation * 180.0 / 3.14159265358979323846,
                                                "side"_a = n.side_offset / r, "height"_a = n.height_offset / r);
                              })
+      .def("shots",
+           [](const NativeTable& t) {
+             std::vector<std::string> out;
+             for (const cueball::GameStep& g : t.table.history)
+               if (g.shot.cue) out.push_back(cueball::scenario_to_json(g.shot, -1));
+             return out;
+           })
       .def("viewer_json", [](const NativeTable& t, const std::array<std::string, 2>& players) {
         return cueball::game_viewer_json(t.table.start, t.table.history, players, -1);
       })

@@ -79,6 +79,24 @@ TEST(EnvAction, TheTargetFormAimsAtTheGhostBall) {
   EXPECT_NE(decode_action(o, s, a).illegal.find("ball"), std::string::npos);
 }
 
+// Three-cushion has no pockets: the target form aims at the ball's centre,
+// and the pocket mask has one entry.
+TEST(EnvAction, TheTargetFormOnACaromTableAimsAtTheBall) {
+  EnvOptions o;
+  o.game = GameKind::three_cushion;
+  o.form = ActionForm::target;
+  GameState s = new_game(default_config(GameKind::three_cushion));
+  s.phase = GamePhase::play;
+  test::place_balls(s, {{0, {0.5, 0.5}}, {1, {1.5, 0.9}}, {2, {1.0, 1.0}}});
+  EnvAction a;
+  a.ball = 2;
+  a.pocket = 3;  // ignored
+  const DecodedAction d = decode_action(o, s, a);
+  EXPECT_TRUE(d.illegal.empty()) << d.illegal;
+  EXPECT_NEAR(d.action.strike.aim_deg, 45.0, 1e-9);
+  EXPECT_EQ(action_masks(s).pocket.size(), 1u);
+}
+
 TEST(EnvAction, IllegalPartsAreNamedNeverThrown) {
   EnvOptions o;
   GameState s = nine_ball_in_play();

@@ -5,6 +5,7 @@
 // validates them (InvalidArgument naming the field).
 #include <pybind11/numpy.h>
 
+#include <algorithm>
 #include <array>
 #include <optional>
 #include <string>
@@ -152,7 +153,7 @@ py::array_t<float> matrix(const std::vector<float>& v, std::size_t rows) {
 py::dict vector_masks(const cueball::VectorEnvironment& env) {
   const std::size_t n = env.tables.size();
   const std::size_t balls = static_cast<std::size_t>(cueball::env_ball_count(env.options.game));
-  const std::size_t pockets = env.tables.empty() ? 0 : env.tables[0].state.table.table.pockets.size();
+  const std::size_t pockets = env.tables.empty() ? 1 : std::max<std::size_t>(1, env.tables[0].state.table.table.pockets.size());
   py::array_t<bool> ball({n, balls}), pocket({n, pockets}), decision({n, std::size_t{cueball::kEnvDecisionChoices}}),
       push_out({n, std::size_t{2}});
   bool* b = ball.mutable_data();
@@ -346,7 +347,7 @@ void bind_rl(py::module_& m) {
       .def("masks", [](const NativeVector& v) { return vector_masks(v.env); })
       .def_property_readonly("size", [](const NativeVector& v) { return v.env.tables.size(); })
       .def_property_readonly("pockets", [](const NativeVector& v) {
-        return v.env.tables.empty() ? std::size_t{0} : v.env.tables[0].state.table.table.pockets.size();
+        return v.env.tables.empty() ? std::size_t{1} : std::max<std::size_t>(1, v.env.tables[0].state.table.table.pockets.size());
       });
 }
 

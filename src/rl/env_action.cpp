@@ -106,15 +106,19 @@ void decode_strike(const EnvOptions& options, const GameState& state, const Lega
   const SimulationBall* object = ball_with_id(t, a.ball);
   Vec2 from = cue ? cue->state.position : Vec2{};
   if (out.action.place) from = *out.action.place;
-  if (!object || a.ball == legal.cue_ball || a.pocket < 0 || a.pocket >= pockets || (!cue && !out.action.place)) {
+  const bool carom = pockets == 0;  // no pocket to aim for: the aim is at the ball's centre
+  if (!object || a.ball == legal.cue_ball || (!carom && (a.pocket < 0 || a.pocket >= pockets)) ||
+      (!cue && !out.action.place)) {
     if (out.illegal.empty())
       out.illegal = "ball: " + std::to_string(a.ball) + " and pocket " + std::to_string(a.pocket) +
                     " are not a target on the table (pockets 0.." + std::to_string(pockets - 1) + ")";
     s.aim_deg = unit(a.strike[1]) * kEnvMaxCutOffsetDeg;
     return;
   }
-  const double aim = ghost_ball_aim_deg(from, object->state.position, t.table.pockets[static_cast<std::size_t>(a.pocket)].centre,
-                                        t.table.ball.radius);
+  const Vec2 o = object->state.position;
+  const double aim = carom ? std::atan2(o.y - from.y, o.x - from.x) * kDegPerRad
+                           : ghost_ball_aim_deg(from, o, t.table.pockets[static_cast<std::size_t>(a.pocket)].centre,
+                                                t.table.ball.radius);
   s.aim_deg = aim + unit(a.strike[1]) * kEnvMaxCutOffsetDeg;
 }
 
@@ -182,7 +186,7 @@ DecodedAction decode_action(const EnvOptions& options, const GameState& state, c
 ActionMasks action_masks(const GameState& state) {
   ActionMasks m;
   m.ball.assign(static_cast<std::size_t>(env_ball_count(state.config.kind)), 0);
-  m.pocket.assign(state.table.table.pockets.size(), 0);
+  m.pocket.assign(std::max<std::size_t>(1, state.table.table.pockets.size()), 0);  // a carom table: one, ignored
   if (state.over) return m;
   const LegalActions legal = legal_actions(state);
   if (!legal.shoot) {

@@ -205,7 +205,7 @@ void env_reset_from(const EnvOptions& options, EnvTable& table, const GameState&
   const CueStrikeNoise noise = table.state.config.noise;
   table.state = start;
   table.state.config.noise = noise;
-  table.state.config.max_shots = std::max(start.config.max_shots, start.shots + 1);
+  table.state.config.max_shots = start.shots + options.max_shots;  // the episode's bound, from here
   if (options.opponent.kind && options.seat < 0) table.learner = start.to_shoot;
   if (table.record_steps) table.start = table.state;
   EnvStepResult ignored;

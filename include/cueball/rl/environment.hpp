@@ -51,7 +51,8 @@ enum class ActionForm : char {
   /// (the cue ball at G = O - 2R u, u from the ball to the pocket's centre)
   /// plus strike[1] * kEnvMaxCutOffsetDeg; the other four as in raw. The
   /// ball and pocket are also the call and the nomination when the rules
-  /// ask for one.
+  /// ask for one. On a table without pockets (three-cushion) the aim is at
+  /// the ball's centre plus the offset, and the pocket is ignored.
   target,
 };
 const char* to_string(ActionForm form);
@@ -161,7 +162,8 @@ DecodedAction decode_action(const EnvOptions& options, const GameState& state, c
 /// The action masks of `state` (1: legal): over ball ids (the balls that
 /// may be the target, the call or the nomination: LegalActions' nominable
 /// when a nomination is required, else callable when a call is, else on),
-/// pockets, decisions (kEnvDecisionChoices) and push-out (2).
+/// pockets (a table without pockets: one entry, ignored), decisions
+/// (kEnvDecisionChoices) and push-out (2).
 struct ActionMasks {
   std::vector<std::uint8_t> ball;
   std::vector<std::uint8_t> pocket;
@@ -260,7 +262,8 @@ void env_reset(const EnvOptions& options, EnvTable& table, std::optional<std::ui
 /// A new episode from `start` (a game of options.game, not over: a
 /// drill, a layout to practise, a saved position): its balls, its player to
 /// act and its rules' state, with the episode's noise; the learner's seat
-/// is options.seat, or with -1 the player to act in `start`. Throws
+/// is options.seat, or with -1 the player to act in `start`; the episode
+/// lasts at most options.max_shots shots and decisions from `start`. Throws
 /// InvalidArgument("state") for another discipline or a game that is over.
 void env_reset_from(const EnvOptions& options, EnvTable& table, const GameState& start);
 

@@ -4,7 +4,7 @@
 #   ./build.sh test   the same, then every test (Release), then the suite
 #                     again under AddressSanitizer + UndefinedBehaviorSanitizer
 #                     (without the long pure-numerics tests; see below),
-#                     then a bounded libFuzzer run of the scenario and table readers;
+#                     then a bounded libFuzzer run of the scenario, table and game-state readers;
 #                     the Release suite includes the HTML viewer's tests in
 #                     headless Chromium (viewer/, npm packages from its lockfile)
 set -euo pipefail

@@ -5,15 +5,15 @@
 #
 # BUILD_DIR is the "fuzz" preset's build directory (default build/fuzz; the
 # binaries are in BUILD_DIR/fuzz or BUILD_DIR). SECONDS (default 30) is the
-# fuzzing time in total: two thirds for fuzz_scenario, one third for
-# fuzz_table. Each target first runs every seed in full, then fuzzes from
+# fuzzing time in total: half for fuzz_scenario, a quarter each for
+# fuzz_table and fuzz_game_state. Each target first runs every seed in full, then fuzzes from
 # them; new inputs go to a scratch corpus under BUILD_DIR (fuzz/corpus/ in the
 # source tree is never written). Exits non-zero on any crash, sanitizer
 # report, unexpected exception, broken invariant, timeout (> 10 s for one
 # input) or memory blow-up; the reproducer is written to
 # BUILD_DIR/fuzz-artifacts/ and its path printed.
 # Environment: FUZZ_SEED (libFuzzer -seed, default random), FUZZ_JOBS (run
-# the two targets side by side when 2, default 1).
+# the targets side by side, each for SECONDS, when 2; default 1).
 set -euo pipefail
 here=$(cd "$(dirname "$0")" && pwd)
 build=${1:-build/fuzz}
@@ -64,20 +64,25 @@ fuzz_one() {  # fuzz_one <target> <corpus name> <seconds>
   fi
 }
 
-scenario_time=$(( seconds * 2 / 3 ))
-table_time=$(( seconds - scenario_time ))
+scenario_time=$(( seconds / 2 ))
+table_time=$(( seconds / 4 ))
+game_time=$(( seconds - scenario_time - table_time ))
 ((scenario_time > 0)) || scenario_time=1
 ((table_time > 0)) || table_time=1
+((game_time > 0)) || game_time=1
 
 if [[ ${FUZZ_JOBS:-1} == 2 ]]; then
   fuzz_one fuzz_scenario scenario "$seconds" & p1=$!
   fuzz_one fuzz_table table "$seconds" & p2=$!
+  fuzz_one fuzz_game_state game_state "$seconds" & p3=$!
   rc=0
   wait "$p1" || rc=1
   wait "$p2" || rc=1
+  wait "$p3" || rc=1
   ((rc == 0)) && echo "== fuzz: no crash in $seconds s (each target)"
   exit "$rc"
 fi
 fuzz_one fuzz_scenario scenario "$scenario_time"
 fuzz_one fuzz_table table "$table_time"
+fuzz_one fuzz_game_state game_state "$game_time"
 echo "== fuzz: no crash in $seconds s"

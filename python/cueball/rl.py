@@ -360,6 +360,8 @@ class CueballEnv(_EnvBase):  # type: ignore[misc]
 
         options={'state': s} starts from the cueball.games.GameState s instead (a drill, a saved position).
         """
+        if _gym is not None:
+            super().reset(seed=seed)  # gymnasium.Env seeds its np_random
         if seed is not None:
             for i, space in enumerate((self.observation_space, self.action_space)):
                 space.seed(seed + i)

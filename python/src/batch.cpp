@@ -3,9 +3,12 @@
 
 #include <cstdint>
 #include <memory>
+#include <numbers>
 #include <optional>
 #include <string>
 #include "cueball/io/batch_json.hpp"
+#include "cueball/io/scenario_json.hpp"
+#include "cueball/planning/shot_planner.hpp"
 #include "cueball/simulation/batch.hpp"
 #include "cueball/core/errors.hpp"
 #include "cueball/simulation/scenario.hpp"
@@ -25,12 +28,56 @@ py::dict batch_dict(const cueball::Scenario& s, const cueball::BatchResult& r) {
   return d;
 }
 
+// The sigmas as the scenario's "noise" writes them (m/s, degrees, ball radii).
+py::dict noise_dict(const cueball::CueStrikeNoise& n, double radius) {
+  const double degree = std::numbers::pi / 180.0;
+  return py::dict("speed"_a = n.speed, "aim_deg"_a = n.aim / degree, "elevation_deg"_a = n.elevation / degree,
+                  "side"_a = n.side_offset / radius, "height"_a = n.height_offset / radius);
+}
+
 }  // namespace
+
+NoiseArgument noise_argument(const py::handle& noise) {
+  using Kind = NoiseArgument::Kind;
+  if (noise.is_none()) return {};
+  if (py::isinstance<py::bool_>(noise)) return {noise.cast<bool>() ? Kind::scenario : Kind::none, {}};
+  if (py::isinstance<py::dict>(noise)) return {Kind::sigmas, json_text(noise, "noise")};
+  if (!py::isinstance<py::str>(noise))
+    throw ArgumentTypeError("noise", wrong_type_message(noise, "noise",
+                                                       "None, a bool, 'scenario', 'none', 'tournament' or a dict of "
+                                                       "sigmas (speed, aim_deg, elevation_deg, side, height)"));
+  const std::string name = utf8_argument(noise, "noise");
+  if (name == "scenario") return {Kind::scenario, {}};
+  if (name == "none") return {Kind::none, {}};
+  if (name == "tournament") return {Kind::tournament, {}};
+  throw cueball::InvalidArgument("noise", "noise = " + cueball::quote_input(name) +
+                                              " is not known; allowed: None or 'scenario' (the scenario's), 'none', "
+                                              "'tournament' or a dict of sigmas");
+}
+
+std::shared_ptr<const cueball::Scenario> with_noise_argument(std::shared_ptr<const cueball::Scenario> s,
+                                                             const NoiseArgument& noise) {
+  using Kind = NoiseArgument::Kind;
+  if (noise.kind == Kind::scenario) {
+    if (s->noise == cueball::CueStrikeNoise{} &&
+        PyErr_WarnEx(PyExc_UserWarning,
+                     "the scenario has no execution noise (its \"noise\" is all zero): every shot is the nominal "
+                     "strike. Pass noise='tournament' or a dict of sigmas, or noise='none' if identical shots are meant.",
+                     2) != 0)  // 2: the caller's line (every function is wrapped in _arguments.py's call)
+      throw py::error_already_set();
+    return s;
+  }
+  auto copy = std::make_shared<cueball::Scenario>(*s);
+  copy->noise = noise.kind == Kind::none         ? cueball::CueStrikeNoise{}
+                : noise.kind == Kind::tournament ? cueball::tournament_noise()
+                                                 : cueball::noise_from_json(noise.json, s->settings.parameters.ball.radius, "noise");
+  return copy;
+}
 
 void bind_batch(py::module_& m) {
   m.def(
       "simulate_batch",
-      [](const py::object& scenario, long long shots, long long threads, std::uint64_t seed) {
+      [](const py::object& scenario, long long shots, long long threads, std::uint64_t seed, const py::object& noise) {
         // Taken as long long so that a huge count gets the range error naming it.
         if (shots < 1 || shots > cueball::kMaxBatchShots)
           throw cueball::InvalidArgument("shots", static_cast<double>(shots),
@@ -40,29 +87,39 @@ void bind_batch(py::module_& m) {
           throw cueball::InvalidArgument("threads", static_cast<double>(threads),
                                          "[1, " + std::to_string(cueball::kMaxBatchThreads) + "]", "worker threads");
         const ScenarioInput input = scenario_input(scenario);
+        const NoiseArgument noise_choice = noise_argument(noise);
         std::shared_ptr<const cueball::Scenario> s;
-        cueball::BatchResult r;
         {
           py::gil_scoped_release release;
           s = load_scenario(input);
+        }
+        s = with_noise_argument(s, noise_choice);
+        cueball::BatchResult r;
+        {
+          py::gil_scoped_release release;
           // A worker's error (e.g. InvalidArgument) is rethrown here, in this thread.
           r = cueball::simulate_batch(
               *s, cueball::BatchOptions{static_cast<int>(shots), static_cast<int>(threads), seed});
         }
-        return batch_dict(*s, r);
+        py::dict d = batch_dict(*s, r);
+        d["noise"] = noise_dict(s->noise, s->settings.parameters.ball.radius);
+        return d;
       },
-      "scenario"_a = py::none(), "shots"_a = 1000, "threads"_a = 1, "seed"_a = 0,
+      "scenario"_a = py::none(), "shots"_a = 1000, "threads"_a = 1, "seed"_a = 0, "noise"_a = py::none(),
       "Simulates `shots` copies of the scenario's shot with Gaussian execution noise on the cue\n"
-      "strike (the scenario's \"noise\"), on `threads` threads; deterministic for a seed whatever\n"
-      "the number of threads; memory does not grow with `shots` (at most 1e8). A noisy cue speed\n"
+      "strike, on `threads` threads; deterministic for a seed whatever the number of threads; memory\n"
+      "does not grow with `shots` (at most 1e8). `noise`: None or 'scenario' the scenario's \"noise\"\n"
+      "(a UserWarning when it is all zero: every shot would be the same), 'none', 'tournament'\n"
+      "(tournament_noise()), or a dict of sigmas in the scenario's units (speed m/s, aim_deg,\n"
+      "elevation_deg, side and height ball radii; missing keys 0). A noisy cue speed\n"
       "above 12 m/s or elevation below 0 is reflected at the limit (2 cap - v, -e) and counted; a\n"
       "noisy tip offset beyond the miscue limit (0.5 R) is a miscue, counted and not simulated. An\n"
       "error in any shot raises the same exception a single run of it would (the lowest-numbered\n"
       "shot's, whatever `threads`). Returns the keys of `cueball batch --json`: shots, simulated,\n"
       "miscues, failures, speed_reflected, elevation_reflected, seconds, shots_per_second,\n"
       "events_per_shot, pocketed_probability {ball id (int): probability} and balls [{id, name, pocketed_probability, mean_position, position_std}],\n"
-      "from the CLI's own writer (batch_result_to_json: json.loads of its output, the ids as ints).\n"
-      "Releases the GIL while simulating.");
+      "from the CLI's own writer (batch_result_to_json: json.loads of its output, the ids as ints),\n"
+      "and noise, the sigmas used (the dict form above). Releases the GIL while simulating.");
 }
 
 }  // namespace cueball_python

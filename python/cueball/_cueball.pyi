@@ -1062,9 +1062,8 @@ def simulate_batch(
     scenario: _Scenario = None, shots: _Int = 1000, threads: _Int = 1, seed: _Int = 0, noise: _Noise = None
 ) -> dict[str, Any]:
     """Noisy copies of the scenario's shot: json.loads of what `cueball batch --json` prints (one
-    writer, batch_result_to_json), pocketed_probability's keys as int ball ids, plus "noise" (the
-    sigmas used, as a dict). noise None: the scenario's, a UserWarning when it is all zero.
-    Releases the GIL."""
+    writer, batch_result_to_json), pocketed_probability's keys as int ball ids. noise None: the
+    scenario's, a UserWarning when it is all zero. Releases the GIL."""
 
 class ManyOutcomes(TypedDict):
     """simulate_many's per-shot outcomes: rows by shot, columns by ball (`ids`)."""

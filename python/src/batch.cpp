@@ -3,7 +3,6 @@
 
 #include <cstdint>
 #include <memory>
-#include <numbers>
 #include <optional>
 #include <string>
 #include "cueball/io/batch_json.hpp"
@@ -26,13 +25,6 @@ py::dict batch_dict(const cueball::Scenario& s, const cueball::BatchResult& r) {
   for (const auto& [id, p] : d["pocketed_probability"].cast<py::dict>()) probability[py::int_(py::reinterpret_borrow<py::object>(id))] = p;
   d["pocketed_probability"] = probability;
   return d;
-}
-
-// The sigmas as the scenario's "noise" writes them (m/s, degrees, ball radii).
-py::dict noise_dict(const cueball::CueStrikeNoise& n, double radius) {
-  const double degree = std::numbers::pi / 180.0;
-  return py::dict("speed"_a = n.speed, "aim_deg"_a = n.aim / degree, "elevation_deg"_a = n.elevation / degree,
-                  "side"_a = n.side_offset / radius, "height"_a = n.height_offset / radius);
 }
 
 }  // namespace
@@ -101,9 +93,7 @@ void bind_batch(py::module_& m) {
           r = cueball::simulate_batch(
               *s, cueball::BatchOptions{static_cast<int>(shots), static_cast<int>(threads), seed});
         }
-        py::dict d = batch_dict(*s, r);
-        d["noise"] = noise_dict(s->noise, s->settings.parameters.ball.radius);
-        return d;
+        return batch_dict(*s, r);
       },
       "scenario"_a = py::none(), "shots"_a = 1000, "threads"_a = 1, "seed"_a = 0, "noise"_a = py::none(),
       "Simulates `shots` copies of the scenario's shot with Gaussian execution noise on the cue\n"
@@ -118,8 +108,8 @@ void bind_batch(py::module_& m) {
       "shot's, whatever `threads`). Returns the keys of `cueball batch --json`: shots, simulated,\n"
       "miscues, failures, speed_reflected, elevation_reflected, seconds, shots_per_second,\n"
       "events_per_shot, pocketed_probability {ball id (int): probability} and balls [{id, name, pocketed_probability, mean_position, position_std}],\n"
-      "from the CLI's own writer (batch_result_to_json: json.loads of its output, the ids as ints),\n"
-      "and noise, the sigmas used (the dict form above). Releases the GIL while simulating.");
+      "from the CLI's own writer (batch_result_to_json: json.loads of its output, the ids as ints).\n"
+      "Releases the GIL while simulating.");
 }
 
 }  // namespace cueball_python

@@ -50,7 +50,7 @@ def main() -> None:
     odds = cueball.simulate_batch({"table": "pool_9ft", "rack": {"type": "nine_ball"},
                                    "cue": {"ball": 0, "target": 1, "speed": np.float32(7.0)}},
                                   shots=np.int64(4), seed=1, noise="tournament")
-    assert odds["shots"] == 4 and odds["noise"]["aim_deg"] > 0
+    assert odds["shots"] == 4
     many: cueball.ManyOutcomes = cueball.simulate_many(None, np.array([[3.0, 0.0, 0.0, 0.0, 0.0]]), threads=1)
     pocketed: NDArray[np.bool_] = many["pocketed"]
     assert pocketed.shape == (1, 10) and many["first_contact"][0] == 1

@@ -305,16 +305,10 @@ TEST(CliMany, EmptyLayoutCellsLeaveTheBallOffTheTableAndMiscuesAreCounted) {
   TempDir dir;
   const std::string scenario = dir.write("cut.json", kCutShot);
   // Row 1 leaves ball 1 out; row 2 asks for a tip offset of 0.57 R (a miscue).
-  const std::string actions = dir.write("actions.csv",
-                                        "speed,aim_deg,elevation_deg,side,height\n"
-                                        "2.5,13.587,0,0,-0.2\n"
-                                        "2.5,13.587,0,0,-0.2\n"
-                                        "2.5,13.587,0,0.4,0.4\n");
-  const std::string layouts = dir.write("layouts.csv",
-                                        "x_0,y_0,x_1,y_1,x_9,y_9\n"
-                                        "1.1,0.7,2.05,0.95,0.8,1.0\n"
-                                        "1.1,0.7,,,0.8,1.0\n"
-                                        "1.1,0.7,2.05,0.95,0.8,1.0\n");
+  const std::string cut = "2.5,13.587,0,0,-0.2\n", rack = "1.1,0.7,2.05,0.95,0.8,1.0\n";
+  const std::string actions =
+      dir.write("actions.csv", "speed,aim_deg,elevation_deg,side,height\n" + cut + cut + "2.5,13.587,0,0.4,0.4\n");
+  const std::string layouts = dir.write("layouts.csv", "x_0,y_0,x_1,y_1,x_9,y_9\n" + rack + "1.1,0.7,,,0.8,1.0\n" + rack);
   const std::string out = dir.path("out.csv");
   const CliRun r = run_cli({"many", scenario, "--actions", actions, "--layouts", layouts, "--outcomes", out, "--json"});
   ASSERT_EQ(r.status, 0) << r.err;

@@ -39,11 +39,17 @@
 //                           planners) against 1e-11 on 20,000 random sliding
 //                           impacts: time_ratio (1e-7 over 1e-8), steps and
 //                           errors of each (see the function)
+//   BM_CushionSlidingSmoothness  how smooth a sliding impact's outcome is in
+//                           its three reduced inputs: Chebyshev interpolants
+//                           along each, about the five-rail shot's sliding
+//                           impact, and their worst error (what a table of
+//                           sliding impacts would need; see the function)
 #include <benchmark/benchmark.h>
 
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdio>
 #include <ctime>
 #include <random>
 #include <string>
@@ -51,6 +57,8 @@
 
 #include "cueball/models/cushion/impact.hpp"
 #include "cueball/core/parameters.hpp"
+#include "cueball/io/scenario_json.hpp"
+#include "cueball/simulation/scenario.hpp"
 
 namespace {
 
@@ -401,5 +409,90 @@ void BM_CushionRandomAccuracy(benchmark::State& state) {
   state.counters["reference_steps"] = reference_steps / impacts;
 }
 BENCHMARK(BM_CushionRandomAccuracy)->Unit(benchmark::kSecond)->Iterations(1);
+
+// Issue 29: could a table over a sliding ball's impact replace its
+// Runge-Kutta solve, as the rolling-ball table does for rolling ones? The
+// outcome (the change of the velocities) depends on the three reduced inputs
+// s_C,x, s_C,y and s_I,x over the normal speed (the fourth slip component is
+// s_C,y - 1 - sin(theta); the conserved angular momentum J drops out of the
+// change). About the sliding impact of BM_OneBallCushions (bench_simulator,
+// its second rail: the ball as the simulator passes it, carom cushion and
+// cloth), each input is moved alone (xG' moves s_C,x and s_I,x, R w_x moves
+// s_C,y, R w_z moves s_I,x) over a width w (in units of the normal speed),
+// the solver's answers at 1e-10 are interpolated at n + 1 Chebyshev points,
+// and the interpolant is checked at 61 points: counter err_<input>_w<w>_n<n>
+// is its worst error over the five outgoing velocities (units of the normal
+// speed). A tensor-product table cell of width w and degree n in all three
+// inputs costs (n + 1)^3 solves to build and (n + 1)^3 x 8 multiply-adds to
+// evaluate. Measured: width 0.25 and degree 6 holds 1e-8 to 3e-7 (degree 10:
+// 5e-10); width 1 fails even at degree 15 along s_C (6e-4, 2.5e-3), where the
+// interval passes the rolling line s_C = 0: a bed slip starting from nearly
+// zero turns onto its slow manifold, and the outcome is not smooth there
+// (README, "Cushion models").
+void BM_CushionSlidingSmoothness(benchmark::State& state) {
+  const Scenario carom = scenario_from_json(R"({"table": "carom_10ft", "balls": [{"id": 0, "position": [0.7, 0.4]}]})");
+  const CushionImpactModel model =
+      cushion_impact_model(carom.settings.parameters, {0.98, 0.14, carom.table.cushions[0].contact_height});
+  const double radius = model.radius;
+  const double vy = 2.0831885121411111;
+  // xG', R w_x, R w_y, R w_z over yG'
+  const std::array<double, 4> base{0.93366427908441474 / vy, -2.1213718209671208 / vy, 0.24316628797279705 / vy,
+                                   2.3482759763839991 / vy};
+  CushionImpactOptions options;
+  options.rolling_table = false;
+  options.exact_tolerance = 1e-10;
+  auto solve = [&](const std::array<double, 4>& x) {
+    IncomingBall b;
+    b.velocity = {x[0], 1.0, 0.0};
+    b.angular_velocity = {x[1] / radius, x[2] / radius, x[3] / radius};
+    const CushionImpactResult r = solve_cushion_impact(b, model, options);
+    return std::array<double, 5>{r.velocity.x, r.velocity.y, radius * r.angular_velocity.x,
+                                 radius * r.angular_velocity.y, radius * r.angular_velocity.z};
+  };
+  const struct {
+    const char* name;
+    std::size_t component;
+  } inputs[] = {{"bed_x", 0}, {"bed_y", 1}, {"cushion_x", 3}};
+  const struct {
+    double width;
+    int degree;
+  } fits[] = {{1.0, 15}, {0.25, 6}, {0.25, 10}};
+  for (auto _ : state) {
+    for (const auto& in : inputs) {
+      for (const auto& fit : fits) {
+        const int n = fit.degree;
+        auto at = [&](double t) {
+          std::array<double, 4> x = base;
+          x[in.component] += 0.5 * fit.width * t;
+          return solve(x);
+        };
+        std::vector<std::array<double, 5>> coefficients(static_cast<std::size_t>(n + 1));
+        for (int j = 0; j <= n; ++j) {
+          const double theta = kPi * (j + 0.5) / (n + 1);
+          const std::array<double, 5> f = at(std::cos(theta));
+          for (int m = 0; m <= n; ++m) {
+            for (std::size_t o = 0; o < 5; ++o) {
+              coefficients[static_cast<std::size_t>(m)][o] += f[o] * std::cos(m * theta) * (m == 0 ? 1.0 : 2.0) / (n + 1);
+            }
+          }
+        }
+        double worst = 0.0;
+        for (int i = 0; i <= 60; ++i) {
+          const double t = -1.0 + 2.0 * i / 60.0;
+          const std::array<double, 5> exact = at(t);
+          for (std::size_t o = 0; o < 5; ++o) {
+            double v = 0.0;
+            for (int m = 0; m <= n; ++m) v += coefficients[static_cast<std::size_t>(m)][o] * std::cos(m * std::acos(t));
+            worst = std::max(worst, std::abs(v - exact[o]));
+          }
+        }
+        char name[64];
+        std::snprintf(name, sizeof name, "err_%s_w%g_n%d", in.name, fit.width, n);
+        state.counters[name] = worst;
+      }
+    }
+  }
+}
+BENCHMARK(BM_CushionSlidingSmoothness)->Unit(benchmark::kSecond)->Iterations(1);
 
 }  // namespace

@@ -18,7 +18,7 @@
 #include "cueball/io/game_viewer_json.hpp"
 #include "cueball/io/scenario_json.hpp"
 #include "cueball/planning/shot_planner.hpp"
-#include "viewer_page.hpp"
+#include "cueball/io/viewer_page.hpp"
 
 namespace cueball::cli {
 

@@ -18,7 +18,7 @@
 #include "cueball/planning/position_play.hpp"
 #include "cueball/simulation/scenario.hpp"
 #include "cueball/planning/shot_planner.hpp"
-#include "viewer_page.hpp"
+#include "cueball/io/viewer_page.hpp"
 
 namespace cueball::cli {
 

@@ -20,7 +20,7 @@
 #include "cueball/simulation/batch.hpp"
 #include "cueball/core/errors.hpp"
 #include "cueball/simulation/scenario.hpp"
-#include "viewer_page.hpp"
+#include "cueball/io/viewer_page.hpp"
 
 namespace cueball::cli {
 

@@ -3,7 +3,7 @@
 
 #include "common.hpp"
 #include "cueball/io/viewer_json.hpp"
-#include "viewer_page.hpp"
+#include "cueball/io/viewer_page.hpp"
 
 namespace cueball::cli {
 

@@ -1,6 +1,6 @@
 # The layering check (ctest `layering`; docs/architecture.md):
 #   1. a library file of layer L includes only headers of layers up to L:
-#        core < physics < models < table < simulation < calibration < planning < games < agents < io
+#        core < physics < models < table < simulation < calibration < planning < games < agents < rl < io
 #      (public "cueball/<layer>/..." and private "<layer>/..." alike; io, every
 #      JSON reader and writer, may read every layer and no layer reads io);
 #   2. nlohmann-json is included only in src/io/ (and by the tests, which
@@ -16,7 +16,7 @@
 # (-DNO_KNOWN=ON checks a tree without the KNOWN list: the check's own test.)
 
 cmake_minimum_required(VERSION 3.25)
-set(LAYERS core physics models table simulation calibration planning games agents io)
+set(LAYERS core physics models table simulation calibration planning games agents rl io)
 set(KNOWN
   # Empty: the last entry, the CLI's Report and the JSON that batch and
   # cushion-sweep built inline, moved into io/ (report.hpp, batch_json.hpp,

@@ -19,7 +19,7 @@
 #include "cueball/simulation/scenario.hpp"
 #include "plan_shot_scenarios.hpp"
 #include "temp_dir.hpp"
-#include "viewer_page.hpp"
+#include "cueball/io/viewer_page.hpp"
 
 namespace cueball {
 namespace {

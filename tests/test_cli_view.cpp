@@ -10,7 +10,7 @@
 
 #include "cli_runner.hpp"
 #include "temp_dir.hpp"
-#include "viewer_page.hpp"
+#include "cueball/io/viewer_page.hpp"
 
 namespace cueball {
 namespace {
@@ -37,16 +37,16 @@ std::size_t occurrences(std::string_view text, std::string_view what) {
 }
 
 TEST(ViewerTemplate, HoldsTheTokenOnceInsideTheResultScript) {
-  const std::string_view page = cli::viewer_template();
+  const std::string_view page = viewer_template();
   ASSERT_GT(page.size(), 100u);
-  EXPECT_EQ(occurrences(page, cli::kViewerResultToken), 1u);
-  EXPECT_EQ(occurrences(page, std::string(kOpen) + std::string(cli::kViewerResultToken) + "</script>"), 1u);
+  EXPECT_EQ(occurrences(page, kViewerResultToken), 1u);
+  EXPECT_EQ(occurrences(page, std::string(kOpen) + std::string(kViewerResultToken) + "</script>"), 1u);
 }
 
 TEST(ViewerTemplate, FetchesNothing) {
   // Self-contained: no external scripts, styles, fonts or images.
   // Every src= and href= is inline (data:) or in-page (#).
-  const std::string_view page = cli::viewer_template();
+  const std::string_view page = viewer_template();
   EXPECT_EQ(page.find("http://"), std::string_view::npos);
   EXPECT_EQ(page.find("https://"), std::string_view::npos);
   EXPECT_EQ(page.find("@import"), std::string_view::npos);
@@ -60,14 +60,14 @@ TEST(ViewerTemplate, FetchesNothing) {
 
 TEST(ViewerPage, ReplacesTheTokenAndEscapesEveryLessThan) {
   const std::string json = R"({"name":"</script><script>alert(1)</script>","x":"a<b"})";
-  const std::string page = cli::viewer_page("<p>__CUEBALL_RESULT__</p>", json);
+  const std::string page = viewer_page("<p>__CUEBALL_RESULT__</p>", json);
   EXPECT_EQ(page, R"(<p>{"name":"\u003c/script>\u003cscript>alert(1)\u003c/script>","x":"a\u003cb"}</p>)");
   EXPECT_EQ(Json::parse(page.substr(3, page.size() - 7)), Json::parse(json));  // the same document
 }
 
 TEST(ViewerPage, RefusesATemplateWithoutExactlyOneToken) {
-  EXPECT_THROW((void)cli::viewer_page("<p></p>", "{}"), std::logic_error);
-  EXPECT_THROW((void)cli::viewer_page("__CUEBALL_RESULT__ __CUEBALL_RESULT__", "{}"), std::logic_error);
+  EXPECT_THROW((void)viewer_page("<p></p>", "{}"), std::logic_error);
+  EXPECT_THROW((void)viewer_page("__CUEBALL_RESULT__ __CUEBALL_RESULT__", "{}"), std::logic_error);
 }
 
 TEST(CliView, WritesThePageWithTheResult) {
@@ -78,13 +78,13 @@ TEST(CliView, WritesThePageWithTheResult) {
   ASSERT_EQ(r.status, 0) << r.err;
   EXPECT_NE(r.out.find(page), std::string::npos);
   const std::string html = read_text(page);
-  EXPECT_EQ(html.find(cli::kViewerResultToken), std::string::npos);
+  EXPECT_EQ(html.find(kViewerResultToken), std::string::npos);
   EXPECT_EQ(embedded_result(html), Json::parse(read_text(result)));
   // Everything around the result is the template, byte for byte.
-  const std::string_view tpl = cli::viewer_template();
-  const std::size_t at = tpl.find(cli::kViewerResultToken);
+  const std::string_view tpl = viewer_template();
+  const std::size_t at = tpl.find(kViewerResultToken);
   EXPECT_EQ(html.substr(0, at), tpl.substr(0, at));
-  const std::string_view tail = tpl.substr(at + cli::kViewerResultToken.size());
+  const std::string_view tail = tpl.substr(at + kViewerResultToken.size());
   EXPECT_EQ(html.substr(html.size() - tail.size()), tail);
 }
 

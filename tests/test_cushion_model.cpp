@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <cmath>
 #include <string>
+#include <vector>
 
 #include "cueball/core/errors.hpp"
 #include "cueball/simulation/scenario.hpp"
@@ -130,6 +131,45 @@ TEST(CushionModel, DispatchGivesEachModelsOwnKernel) {
   const CushionRebound stronge_direct = stronge_compliant_rebound(in, stronge_compliant_cushion(p.ball, k));
   EXPECT_EQ(stronge.velocity.x, stronge_direct.velocity.x);
   EXPECT_EQ(stronge.angular_velocity.z, stronge_direct.angular_velocity.z);
+}
+
+// The simulator's path (cushion_rebound, which skips the rest of
+// CushionImpactResult) gives solve_cushion_impact_unchecked()'s velocity and
+// spin to the bit: rolling balls (the table), sliding ones (the Runge-Kutta
+// solve), the paper's scheme, and a contact that records the history (the
+// Runge-Kutta solve even for a rolling ball).
+TEST(CushionModel, SimulatorPathIsTheSolversAnswerToTheBit) {
+  const Parameters p = pool_parameters();
+  const double h = 1.4 * p.ball.radius;
+  const double r = p.ball.radius;
+  std::vector<IncomingBall> balls;
+  for (int i = 0; i < 40; ++i) {
+    const double v = 0.3 + 0.07 * i;
+    const double alpha = (2.0 + 2.2 * i) * kPi / 180.0;
+    balls.push_back(incoming_ball({v, alpha, v / r, (0.05 * i - 1.0) * v / r}));        // rolling
+    balls.push_back(incoming_ball({v, alpha, (0.04 * i - 0.6) * v / r, 0.3 * v / r}));  // sliding
+  }
+  for (const bool paper : {false, true}) {
+    for (const bool history : {false, true}) {
+      CushionSettings s = default_cushion_settings(CushionModel::mathavan_2010);
+      if (paper) {
+        s.solver = CushionSolver::paper;
+        s.paper_steps = 300;
+      }
+      CushionContact c = cushion_contact(p, s, h);
+      c.mathavan_options.record_history = history;
+      for (const IncomingBall& in : balls) {
+        const CushionRebound fast = cushion_rebound(in, c);
+        const CushionImpactResult full = solve_cushion_impact_unchecked(in, c.mathavan, c.mathavan_options);
+        EXPECT_EQ(fast.velocity.x, full.velocity.x) << paper << history;
+        EXPECT_EQ(fast.velocity.y, full.velocity.y) << paper << history;
+        EXPECT_EQ(fast.velocity.z, full.velocity.z) << paper << history;
+        EXPECT_EQ(fast.angular_velocity.x, full.angular_velocity.x) << paper << history;
+        EXPECT_EQ(fast.angular_velocity.y, full.angular_velocity.y) << paper << history;
+        EXPECT_EQ(fast.angular_velocity.z, full.angular_velocity.z) << paper << history;
+      }
+    }
+  }
 }
 
 TEST(CushionModel, ScenarioChoosesTheModelByName) {

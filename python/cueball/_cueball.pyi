@@ -1046,6 +1046,11 @@ class Result:
         """The documented result JSON as Python objects (json.loads of `cueball simulate --json`)."""
     def to_json(self, sample_rate: _Float | None = None, indent: _Int = 1) -> str:
         """The documented result JSON text, the CLI's bytes (indent -1: one line)."""
+    def to_html(self, sample_rate: _Float | None = None) -> str:
+        """The shot as a self-contained HTML viewer page (`cueball simulate --html`'s bytes)."""
+
+def viewer_page(document: str) -> str:
+    """The self-contained HTML viewer page with a result's or a game document's JSON filled in."""
 
 def simulate(scenario: _Scenario = None, sample_rate: _Float = 0.0) -> Result:
     """A whole shot until every ball is at rest or pocketed; scenario None is the built-in 9-ball break.

@@ -50,6 +50,7 @@ void bind_shot_planner(py::module_& m);  // shot_planner.cpp: plan_shot
 void bind_simulation(py::module_& m);    // simulation.cpp: simulate
 void bind_batch(py::module_& m);         // batch.cpp: simulate_batch
 void bind_games(py::module_& m);         // games.cpp: the submodule games (states, actions, play, agents, records)
+void bind_rl(py::module_& m);            // rl.cpp: the learning environment's native classes (cueball.rl)
 #ifdef CUEBALL_HAVE_SIMULATE_MANY
 void bind_simulate_many(py::module_& m);  // simulate_many.cpp (defined there, when it exists)
 #endif
@@ -171,6 +172,11 @@ std::shared_ptr<const cueball::Scenario> load_scenario(const ScenarioInput& inpu
 // become numbers and lists, NaN and infinity raise InvalidArgument naming
 // the path under `root` ("scenario.cue.speed"). Needs the GIL.
 std::string json_text(const py::handle& dict, const std::string& root);
+
+// noise=: None (none given: the caller's default), 'none', 'tournament'
+// (tournament_noise()) or a dict of sigmas in the scenario JSON's units
+// ("noise" object; tip offsets in radii of `radius`) (convert.cpp).
+std::optional<cueball::CueStrikeNoise> noise_argument(const py::object& noise, double radius);
 
 // json.loads(text): the Python objects of one of the library's JSON writers
 // (io/), so that a dict is what json.loads makes of the CLI's output. Needs

@@ -6,6 +6,8 @@
 #include <vector>
 
 #include "cueball/core/errors.hpp"
+#include "cueball/io/scenario_json.hpp"
+#include "cueball/planning/shot_planner.hpp"
 
 namespace cueball_python {
 
@@ -53,5 +55,18 @@ std::string utf8_argument(const py::handle& text, const std::string& field) {
 }
 
 py::arg_v params_arg() { return py::arg_v("params", cueball::pool_parameters(), "pool_parameters()"); }
+
+// noise=: None (the config's), 'none', 'tournament' or a dict of sigmas in the scenario's units.
+std::optional<cueball::CueStrikeNoise> noise_argument(const py::object& noise, double radius) {
+  if (noise.is_none()) return std::nullopt;
+  if (py::isinstance<py::dict>(noise)) return cueball::noise_from_json(json_text(noise, "noise"), radius, "noise");
+  if (py::isinstance<py::str>(noise)) {
+    const std::string name = utf8_argument(noise, "noise");
+    if (name == "none") return cueball::CueStrikeNoise{};
+    if (name == "tournament") return cueball::tournament_noise();
+    throw cueball::InvalidArgument("noise", "noise = '" + name + "' is not known; allowed: 'none', 'tournament' or a dict of sigmas");
+  }
+  throw ArgumentTypeError("noise", wrong_type_message(noise, "noise", "None, 'none', 'tournament' or a dict of sigmas"));
+}
 
 }  // namespace cueball_python

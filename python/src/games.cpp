@@ -45,18 +45,6 @@ GameConfig config_argument(const py::object& config) {
   throw ArgumentTypeError("config", wrong_type_message(config, "config", "a GameConfig or a game's name"));
 }
 
-// noise=: None (the config's), 'none', 'tournament' or a dict of sigmas in the scenario's units.
-std::optional<cueball::CueStrikeNoise> noise_argument(const py::object& noise, double radius) {
-  if (noise.is_none()) return std::nullopt;
-  if (py::isinstance<py::dict>(noise)) return cueball::noise_from_json(json_text(noise, "noise"), radius, "noise");
-  if (py::isinstance<py::str>(noise)) {
-    const std::string name = utf8_argument(noise, "noise");
-    if (name == "none") return cueball::CueStrikeNoise{};
-    if (name == "tournament") return cueball::tournament_noise();
-    throw cueball::InvalidArgument("noise", "noise = '" + name + "' is not known; allowed: 'none', 'tournament' or a dict of sigmas");
-  }
-  throw ArgumentTypeError("noise", wrong_type_message(noise, "noise", "None, 'none', 'tournament' or a dict of sigmas"));
-}
 
 double radius_of(const GameConfig& c) { return cueball::preset_table(c.table).ball.radius; }
 

@@ -56,6 +56,7 @@ PYBIND11_MODULE(_cueball, m) {
   bind_batch(m);
   bind_calibration(m);
   bind_games(m);
+  bind_rl(m);
 #ifdef CUEBALL_HAVE_SIMULATE_MANY
   bind_simulate_many(m);
 #endif

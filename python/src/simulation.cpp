@@ -3,6 +3,7 @@
 // builds NumPy arrays from it on demand; no JSON on the way unless asked for
 // (to_dict(), to_json(): the library's result_to_json, the CLI's bytes).
 #include "bindings.hpp"
+#include "cueball/io/viewer_page.hpp"
 
 #include <pybind11/numpy.h>
 
@@ -374,11 +375,25 @@ void bind_simulation(py::module_& m) {
           "sample_rate"_a = py::none(), "indent"_a = 1,
           "The documented result JSON text, as `cueball simulate --json` prints it (indent 1; -1 puts\n"
           "it on one line).")
+      .def(
+          "to_html",
+          [](const Result& r, std::optional<double> sample_rate) {
+            return cueball::viewer_page(cueball::viewer_template(), result_json(r, sample_rate, -1));
+          },
+          "sample_rate"_a = py::none(),
+          "The shot as a self-contained HTML viewer page (the bytes of `cueball simulate --html`).")
       .def("__repr__", [](const Result& r) {
         return "Result(balls=" + std::to_string(r.result.balls.size()) + ", events=" +
                std::to_string(r.result.events.size()) + ", end_time=" +
                py::repr(py::float_(r.result.end_time)).cast<std::string>() + ")";
       });
+
+  m.def(
+      "viewer_page",
+      [](const std::string& document) { return cueball::viewer_page(cueball::viewer_template(), document); },
+      "document"_a,
+      "The self-contained HTML viewer page with `document` filled in: a result's JSON (Result.to_json)\n"
+      "or a game document (cueball.games, cueball.rl render()), as `cueball view` writes it.");
 
   m.def(
       "simulate",

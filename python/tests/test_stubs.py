@@ -16,7 +16,7 @@ from cueball import _cueball
 STUB = pathlib.Path(__file__).resolve().parents[1] / "cueball" / "_cueball.pyi"
 # The extension's submodule games has its own stub (cueball/games.pyi).
 GAMES_STUB = STUB.with_name("games.pyi")
-SUBMODULES = {"games"}
+SUBMODULES = {"games", "_rl"}  # _rl: cueball.rl's native part, typed by rl.py itself
 # Names only for type checkers: the dicts' TypedDicts and the private aliases.
 STUB_ONLY = {"EventArrays", "BallArrays", "SegmentArrays", "StateArrays", "ManyOutcomes", "_Float", "_Int", "_Vec", "_Scenario", "_Noise"}
 
@@ -65,13 +65,13 @@ class StubTest(unittest.TestCase):
         self.assertIsInstance(cueball.__version__, str)
 
     def test_the_package_is_the_extension_and_its_python_layer(self):
-        for name in sorted(public(dir(_cueball))):
+        for name in sorted(public(dir(_cueball)) - {"_rl"}):  # _rl: cueball.rl's native part, not re-exported
             self.assertIs(getattr(cueball, name), getattr(_cueball, name), name)
         self.assertIs(importlib.import_module("cueball.games"), _cueball.games)
         self.assertIs(cueball._time_run_scenario, _cueball._time_run_scenario)
         self.assertEqual(cueball.__version__, _cueball.__version__)
         package = pathlib.Path(cueball.__file__).parent
-        for name in ("py.typed", "_cueball.pyi", "games.pyi", "dask.py"):
+        for name in ("py.typed", "_cueball.pyi", "games.pyi", "dask.py", "rl.py"):
             self.assertTrue((package / name).is_file(), name)
 
     def test_the_games_stub_has_the_submodules_names(self):

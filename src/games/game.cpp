@@ -524,6 +524,60 @@ void count_shot(GameState& next, Ruling& ruling) {
 
 }  // namespace
 
+namespace {
+
+// The legal Action of a foul stroke (play_foul_stroke): the cue ball's
+// spot, the call and the nomination the rules ask for.
+Action foul_stroke_action(const GameState& state, const LegalActions& legal, std::optional<Vec2> place,
+                          std::uint64_t seed) {
+  Action a;
+  a.strike.speed = 1.0;
+  if (legal.ball_in_hand) {
+    const Table& t = state.table.table;
+    std::vector<Vec2> others;
+    for (const SimulationBall& b : state.table.balls)
+      if (b.id != legal.cue_ball) others.push_back(b.state.position);
+    if (place && std::isfinite(place->x) && std::isfinite(place->y) && in_region(t, *legal.ball_in_hand, *place) &&
+        is_free_spot(t, others, *place, t.ball.radius))
+      a.place = place;
+    else if (!on_table(state.table, legal.cue_ball)) {
+      RandomStream rng(seed);
+      a.place = random_free_spot(t, others, t.ball.radius, rng, 10000, *legal.ball_in_hand);
+      if (!a.place) throw SimulationError("no free spot for the cue ball in hand");
+    }
+  }
+  if (legal.call_required) {
+    a.called_ball = legal.callable.empty() ? std::optional<int>{} : legal.callable.front();
+    a.called_pocket = 0;
+  }
+  if (legal.nominate_required && !legal.nominable.empty()) a.nominate = legal.nominable.front();
+  return a;
+}
+
+}  // namespace
+
+GameStep play_foul_stroke(const GameState& state, std::optional<Vec2> place, std::uint64_t seed,
+                          const std::string& why) {
+  if (state.over) throw InvalidArgument("action", "the game is over (" + state.end_reason + ")");
+  const LegalActions legal = legal_actions(state);
+  if (!legal.shoot) throw InvalidArgument("action", "a decision is due: a foul stroke needs a shot");
+  const Action action = foul_stroke_action(state, legal, place, seed);
+  ShotRun run{state, action, seed, state.cue_ball(), {}, {}, true, {}, {}, {}, {}};
+  set_table(run);
+  simulate_shot(run);
+  Judgement j = judge(run);
+  j.ruling.reason = why + (j.ruling.reason.empty() ? "" : "; ") + j.ruling.reason;
+  count_shot(j.next, j.ruling);
+  GameStep step;
+  step.action = action;
+  step.shot = std::move(run.shot);
+  step.result = std::move(run.result);
+  step.facts = std::move(run.facts);
+  step.ruling = std::move(j.ruling);
+  step.next = std::move(j.next);
+  return step;
+}
+
 GameStep play(const GameState& state, const Action& action, std::uint64_t seed) {
   validate_action(state, action);
   GameStep step;

@@ -288,6 +288,19 @@ void validate_action(const GameState& state, const Action& action);
 /// truncated (Ruling::truncated; never throws for it).
 GameStep play(const GameState& state, const Action& action, std::uint64_t seed = 0);
 
+/// A stroke that moved nothing, judged as the discipline judges a miscue
+/// (Foul::miscue: the pool games' ball in hand for the opponent, snooker's
+/// foul points, three-cushion's end of the inning): what an illegal action
+/// of a learner costs (rl/environment.hpp). `why` is put before the
+/// ruling's reason. With the cue ball in hand it is placed at `place` when
+/// that is a legal spot, else left where it lies, else (off the table) at a
+/// free spot of the region drawn from `seed`. A call or nomination the
+/// rules ask for is filled in (the first allowed ball, pocket 0): a foul
+/// stroke pots nothing. Throws InvalidArgument("action") when the game is
+/// over or a decision is due.
+GameStep play_foul_stroke(const GameState& state, std::optional<Vec2> place, std::uint64_t seed,
+                          const std::string& why);
+
 /// The balls on the table in `state` that are not the cue ball(s).
 std::vector<int> object_balls(const GameState& state);
 

@@ -5,7 +5,8 @@
 // solver, `paper` (mathavan_2010_euler.cpp) or `exact`
 // (mathavan_2010_exact.cpp, and for a rolling ball its answers tabulated by
 // mathavan_2010_rolling.cpp, built on first use); what they
-// share is in mathavan_2010_equations.hpp.
+// share is in mathavan_2010_equations.hpp. mathavan_2010::rebound() is the
+// same solve for the simulator, returning the velocities alone.
 //
 // Sources: S. Mathavan, M. R. Jackson, R. M. Parkin, Proc. IMechE Part C 224
 // (2010), sections 3.1 and 3.5 and equations (3d), (7), (16) as numbered
@@ -24,15 +25,8 @@ namespace cueball {
 
 namespace {
 
-using mathavan_2010::Coefficients;
 using mathavan_2010::kPi;
-using mathavan_2010::kUx;
-using mathavan_2010::kUy;
-using mathavan_2010::kUz;
-using mathavan_2010::kVx;
-using mathavan_2010::kVy;
 using mathavan_2010::Outcome;
-using mathavan_2010::State;
 using mathavan_2010::Units;
 
 // ------------------------------------------------------------------ validation
@@ -163,32 +157,67 @@ CushionImpactResult solve_cushion_impact(const IncomingBall& ball, const Cushion
   return solve_cushion_impact_unchecked(ball, model, options);
 }
 
+namespace mathavan_2010 {
+
+namespace {
+
+// The chosen solver's outcome in scaled units, and the units: what the full
+// result and the simulator's rebound are both made from.
+struct ScaledSolve {
+  Outcome outcome;
+  Units units;
+};
+
+ScaledSolve solve_scaled(const IncomingBall& ball, const CushionImpactModel& model, const CushionImpactOptions& options,
+                         std::vector<CushionImpactSample>* history) {
+  const Coefficients k = coefficients(model);
+  const double v_normal = ball.velocity.y;
+  ScaledSolve r{{}, {v_normal, model.radius, model.mass * v_normal, model.mass * v_normal * v_normal}};
+  const State y0 = scaled_state(ball, model.radius, v_normal);
+  if (options.solver == CushionSolver::paper) {
+    r.outcome = solve_paper(k, y0, options.paper_steps, r.units, history);
+  } else if (history != nullptr || !options.rolling_table || !(options.exact_tolerance >= kExactTolerance) ||
+             !solve_rolling(k, y0, r.outcome)) {
+    r.outcome = solve_exact(k, y0, r.units, history, options.exact_tolerance);
+  }
+  return r;
+}
+
+// The outgoing velocity and spin in SI units.
+CushionRebound outgoing(const ScaledSolve& r) {
+  const State& y = r.outcome.final_state;
+  const double spin = r.units.speed / r.units.radius;
+  return {{y[kVx] * r.units.speed, y[kVy] * r.units.speed, 0.0}, {y[kUx] * spin, y[kUy] * spin, y[kUz] * spin}};
+}
+
+}  // namespace
+
+CushionRebound rebound(const IncomingBall& ball, const CushionImpactModel& model, const CushionImpactOptions& options) {
+  if (options.record_history) {  // the same solve as solve_cushion_impact_unchecked(): the Runge-Kutta one
+    std::vector<CushionImpactSample> history;
+    return outgoing(solve_scaled(ball, model, options, &history));
+  }
+  return outgoing(solve_scaled(ball, model, options, nullptr));
+}
+
+}  // namespace mathavan_2010
+
 CushionImpactResult solve_cushion_impact_unchecked(const IncomingBall& ball, const CushionImpactModel& model,
                                                    const CushionImpactOptions& options) {
-  const Coefficients k = mathavan_2010::coefficients(model);
-  const double v_normal = ball.velocity.y;
-  const Units units{v_normal, model.radius, model.mass * v_normal, model.mass * v_normal * v_normal};
-  const State y0 = mathavan_2010::scaled_state(ball, model.radius, v_normal);
-
   CushionImpactResult r;
-  std::vector<CushionImpactSample>* history = options.record_history ? &r.history : nullptr;
-  Outcome o;
-  if (options.solver == CushionSolver::paper) {
-    o = mathavan_2010::solve_paper(k, y0, options.paper_steps, units, history);
-  } else if (history != nullptr || !options.rolling_table || !(options.exact_tolerance >= mathavan_2010::kExactTolerance) ||
-             !mathavan_2010::solve_rolling(k, y0, o)) {
-    o = mathavan_2010::solve_exact(k, y0, units, history, options.exact_tolerance);
-  }
-  const State& y = o.final_state;
-  const double spin = units.speed / units.radius;
-  r.velocity = {y[kVx] * units.speed, y[kVy] * units.speed, 0.0};
-  r.angular_velocity = {y[kUx] * spin, y[kUy] * spin, y[kUz] * spin};
+  const mathavan_2010::ScaledSolve solved =
+      mathavan_2010::solve_scaled(ball, model, options, options.record_history ? &r.history : nullptr);
+  const Outcome& o = solved.outcome;
+  const Units& units = solved.units;
+  const CushionRebound out = mathavan_2010::outgoing(solved);
+  r.velocity = out.velocity;
+  r.angular_velocity = out.angular_velocity;
   r.rebound_speed = norm(r.velocity);
   r.rebound_angle = std::atan2(-r.velocity.y, r.velocity.x);
   r.compression_impulse = o.compression_impulse * units.impulse;
   r.total_impulse = o.total_impulse * units.impulse;
   r.compression_work = o.compression_work * units.work;
-  r.beyond_rigid_cushion_limit = v_normal > kRigidCushionSpeedLimit;
+  r.beyond_rigid_cushion_limit = units.speed > kRigidCushionSpeedLimit;
   r.solver_steps = o.steps;
   r.solver_events = o.events;
   return r;

@@ -49,6 +49,7 @@
 #include <vector>
 
 #include "cueball/models/cushion/impact.hpp"
+#include "cueball/models/cushion/rebound.hpp"
 #include "cueball/core/errors.hpp"
 #include "cueball/core/vec.hpp"
 
@@ -234,6 +235,12 @@ Outcome solve_exact(const Coefficients& k, const State& y0, const Units& units,
 // deterministic) and kept in a bounded cache (evicted tables are rebuilt
 // identically), so the answer depends on k and y0 alone. Thread-safe.
 bool solve_rolling(const Coefficients& k, const State& y0, Outcome& out);
+
+// solve_cushion_impact_unchecked()'s velocity and spin alone, as the
+// simulator needs them (cushion_rebound(), model.cpp): the same solve and the
+// same numbers, without the rest of CushionImpactResult (its rebound angle is
+// an arctangent, a tenth of a looked-up rolling impact). mathavan_2010.cpp.
+CushionRebound rebound(const IncomingBall& ball, const CushionImpactModel& model, const CushionImpactOptions& options);
 
 struct RollingTableStats {
   bool built = false;

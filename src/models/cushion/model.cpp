@@ -6,6 +6,7 @@
 
 #include "cueball/core/errors.hpp"
 #include "core/enum_names.hpp"
+#include "mathavan_2010_equations.hpp"
 
 namespace cueball {
 
@@ -93,10 +94,7 @@ CushionContact cushion_contact(const Parameters& table, const CushionSettings& s
 
 CushionRebound cushion_rebound(const IncomingBall& ball, const CushionContact& contact) {
   switch (contact.model) {
-    case CushionModel::mathavan_2010: {
-      const CushionImpactResult r = solve_cushion_impact_unchecked(ball, contact.mathavan, contact.mathavan_options);
-      return {r.velocity, r.angular_velocity};
-    }
+    case CushionModel::mathavan_2010: return mathavan_2010::rebound(ball, contact.mathavan, contact.mathavan_options);
     case CushionModel::han_2005: return han_2005_rebound(ball, contact.han);
     case CushionModel::stronge_compliant: return stronge_compliant_rebound(ball, contact.stronge);
   }

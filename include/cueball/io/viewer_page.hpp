@@ -1,14 +1,14 @@
 // The self-contained HTML viewer: the page built from viewer/ (checked in as
-// viewer/dist/cueball-viewer.html and embedded into the binary at build time)
-// with a simulation result filled in.
+// viewer/dist/cueball-viewer.html and embedded into the library at build
+// time) with a result or a game document filled in: the CLI's --html and
+// `view`, Python's Result and cueball.rl's render().
 #pragma once
 
 #include <string>
 #include <string_view>
 
-#include "cueball/simulation/simulator.hpp"
 
-namespace cueball::cli {
+namespace cueball {
 
 /// The token the page template holds exactly once, inside
 /// <script type="application/json" id="cueball-result">.
@@ -24,4 +24,4 @@ std::string viewer_page(std::string_view template_text, std::string_view result_
 
 // The overlay and the check of a result: io/viewer_json.hpp.
 
-}  // namespace cueball::cli
+}  // namespace cueball

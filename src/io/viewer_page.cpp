@@ -1,14 +1,14 @@
-// cueball simulate --html, cueball view: the result drawn by the embedded
-// HTML viewer (viewer/README.md describes the page and its build).
-#include "viewer_page.hpp"
+// The embedded HTML viewer page with a document filled in (viewer/README.md
+// describes the page and its build).
+#include "cueball/io/viewer_page.hpp"
 
 #include <cmath>
 #include <cstddef>
 #include <string>
 
-#include "common.hpp"
+#include <stdexcept>
 
-namespace cueball::cli {
+namespace cueball {
 
 // Defined in the source that cmake/EmbedFile.cmake generates from
 // viewer/dist/cueball-viewer.html.
@@ -36,4 +36,4 @@ std::string viewer_page(std::string_view template_text, std::string_view result_
   return page;
 }
 
-}  // namespace cueball::cli
+}  // namespace cueball

@@ -6,8 +6,6 @@
 #include <optional>
 #include <string>
 #include "cueball/io/batch_json.hpp"
-#include "cueball/io/scenario_json.hpp"
-#include "cueball/planning/shot_planner.hpp"
 #include "cueball/simulation/batch.hpp"
 #include "cueball/core/errors.hpp"
 #include "cueball/simulation/scenario.hpp"
@@ -29,28 +27,17 @@ py::dict batch_dict(const cueball::Scenario& s, const cueball::BatchResult& r) {
 
 }  // namespace
 
-NoiseArgument noise_argument(const py::handle& noise) {
-  using Kind = NoiseArgument::Kind;
-  if (noise.is_none()) return {};
-  if (py::isinstance<py::bool_>(noise)) return {noise.cast<bool>() ? Kind::scenario : Kind::none, {}};
-  if (py::isinstance<py::dict>(noise)) return {Kind::sigmas, json_text(noise, "noise")};
-  if (!py::isinstance<py::str>(noise))
-    throw ArgumentTypeError("noise", wrong_type_message(noise, "noise",
-                                                       "None, a bool, 'scenario', 'none', 'tournament' or a dict of "
-                                                       "sigmas (speed, aim_deg, elevation_deg, side, height)"));
-  const std::string name = utf8_argument(noise, "noise");
-  if (name == "scenario") return {Kind::scenario, {}};
-  if (name == "none") return {Kind::none, {}};
-  if (name == "tournament") return {Kind::tournament, {}};
-  throw cueball::InvalidArgument("noise", "noise = " + cueball::quote_input(name) +
-                                              " is not known; allowed: None or 'scenario' (the scenario's), 'none', "
-                                              "'tournament' or a dict of sigmas");
-}
-
 std::shared_ptr<const cueball::Scenario> with_noise_argument(std::shared_ptr<const cueball::Scenario> s,
-                                                             const NoiseArgument& noise) {
-  using Kind = NoiseArgument::Kind;
-  if (noise.kind == Kind::scenario) {
+                                                             const py::object& noise) {
+  const char* allowed = "None or 'scenario' (the scenario's), True, False, 'none', 'tournament' or a dict of sigmas";
+  if (!(noise.is_none() || py::isinstance<py::bool_>(noise) || py::isinstance<py::str>(noise) ||
+        py::isinstance<py::dict>(noise)))
+    throw ArgumentTypeError("noise", wrong_type_message(noise, "noise", allowed));
+  const std::string name = py::isinstance<py::str>(noise) ? utf8_argument(noise, "noise") : std::string();
+  if (py::isinstance<py::str>(noise) && name != "scenario" && name != "none" && name != "tournament")
+    throw cueball::InvalidArgument("noise", "noise = " + cueball::quote_input(name) + " is not known; allowed: " + allowed);
+  const bool scenarios = noise.is_none() || (py::isinstance<py::bool_>(noise) && noise.cast<bool>()) || name == "scenario";
+  if (scenarios) {
     if (s->noise == cueball::CueStrikeNoise{} &&
         PyErr_WarnEx(PyExc_UserWarning,
                      "the scenario has no execution noise (its \"noise\" is all zero): every shot is the nominal "
@@ -60,9 +47,10 @@ std::shared_ptr<const cueball::Scenario> with_noise_argument(std::shared_ptr<con
     return s;
   }
   auto copy = std::make_shared<cueball::Scenario>(*s);
-  copy->noise = noise.kind == Kind::none         ? cueball::CueStrikeNoise{}
-                : noise.kind == Kind::tournament ? cueball::tournament_noise()
-                                                 : cueball::noise_from_json(noise.json, s->settings.parameters.ball.radius, "noise");
+  if (py::isinstance<py::bool_>(noise))
+    copy->noise = {};  // False
+  else
+    copy->noise = *noise_argument(noise, s->settings.parameters.ball.radius);  // not None here
   return copy;
 }
 
@@ -79,13 +67,12 @@ void bind_batch(py::module_& m) {
           throw cueball::InvalidArgument("threads", static_cast<double>(threads),
                                          "[1, " + std::to_string(cueball::kMaxBatchThreads) + "]", "worker threads");
         const ScenarioInput input = scenario_input(scenario);
-        const NoiseArgument noise_choice = noise_argument(noise);
         std::shared_ptr<const cueball::Scenario> s;
         {
           py::gil_scoped_release release;
           s = load_scenario(input);
         }
-        s = with_noise_argument(s, noise_choice);
+        s = with_noise_argument(s, noise);
         cueball::BatchResult r;
         {
           py::gil_scoped_release release;

@@ -133,21 +133,13 @@ cueball::CushionSolver cushion_solver(const std::string& name, const char* field
 void only_for(const char* field, bool given, const char* kind, bool applies, const char* owner, std::string_view chosen);
 
 // ------------------------------------------------------------------ noise of batches (batch.cpp)
-// simulate_batch's and simulate_many's noise=: True, None or 'scenario' (the
-// scenario's "noise"), False or 'none' (no noise), 'tournament'
-// (tournament_noise()), or a dict of sigmas in the units of the scenario's
-// "noise". Read in two steps: the Python object while the GIL is held, the
-// sigmas once the scenario (its ball radius) is loaded.
-struct NoiseArgument {
-  enum class Kind { scenario, none, tournament, sigmas } kind = Kind::scenario;
-  std::string json;  // the dict, for Kind::sigmas
-};
-NoiseArgument noise_argument(const py::handle& noise);
-/// The scenario with the noise chosen, sharing `s` when it is the
-/// scenario's own. With the GIL held: a UserWarning when the scenario's own
-/// noise is used and all of it is zero (every shot the nominal strike).
+/// The scenario with simulate_batch's or simulate_many's noise= applied:
+/// True, None or 'scenario' the scenario's own "noise" (`s` itself; a
+/// UserWarning when all of it is zero: every shot the nominal strike),
+/// False or what noise_argument() reads ('none', 'tournament', a dict of
+/// sigmas) in its place. Needs the GIL.
 std::shared_ptr<const cueball::Scenario> with_noise_argument(std::shared_ptr<const cueball::Scenario> s,
-                                                             const NoiseArgument& noise);
+                                                             const py::object& noise);
 
 // ------------------------------------------------------------------ scenarios (scenario_input.cpp)
 

@@ -103,16 +103,16 @@ void bind_simulate_many(py::module_& m) {
         if (first_shot < 0 || static_cast<std::uint64_t>(first_shot) > cueball::kMaxFirstShot)
           throw cueball::InvalidArgument("first_shot", static_cast<double>(first_shot), "[0, 2^53]",
                                          "index of actions[0] in the whole study");
-        const NoiseArgument noise_choice = noise_argument(noise);
-        cueball::ManyOptions options{static_cast<int>(threads), seed, noise_choice.kind != NoiseArgument::Kind::none};
-        options.first_shot = static_cast<std::uint64_t>(first_shot);
         const ScenarioInput input = scenario_input(scenario);
         std::shared_ptr<const cueball::Scenario> s;
         {
           py::gil_scoped_release release;
           s = load_scenario(input);
         }
-        if (options.noise) s = with_noise_argument(s, noise_choice);
+        s = with_noise_argument(s, noise);
+        // No noise at all: the actions as given (no draws).
+        cueball::ManyOptions options{static_cast<int>(threads), seed, !(s->noise == cueball::CueStrikeNoise{})};
+        options.first_shot = static_cast<std::uint64_t>(first_shot);
         auto result = std::make_unique<cueball::ManyResult>();
         {
           py::gil_scoped_release release;

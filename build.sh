@@ -36,6 +36,12 @@ build() {  # build <preset> [cmake -D options]
   cmake --preset "$@" >/dev/null
   cmake --build --preset "$1" -j "$jobs"
 }
+phase() {  # phase <name> <command...>: runs it and says how long it took
+  local name=$1 start=$SECONDS
+  shift
+  "$@"
+  echo "== $name: $((SECONDS - start)) s"
+}
 
 case "$mode" in
   demo)
@@ -45,18 +51,18 @@ case "$mode" in
     "$bin" simulate -o build/break.json --html build/break.html
     ;;
   test)
-    (cd viewer && npm ci --no-audit --no-fund --loglevel=error)
-    build release -DCUEBALL_VIEWER_TESTS=ON -DCUEBALL_BUILD_PYTHON=ON
-    ctest --preset release
-    build asan -DCUEBALL_BUILD_PYTHON=ON
+    phase "npm ci (viewer)" bash -c 'cd viewer && npm ci --no-audit --no-fund --loglevel=error'
+    phase "release build" build release -DCUEBALL_VIEWER_TESTS=ON -DCUEBALL_BUILD_PYTHON=ON
+    phase "release tests" ctest --preset release
+    phase "asan build" build asan -DCUEBALL_BUILD_PYTHON=ON
     # The sanitizer run checks memory and undefined behaviour, not numbers:
     # it leaves out the tests labelled long_numerics (tests/long_numerics.cmake:
     # long accuracy and convergence checks, which the Release suite above has
     # run in full) and runs a tenth of the cases of the long random scans
     # (tests/support/test_scale.hpp); every code path they take still runs in it.
-    ctest --preset asan
-    build fuzz
-    fuzz/run.sh build/fuzz 30
+    phase "asan tests" ctest --preset asan
+    phase "fuzz build" build fuzz
+    phase "fuzz run" fuzz/run.sh build/fuzz 30
     ;;
   *)
     echo "usage: $0 [demo|test]" >&2

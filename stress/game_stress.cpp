@@ -5,6 +5,9 @@
 // seed both stream_seed(S + k, n), so any game is reproduced alone by
 //     cueball-stress --games 1 --game KIND --seed S+k
 //
+// One shot in eight is played as a foul stroke (play_foul_stroke, as the
+// learning environment plays an illegal action), the rest as the agent chose.
+//
 // The invariants (a game counts once per kind of violation):
 //   illegal      play() refused the random agent's action (InvalidArgument):
 //                legal_actions() and validate_action() disagree
@@ -96,6 +99,7 @@ struct GameRun {
   std::uint64_t seed = 0;
   GameState state;
   std::vector<Action> actions;
+  std::vector<char> foul_strokes;  // actions[i] was played as a foul stroke
   std::vector<int> all;   // the rack's object balls
   std::vector<int> down;  // pocketed and not respotted
   std::array<int, 2> points{};
@@ -130,18 +134,31 @@ void check_balls(GameRun& run, const GameStep& step) {
   if (seen != run.all) note(run, 4, "the balls on the table and down are not the rack's");
 }
 
+// One shot in eight (where a shot is due) is a foul stroke instead, as a
+// learner's illegal action plays it (play_foul_stroke, rl/environment.hpp),
+// with the agent's spot when it has one.
+bool foul_stroke_turn(const GameState& state, std::uint64_t shot_seed) {
+  return state.phase != GamePhase::decision && (stream_seed(shot_seed, 1) & 7u) == 0;
+}
+
+GameStep play_step(const GameState& state, const Action& a, bool foul_stroke, std::uint64_t shot_seed) {
+  return foul_stroke ? play_foul_stroke(state, a.place, shot_seed, "stress: a foul stroke") : play(state, a, shot_seed);
+}
+
 void step_game(GameRun& run, const AgentOptions& agent) {
   const std::uint64_t shot_seed = stream_seed(run.seed, static_cast<std::uint64_t>(run.state.shots));
   const Action a = choose_action(agent, run.state, shot_seed);
+  const bool foul_stroke = foul_stroke_turn(run.state, shot_seed);
   GameStep step;
   try {
-    step = play(run.state, a, shot_seed);
+    step = play_step(run.state, a, foul_stroke, shot_seed);
   } catch (const InvalidArgument& e) {
     note(run, 0, e.what());
     run.state.over = true;
     return;
   }
   run.actions.push_back(a);
+  run.foul_strokes.push_back(foul_stroke ? 1 : 0);
   check_balls(run, step);
   const std::string problem = table_problem(step.next);
   if (!problem.empty()) note(run, 5, problem);
@@ -165,14 +182,15 @@ void finish(GameRun& run, bool replay) {
                      std::to_string(expected[0]) + ":" + std::to_string(expected[1]));
   if (replay && run.out.violation[0].empty()) {
     GameState r = new_game(config_for(run.kind, run.seed), run.seed);
-    for (const Action& a : run.actions)
-      r = play(r, a, stream_seed(run.seed, static_cast<std::uint64_t>(r.shots))).next;
+    for (std::size_t i = 0; i < run.actions.size(); ++i)
+      r = play_step(r, run.actions[i], run.foul_strokes[i] != 0, stream_seed(run.seed, static_cast<std::uint64_t>(r.shots)))
+              .next;
     if (!(r == s)) note(run, 7, "the replay differs");
   }
 }
 
 GameOutcome run_game(GameKind kind, std::uint64_t seed) {
-  GameRun run{kind, seed, {}, {}, {}, {}, {}, {}};
+  GameRun run{kind, seed, {}, {}, {}, {}, {}, {}, {}};
   AgentOptions agent;
   agent.kind = AgentKind::random;
   try {

@@ -80,7 +80,10 @@ TEST(GameJson, EveryDisciplineRoundTripsAndReplays) {
     for (std::uint64_t seed = 0; seed < 3; ++seed) {
       games.push_back(play_game(config, {random, random}, seed));
       expect_round_trip(games.back().start);
-      for (const RecordedStep& step : games.back().steps) expect_round_trip(step.state);
+      // Every state of the first game, every 7th of the others (the record's
+      // round trip below covers all of them as a whole).
+      const std::vector<RecordedStep>& steps = games.back().steps;
+      for (std::size_t i = 0; i < steps.size(); i += seed == 0 ? 1 : 7) expect_round_trip(steps[i].state);
     }
     const std::string text = game_records_to_json(games);
     const std::vector<GameRecord> back = game_records_from_json(text);

@@ -50,7 +50,7 @@ EnvOptions make_options(const std::string& game, const std::optional<std::string
   if (const auto n = noise_argument(noise, probe.table.table.ball.radius)) o.noise.base = *n;
   o.noise.scale_min = noise_scale[0];
   o.noise.scale_max = noise_scale[1];
-  o.reward = cueball::RewardWeights{0.0, 0.0, 0.0, 0.0, 0.0};
+  o.reward = cueball::RewardTerms{};
   for (const auto& [key, value] : reward) {
     const std::string k = key.cast<std::string>();
     const double w = cast_argument<double>(value, "reward." + k, "a number");

@@ -3,6 +3,7 @@ env, the PettingZoo-style two-player env, the vector env, their spaces, masks, r
 bounds and determinism, and the cross-entropy-method demo that shows learning."""
 
 import json
+import os
 import unittest
 
 import numpy as np
@@ -229,6 +230,7 @@ class VectorEnvTest(unittest.TestCase):
             rl.VectorEnv(2, opponent=lambda o, i: {})
 
 
+@unittest.skipIf(os.environ.get("CUEBALL_SANITIZED"), "numerics, run by the Release suite (the sanitizer build checks memory)")
 class LearningTest(unittest.TestCase):
     def test_the_cross_entropy_method_learns_to_pot(self):
         curve = cross_entropy_method(iterations=10, population=30, drills_per_member=8, seed=0)

@@ -554,6 +554,20 @@ Action foul_stroke_action(const GameState& state, const LegalActions& legal, std
   return a;
 }
 
+// Step 6: the shot's GameStep, the bound on shots counted.
+GameStep shot_step(const Action& action, ShotRun& run, Judgement j) {
+  count_shot(j.next, j.ruling);
+  GameStep step;
+  step.action = action;
+  step.played = run.played;
+  step.shot = std::move(run.shot);
+  step.result = std::move(run.result);
+  step.facts = std::move(run.facts);
+  step.ruling = std::move(j.ruling);
+  step.next = std::move(j.next);
+  return step;
+}
+
 }  // namespace
 
 GameStep play_foul_stroke(const GameState& state, std::optional<Vec2> place, std::uint64_t seed,
@@ -567,15 +581,7 @@ GameStep play_foul_stroke(const GameState& state, std::optional<Vec2> place, std
   simulate_shot(run);
   Judgement j = judge(run);
   j.ruling.reason = why + (j.ruling.reason.empty() ? "" : "; ") + j.ruling.reason;
-  count_shot(j.next, j.ruling);
-  GameStep step;
-  step.action = action;
-  step.shot = std::move(run.shot);
-  step.result = std::move(run.result);
-  step.facts = std::move(run.facts);
-  step.ruling = std::move(j.ruling);
-  step.next = std::move(j.next);
-  return step;
+  return shot_step(action, run, std::move(j));
 }
 
 GameStep play(const GameState& state, const Action& action, std::uint64_t seed) {
@@ -594,15 +600,7 @@ GameStep play(const GameState& state, const Action& action, std::uint64_t seed) 
   set_table(run);
   strike(run);
   simulate_shot(run);
-  Judgement j = judge(run);
-  count_shot(j.next, j.ruling);
-  step.played = run.played;
-  step.shot = std::move(run.shot);
-  step.result = std::move(run.result);
-  step.facts = std::move(run.facts);
-  step.ruling = std::move(j.ruling);
-  step.next = std::move(j.next);
-  return step;
+  return shot_step(action, run, judge(run));
 }
 
 }  // namespace cueball

@@ -138,7 +138,7 @@ constexpr int kMaxSkippedEpisodes = 100;
 
 }  // namespace
 
-double weighted(const RewardWeights& w, const RewardTerms& t) {
+double weighted(const RewardTerms& w, const RewardTerms& t) {
   return w.win * t.win + w.points * t.points + w.pots * t.pots + w.fouls * t.fouls + w.illegal * t.illegal;
 }
 
@@ -159,7 +159,7 @@ void validate(const EnvOptions& options) {
   if (options.opponent.kind && (options.opponent.simulations < 1 || options.opponent.simulations > 1000000))
     throw InvalidArgument("opponent.simulations", options.opponent.simulations, "[1, 1000000]",
                           "engine runs of an opponent's decision");
-  const RewardWeights& w = options.reward;
+  const RewardTerms& w = options.reward;
   for (const double v : {w.win, w.points, w.pots, w.fouls, w.illegal})
     if (!std::isfinite(v)) throw InvalidArgument("reward", "reward: every weight must be finite");
 }

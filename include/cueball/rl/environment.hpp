@@ -71,13 +71,17 @@ std::optional<BreakPolicy> break_policy_from_string(std::string_view name);
 ///   pots     object balls the player pocketed on its own shots without a foul
 ///   fouls    fouls the player committed (a count: give it a negative weight)
 ///   illegal  illegal actions of the player (a count: a negative weight)
-struct RewardWeights {
-  double win = 1.0;
+/// One struct holds the terms of a step (EnvStepResult::terms) and their
+/// weights (EnvOptions::reward).
+struct RewardTerms {
+  double win = 0.0;
   double points = 0.0;
   double pots = 0.0;
   double fouls = 0.0;
   double illegal = 0.0;
 };
+/// The reward: the terms `t` weighted by `w`.
+double weighted(const RewardTerms& w, const RewardTerms& t);
 
 /// Execution noise drawn per episode: `base` times a factor drawn uniformly
 /// from [scale_min, scale_max] (1 and 1 by default: exactly `base`).
@@ -98,7 +102,7 @@ struct EnvOptions {
   GameKind game = GameKind::nine_ball;
   EnvOpponent opponent;
   NoiseRange noise;                 ///< none by default
-  RewardWeights reward;
+  RewardTerms reward{1.0, 0.0, 0.0, 0.0, 0.0};  ///< the weights: win alone by default
   ActionForm form = ActionForm::raw;
   BreakPolicy break_policy = BreakPolicy::recommended;
   /// The learner's seat: 0 breaks, 1 is broken against; -1: drawn per episode.
@@ -231,17 +235,6 @@ struct EnvTable {
   /// The observation's point of view: the learner, or in self-play the player to act.
   int viewer() const;
 };
-
-/// The reward's terms for one player over one step (RewardWeights says
-/// what each counts).
-struct RewardTerms {
-  double win = 0.0;
-  double points = 0.0;
-  double pots = 0.0;
-  double fouls = 0.0;
-  double illegal = 0.0;
-};
-double weighted(const RewardWeights& w, const RewardTerms& t);
 
 /// What one step did.
 struct EnvStepResult {

@@ -12,6 +12,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cstdint>
 #include <numbers>
 #include <vector>
 
@@ -219,6 +220,30 @@ void BM_ManyVsBatchBreaks(benchmark::State& st) {
   st.counters["many_over_batch"] = batch_seconds / many_seconds;
 }
 BENCHMARK(BM_ManyVsBatchBreaks)->Arg(1)->Arg(2)->Unit(benchmark::kMillisecond)->UseRealTime();
+
+// The same N noisy breaks through simulate_many without a present mask and
+// with one that keeps every ball (the absent-ball path: the present balls
+// gathered, their outcome spread back over the scenario's columns),
+// alternately in each iteration: masked_over_plain is the ratio of their
+// throughputs (1 = the mask costs nothing). The arrays are the same.
+void BM_ManyMaskedVsPlain(benchmark::State& st) {
+  static const Scenario s = default_scenario();
+  constexpr int kShots = 512;
+  const std::vector<ShotAction> actions = nominal_breaks(s, kShots);
+  const std::vector<std::uint8_t> every_ball(kShots * s.balls.size(), 1);
+  double plain_seconds = 0.0, masked_seconds = 0.0;
+  for (auto _ : st) {
+    auto t0 = std::chrono::steady_clock::now();
+    benchmark::DoNotOptimize(simulate_many(s, actions, {}, {1, 1, true}).events.data());
+    auto t1 = std::chrono::steady_clock::now();
+    benchmark::DoNotOptimize(simulate_many(s, actions, {}, {1, 1, true}, every_ball).events.data());
+    auto t2 = std::chrono::steady_clock::now();
+    plain_seconds += std::chrono::duration<double>(t1 - t0).count();
+    masked_seconds += std::chrono::duration<double>(t2 - t1).count();
+  }
+  st.counters["masked_over_plain"] = plain_seconds / masked_seconds;
+}
+BENCHMARK(BM_ManyMaskedVsPlain)->Unit(benchmark::kMillisecond)->UseRealTime();
 
 // What a shot's facts cost beside its simulation (shot_facts.hpp), timed
 // alternately in one process: the events-only facts that every batch shot's

@@ -1,8 +1,11 @@
 // cueball simulate, cueball batch: whole shots on a table (scenario.hpp).
+#include <algorithm>
 #include <charconv>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <fstream>
+#include <limits>
 #include <map>
 #include <memory>
 #include <numbers>
@@ -163,6 +166,14 @@ class OutcomeCsv {
 
 // ------------------------------------------------------------------ batch
 
+// Noisy copies without noise are identical shots: said on stderr, since
+// it is seldom what was meant (the scenario has no "noise").
+void warn_if_noiseless(const Scenario& s, const char* flags, std::ostream& err) {
+  if (s.noise == CueStrikeNoise{})
+    err << "cueball: warning: the noise is zero (the scenario has no \"noise\"" << flags
+        << "): every shot is the nominal strike\n";
+}
+
 struct BatchFlags {
   std::string scenario;
   std::string outcomes;
@@ -182,6 +193,7 @@ void run_batch(const BatchFlags& f, std::ostream& out, std::ostream& err) {
   Scenario s = load_scenario(f.scenario);
   if (!s.cue) throw UsageError("the scenario has no \"cue\" strike to repeat");
   s.noise = with_sigma_flags(f.sigma, s.noise, s.settings.parameters.ball.radius);
+  warn_if_noiseless(s, " and no --sigma-* flag sets one", err);
 
   std::optional<OutcomeCsv> csv;
   if (!f.outcomes.empty()) csv.emplace(f.outcomes, s);
@@ -209,9 +221,11 @@ void run_batch(const BatchFlags& f, std::ostream& out, std::ostream& err) {
 
 // ------------------------------------------------------------------ many
 
-// A CSV of numbers with a fixed header: the data rows, row-major.
+// A CSV of numbers with a fixed header: the data rows, row-major. With
+// `empty`, a cell left empty is allowed: NaN in the values, 1 in `empty`
+// (one flag per value); without it, it is an error like any non-number.
 std::vector<double> read_number_csv(const std::string& path, const char* flag, const std::string& header,
-                                    std::size_t& rows) {
+                                    std::size_t& rows, std::vector<std::uint8_t>* empty = nullptr) {
   const std::string text = read_text_file(path, std::string("the ") + (flag + 2) + " file", kMaxResultFileBytes);
   const std::string where = std::string(flag) + " " + quote_input(path, kMaxEchoedPathChars);
   std::vector<double> values;
@@ -240,11 +254,14 @@ std::vector<double> read_number_csv(const std::string& path, const char* flag, c
       double v = 0.0;
       const char* first = cell.data();
       while (first < cell.data() + cell.size() && *first == ' ') ++first;
+      const bool blank = first == cell.data() + cell.size();
       const auto r = std::from_chars(first, cell.data() + cell.size(), v);
-      if (r.ec != std::errc() || r.ptr != cell.data() + cell.size())
+      if (blank && empty != nullptr) v = std::numeric_limits<double>::quiet_NaN();
+      else if (r.ec != std::errc() || r.ptr != cell.data() + cell.size())
         throw UsageError(where + " line " + std::to_string(line_no) + ", column " + std::to_string(column) + ": " +
                          quote_input(cell) + " is not a number");
       values.push_back(v);
+      if (empty != nullptr) empty->push_back(blank ? 1 : 0);
       if (comma == std::string::npos) break;
       cell_start = comma + 1;
     }
@@ -255,6 +272,24 @@ std::vector<double> read_number_csv(const std::string& path, const char* flag, c
   }
   if (line_no == 0) throw UsageError(where + ": the file is empty; it needs the header \"" + header + "\"");
   return values;
+}
+
+// A layouts CSV's empty cells as simulate_many's present flags (empty when
+// every ball is in every row): a ball whose x and y cells are both empty is
+// not on the table in that shot; one of the two empty is an error.
+std::vector<std::uint8_t> absent_balls(const std::vector<std::uint8_t>& empty, const Scenario& s,
+                                       const std::string& path) {
+  if (std::find(empty.begin(), empty.end(), 1) == empty.end()) return {};
+  const std::size_t n = s.balls.size();
+  std::vector<std::uint8_t> present(empty.size() / 2, 1);
+  for (std::size_t e = 0; e < present.size(); ++e) {
+    if (empty[2 * e] != empty[2 * e + 1])
+      throw UsageError("--layouts " + quote_input(path, kMaxEchoedPathChars) + " line " + std::to_string(e / n + 2) +
+                       ": one of x_" + std::to_string(s.balls[e % n].id) + ", y_" + std::to_string(s.balls[e % n].id) +
+                       " is empty; leave both empty for a ball not on the table");
+    present[e] = empty[2 * e] ? 0 : 1;
+  }
+  return present;
 }
 
 struct ManyFlags {
@@ -275,6 +310,7 @@ void run_many(const ManyFlags& f, std::ostream& out, std::ostream& err) {
   check_flag("--first-shot", static_cast<double>(f.first_shot), 0, static_cast<double>(kMaxFirstShot),
              "index of the first data row in the whole study");
   const Scenario s = load_scenario(f.scenario);
+  if (f.noise) warn_if_noiseless(s, "", err);
   std::size_t shots = 0;
   const std::vector<double> numbers =
       read_number_csv(f.actions, "--actions", "speed,aim_deg,elevation_deg,side,height", shots);
@@ -285,28 +321,31 @@ void run_many(const ManyFlags& f, std::ostream& out, std::ostream& err) {
   for (std::size_t k = 0; k < shots; ++k)
     actions[k] = {numbers[5 * k], numbers[5 * k + 1], numbers[5 * k + 2], numbers[5 * k + 3], numbers[5 * k + 4]};
   std::vector<double> layouts;
+  std::vector<std::uint8_t> present;  // empty: every ball on the table in every shot
   if (!f.layouts.empty()) {
     std::string header;
     for (const SimulationBall& b : s.balls)
       header += (header.empty() ? "" : ",") + std::string("x_") + std::to_string(b.id) + ",y_" + std::to_string(b.id);
     std::size_t rows = 0;
-    layouts = read_number_csv(f.layouts, "--layouts", header, rows);
+    std::vector<std::uint8_t> empty;
+    layouts = read_number_csv(f.layouts, "--layouts", header, rows, &empty);
     if (rows != shots)
       throw UsageError("--layouts " + quote_input(f.layouts, kMaxEchoedPathChars) + ": " + std::to_string(rows) +
                        " layouts for " + std::to_string(shots) + " actions; give one per action");
+    present = absent_balls(empty, s, f.layouts);
   }
   ManyResult r;
   try {
     ManyOptions options{f.threads, static_cast<std::uint64_t>(f.seed), f.noise};
     options.first_shot = static_cast<std::uint64_t>(f.first_shot);
-    r = simulate_many(s, actions, layouts, options);
+    r = simulate_many(s, actions, layouts, options, present);
   } catch (const InvalidArgument& e) {
     // actions[first_shot + k] is data row k (line k + 2) of the file.
     const std::string& field = e.field();
     const std::string row = f.first_shot == 0 ? "k" : std::to_string(f.first_shot) + " + k";
     if (field.rfind("actions[", 0) == 0)
       throw UsageError("--actions (data row k is actions[" + row + "]): " + std::string(e.what()));
-    if (field.rfind("layouts[", 0) == 0)
+    if (field.rfind("layouts[", 0) == 0 || field.rfind("present[", 0) == 0)
       throw UsageError("--layouts (data row k is layouts[" + row + "]): " + std::string(e.what()));
     throw;
   }
@@ -346,7 +385,9 @@ Command add_many_command(CLI::App& app) {
       "scenario's layout or its own (--layouts), across threads; deterministic whatever --threads is.\n"
       "--actions CSV: header speed,aim_deg,elevation_deg,side,height (m/s, degrees, degrees, ball radii,\n"
       "ball radii: the scenario's \"cue\" units), one row per shot, struck on the scenario's cue ball.\n"
-      "--layouts CSV: header x_ID,y_ID for every ball in the scenario's order (m), one row per action.\n"
+      "--layouts CSV: header x_ID,y_ID for every ball in the scenario's order (m), one row per action;\n"
+      "both cells of a ball left empty: that ball is not on the table in that shot (the cue ball must be).\n"
+      "An action's tip offset beyond the miscue limit (sqrt(side^2+height^2) > 0.5) is a miscue, counted.\n"
       "--noise adds the scenario's execution noise (seeded per shot by --seed, as batch does).\n"
       "--outcomes writes every shot's outcome as CSV in batch --outcomes' format. At most 1e6 shots.\n"
       "--first-shot K: the file's rows are shots K, K+1, ... of a bigger study split into files (their\n"

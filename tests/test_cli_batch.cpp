@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdint>
 #include <cstdlib>
 #include <cstring>
 #include <nlohmann/json.hpp>
@@ -298,6 +299,61 @@ TEST(CliMany, FilesSplitWithTheirFirstShotGiveTheWholesOutcomes) {
   const CliRun negative = many(whole, c, "-1");
   EXPECT_EQ(negative.status, 2);
   EXPECT_NE(negative.err.find("--first-shot"), std::string::npos) << negative.err;
+}
+
+TEST(CliMany, EmptyLayoutCellsLeaveTheBallOffTheTableAndMiscuesAreCounted) {
+  TempDir dir;
+  const std::string scenario = dir.write("cut.json", kCutShot);
+  // Row 1 leaves ball 1 out; row 2 asks for a tip offset of 0.57 R (a miscue).
+  const std::string cut = "2.5,13.587,0,0,-0.2\n", rack = "1.1,0.7,2.05,0.95,0.8,1.0\n";
+  const std::string actions =
+      dir.write("actions.csv", "speed,aim_deg,elevation_deg,side,height\n" + cut + cut + "2.5,13.587,0,0.4,0.4\n");
+  const std::string layouts = dir.write("layouts.csv", "x_0,y_0,x_1,y_1,x_9,y_9\n" + rack + "1.1,0.7,,,0.8,1.0\n" + rack);
+  const std::string out = dir.path("out.csv");
+  const CliRun r = run_cli({"many", scenario, "--actions", actions, "--layouts", layouts, "--outcomes", out, "--json"});
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_EQ(Json::parse(r.out).at("miscues"), 1);
+  const std::vector<ShotAction> a{{2.5, 13.587, 0, 0, -0.2}, {2.5, 13.587, 0, 0, -0.2}, {2.5, 13.587, 0, 0.4, 0.4}};
+  const std::vector<double> l{1.1, 0.7, 2.05, 0.95, 0.8, 1.0, 1.1, 0.7, 0, 0, 0.8, 1.0, 1.1, 0.7, 2.05, 0.95, 0.8, 1.0};
+  const std::vector<std::uint8_t> present{1, 1, 1, 1, 0, 1, 1, 1, 1};
+  const ManyResult m = simulate_many(scenario_from_json(kCutShot), a, l, {}, present);
+  const auto rows = read_csv(read_text(out));
+  ASSERT_EQ(rows.size(), 4u);
+  EXPECT_EQ(m.first_contact[0], 1);
+  EXPECT_NE(m.first_contact[1], 1);  // ball 1 is not there to hit
+  EXPECT_EQ(rows[2][6], std::to_string(m.first_contact[1]));
+  EXPECT_EQ(rows[2][6 + 6 * 1 + 3], "nan");  // x_1 of the shot without ball 1
+  EXPECT_EQ(rows[3][1], "1");                // row 2: a miscue
+  // One of a ball's two cells empty is an error naming the line.
+  const std::string half = dir.write("half.csv", "x_0,y_0,x_1,y_1,x_9,y_9\n1.1,0.7,2.05,,0.8,1.0\n");
+  const std::string one_action = dir.write("one.csv", "speed,aim_deg,elevation_deg,side,height\n2.5,13.587,0,0,-0.2\n");
+  expect_usage_error({"many", scenario, "--actions", one_action, "--layouts", half},
+                     "line 2: one of x_1, y_1 is empty; leave both empty for a ball not on the table");
+  const std::string no_cue = dir.write("no_cue.csv", "x_0,y_0,x_1,y_1,x_9,y_9\n,,2.05,0.95,0.8,1.0\n");
+  expect_usage_error({"many", scenario, "--actions", one_action, "--layouts", no_cue},
+                     "--layouts (data row k is layouts[k]): present[0][0] is false: the cue ball (id 0) must be on the table");
+  // Empty action cells stay an error.
+  const std::string empty_action = dir.write("e.csv", "speed,aim_deg,elevation_deg,side,height\n2.5,,0,0,0\n");
+  expect_usage_error({"many", scenario, "--actions", empty_action}, "line 2, column 2: \"\" is not a number");
+}
+
+TEST(CliBatchNoise, NoNoiseAtAllIsAWarning) {
+  TempDir dir;
+  Json quiet = Json::parse(kCutShot);
+  quiet.erase("noise");
+  const std::string scenario = dir.write("quiet.json", quiet.dump());
+  const CliRun batch = run_cli({"batch", scenario, "--shots", "3"});
+  ASSERT_EQ(batch.status, 0) << batch.err;
+  EXPECT_NE(batch.err.find("cueball: warning: the noise is zero (the scenario has no \"noise\" and no --sigma-* flag"),
+            std::string::npos)
+      << batch.err;
+  const CliRun sigma = run_cli({"batch", scenario, "--shots", "3", "--sigma-aim", "0.1"});
+  ASSERT_EQ(sigma.status, 0) << sigma.err;
+  EXPECT_EQ(sigma.err.find("warning"), std::string::npos) << sigma.err;
+  const std::string actions = dir.write("a.csv", "speed,aim_deg,elevation_deg,side,height\n2.5,13.587,0,0,-0.2\n");
+  EXPECT_NE(run_cli({"many", scenario, "--actions", actions, "--noise"}).err.find("warning: the noise is zero"),
+            std::string::npos);
+  EXPECT_EQ(run_cli({"many", scenario, "--actions", actions}).err.find("warning"), std::string::npos);
 }
 
 TEST(CliMany, BadFilesAndActionsAreOneLineNamingTheRow) {

@@ -1058,14 +1058,23 @@ def simulate(scenario: _Scenario = None, sample_rate: _Float = 0.0) -> Result:
     sample_rate (Hz) is the default of to_dict() and to_json(). Releases the GIL.
     """
 
-def simulate_batch(scenario: _Scenario = None, shots: _Int = 1000, threads: _Int = 1, seed: _Int = 0) -> dict[str, Any]:
+# noise= of simulate_batch and simulate_many: True, None or 'scenario' (the scenario's "noise"),
+# False or 'none', 'tournament', or a dict of sigmas (speed m/s, aim_deg, elevation_deg, side and
+# height ball radii).
+_Noise = bool | str | Mapping[str, _Float] | None
+
+def simulate_batch(
+    scenario: _Scenario = None, shots: _Int = 1000, threads: _Int = 1, seed: _Int = 0, noise: _Noise = None
+) -> dict[str, Any]:
     """Noisy copies of the scenario's shot: json.loads of what `cueball batch --json` prints (one
-    writer, batch_result_to_json), pocketed_probability's keys as int ball ids. Releases the GIL."""
+    writer, batch_result_to_json), pocketed_probability's keys as int ball ids. noise None: the
+    scenario's, a UserWarning when it is all zero. Releases the GIL."""
 
 class ManyOutcomes(TypedDict):
     """simulate_many's per-shot outcomes: rows by shot, columns by ball (`ids`)."""
 
     ids: NDArray[np.int32]
+    present: NDArray[np.bool_]
     pocketed: NDArray[np.bool_]
     pocket: NDArray[np.int32]
     final_position: NDArray[np.float64]
@@ -1086,12 +1095,16 @@ def simulate_many(
     layouts: NDArray[Any] | None = None,
     threads: _Int = 1,
     seed: _Int = 0,
-    noise: bool = False,
+    noise: _Noise = False,
     first_shot: _Int = 0,
+    present: NDArray[np.bool_] | None = None,
 ) -> ManyOutcomes:
     """N different shots in one call: actions (N, 5) of cue speed m/s, aim deg, elevation deg,
-    side and height ball radii; layouts (N, n_balls, 2) m, optional. Releases the GIL.
-    first_shot: row of actions[0] in a study split into chunks (its noise, its errors' names)."""
+    side and height ball radii (beyond the miscue limit: miscue True, not an error); layouts
+    (N, n_balls, 2) m, optional; present (N, n_balls) bool, optional: False leaves the ball off
+    that shot's table (final_position NaN, pocket -1). noise False: the actions as given.
+    Releases the GIL. first_shot: row of actions[0] in a study split into chunks (its noise,
+    its errors' names)."""
 
 def plan_shot(
     scenario: _Scenario,

@@ -36,7 +36,7 @@ if TYPE_CHECKING:  # a TypedDict of the stubs only
     from ._cueball import ManyOutcomes
 
 # The per-shot arrays of simulate_many's result, concatenated along the rows.
-PER_SHOT = ("pocketed", "pocket", "final_position", "first_contact", "cushions_before_contact", "cushions",
+PER_SHOT = ("present", "pocketed", "pocket", "final_position", "first_contact", "cushions_before_contact", "cushions",
             "events", "miscue", "failure", "speed_reflected", "elevation_reflected")
 # Default chunks per worker thread: enough for the faster workers to take
 # over the slower ones' share, few enough that scheduling costs nothing.
@@ -62,10 +62,10 @@ def _resolved_scenario(scenario: Any) -> Any:
 
 
 def _play_chunk(scenario: Any, actions: NDArray[np.float64], layouts: NDArray[np.float64] | None, seed: int,
-                noise: bool, first_shot: int, threads: int) -> ManyOutcomes:
+                noise: Any, first_shot: int, threads: int, present: NDArray[np.bool_] | None = None) -> ManyOutcomes:
     """Runs on a worker: one chunk, as a local call."""
     return _cueball.simulate_many(scenario, actions, layouts, threads=threads, seed=seed, noise=noise,
-                                  first_shot=first_shot)
+                                  first_shot=first_shot, present=present)
 
 
 def _invalid(field: str, message: str) -> _cueball.InvalidArgument:
@@ -76,8 +76,9 @@ def _invalid(field: str, message: str) -> _cueball.InvalidArgument:
 
 def simulate_many(client: Any, scenario: None | _cueball.Scenario | str | os.PathLike[str] | Mapping[str, Any],
                   actions: Any,
-                  layouts: Any = None, *, seed: int = 0, noise: bool = False, chunk_size: int | None = None,
-                  threads: int = 1) -> ManyOutcomes:
+                  layouts: Any = None, *, seed: int = 0,
+                  noise: bool | str | Mapping[str, float] | None = False, chunk_size: int | None = None,
+                  threads: int = 1, present: Any = None) -> ManyOutcomes:
     """cueball.simulate_many on a Dask cluster: the same arguments (without `threads`' meaning), the same dict back.
 
     client:     a distributed.Client (LocalCluster or tcp://scheduler:8786)
@@ -97,7 +98,7 @@ def simulate_many(client: Any, scenario: None | _cueball.Scenario | str | os.Pat
         a = None
     if a is None or a.ndim != 2 or a.shape[0] == 0 or a.shape[1] != 5:
         # Malformed or empty: the module's own check says what is wrong, with its wording.
-        return _cueball.simulate_many(scenario, actions, layouts, seed=seed, noise=noise)
+        return _cueball.simulate_many(scenario, actions, layouts, seed=seed, noise=noise, present=present)
     shots = int(a.shape[0])
     lay: NDArray[np.float64] | None = None
     if layouts is not None:
@@ -106,6 +107,13 @@ def simulate_many(client: Any, scenario: None | _cueball.Scenario | str | os.Pat
             shape = "x".join(str(n) for n in lay.shape)
             raise _invalid("layouts", f"layouts: an ({shots}, n_balls, 2) array, one layout per row of actions; "
                                       f"got shape ({shape})")
+    on: NDArray[np.bool_] | None = None
+    if present is not None:
+        on = np.asarray(present)
+        if on.dtype != np.bool_ or on.ndim != 2 or on.shape[0] != shots:
+            shape = "x".join(str(n) for n in on.shape)
+            raise _invalid("present", f"present: an ({shots}, n_balls) bool array, one row per row of actions; "
+                                      f"got a {on.dtype} array of shape ({shape})")
     if isinstance(seed, bool) or not isinstance(seed, (int, np.integer)) or not 0 <= int(seed) < 2**64:
         raise _invalid("seed", f"seed = {seed!r}, allowed: an integer in [0, 2^64)")
     if isinstance(threads, bool) or not isinstance(threads, (int, np.integer)) or not 1 <= int(threads) <= 256:
@@ -121,7 +129,7 @@ def simulate_many(client: Any, scenario: None | _cueball.Scenario | str | os.Pat
     # released by that call's clean-up while this one's tasks wait on it).
     [shared] = client.scatter([_resolved_scenario(scenario)], broadcast=True, hash=False)
     futures = [client.submit(_play_chunk, shared, a[lo:hi], None if lay is None else lay[lo:hi], int(seed),
-                             bool(noise), lo, int(threads), pure=False)
+                             noise, lo, int(threads), None if on is None else on[lo:hi], pure=False)
                for lo, hi in chunk_bounds(shots, int(chunk_size))]
     try:
         parts = [cast("ManyOutcomes", f.result()) for f in futures]  # in row order: the first failing chunk raises

@@ -132,6 +132,15 @@ cueball::CushionSolver cushion_solver(const std::string& name, const char* field
 /// 'OWNER' only, not to 'CHOSEN'", as the scenario reader refuses its key.
 void only_for(const char* field, bool given, const char* kind, bool applies, const char* owner, std::string_view chosen);
 
+// ------------------------------------------------------------------ noise of batches (batch.cpp)
+/// The scenario with simulate_batch's or simulate_many's noise= applied:
+/// True, None or 'scenario' the scenario's own "noise" (`s` itself; a
+/// UserWarning when all of it is zero: every shot the nominal strike),
+/// False or what noise_argument() reads ('none', 'tournament', a dict of
+/// sigmas) in its place. Needs the GIL.
+std::shared_ptr<const cueball::Scenario> with_noise_argument(std::shared_ptr<const cueball::Scenario> s,
+                                                             const py::object& noise);
+
 // ------------------------------------------------------------------ scenarios (scenario_input.cpp)
 
 // A scenario as Python gave it: a Scenario object (shared, never changed:

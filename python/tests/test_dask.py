@@ -85,6 +85,18 @@ class DaskTest(unittest.TestCase):
         identical(self, local, remote)
         np.testing.assert_array_equal(remote["ids"], local["ids"])
 
+    def test_absent_balls_and_named_noise(self) -> None:
+        present = np.random.default_rng(4).random((40, 10)) > 0.3
+        present[:, 0] = True  # the cue ball
+        local = cueball.simulate_many(None, self.actions[:40], present=present, seed=5, noise="tournament")
+        remote = cueball.dask.simulate_many(self.client, None, self.actions[:40], present=present, seed=5,
+                                            noise="tournament", chunk_size=9)
+        identical(self, local, remote)
+        np.testing.assert_array_equal(remote["present"], present)
+        with self.assertRaises(cueball.InvalidArgument) as caught:
+            cueball.dask.simulate_many(self.client, None, self.actions[:40], present=present[:39])
+        self.assertEqual(caught.exception.field, "present")
+
     def test_a_scenario_object(self) -> None:
         # Pickled to the workers through its JSON: the same rows as a local run of it, or of its dict.
         s = cueball.Scenario.from_document(cueball.simulate(CUT).to_json())

@@ -3,6 +3,7 @@
 import json
 import pathlib
 import unittest
+import warnings
 
 import numpy as np
 
@@ -82,6 +83,122 @@ class SimulateManyTest(unittest.TestCase):
         with self.assertRaises(cueball.InvalidArgument) as e:
             cueball.simulate_many(None, self.actions[:1], np.zeros((1, 3, 2)))
         self.assertTrue(e.exception.field.startswith("layouts"), e.exception.field)
+
+    def test_a_tip_offset_beyond_the_miscue_limit_is_that_shots_outcome(self) -> None:
+        actions = self.actions[:6].copy()
+        actions[2, 3:] = (0.4, 0.4)  # 0.57 ball radii: the tip slips
+        r = cueball.simulate_many(None, actions)
+        np.testing.assert_array_equal(r["miscue"], [False, False, True, False, False, False])
+        self.assertTrue(np.isnan(r["final_position"][2]).all())
+        self.assertEqual(r["events"][2], 0)
+        self.assertTrue(r["present"][2].all())  # the balls are still on the table
+        # The other rows are what they are without the miscue beside them.
+        alone = cueball.simulate_many(None, np.delete(actions, 2, axis=0))
+        np.testing.assert_array_equal(np.delete(r["final_position"], 2, axis=0), alone["final_position"])
+
+    def test_absent_balls_are_not_on_the_table(self) -> None:
+        n = len(self.actions)
+        present = np.random.default_rng(5).random((n, 10)) > 0.4
+        present[:, 0] = True  # the cue ball
+        rack = [b["position"] for b in cueball.simulate(None).to_dict()["scenario"]["balls"]]
+        layouts = np.repeat(np.array([rack], dtype=float), n, axis=0)
+        layouts[~present] = np.nan  # an absent ball's position is ignored
+        one = cueball.simulate_many(None, self.actions, layouts, present=present, seed=2, noise=True)
+        two = cueball.simulate_many(None, self.actions, layouts, present=present, seed=2, noise=True, threads=2)
+        for key, value in one.items():
+            if isinstance(value, np.ndarray):
+                np.testing.assert_array_equal(value, two[key], err_msg=key)
+        np.testing.assert_array_equal(one["present"], present)
+        self.assertFalse(one["pocketed"][~present].any())
+        self.assertTrue((one["pocket"][~present] == -1).all())
+        self.assertTrue(np.isnan(one["final_position"][~present]).all())
+        self.assertTrue((one["cushions"][~present] == 0).all())
+        # No ball the cue ball touches first is absent.
+        for k in range(n):
+            if one["first_contact"][k] >= 0:
+                self.assertTrue(present[k, list(one["ids"]).index(one["first_contact"][k])], k)
+
+    def test_a_shot_played_from_the_last_ones_end(self) -> None:
+        # What an RL loop does: the next layout is the last shot's final positions, its pocketed balls absent.
+        first = cueball.simulate_many(None, np.array([[8.0, 0.0, 0.0, 0.0, 0.0]]))
+        present = first["present"] & ~first["pocketed"]
+        self.assertTrue(present[0, 0], "the break scratched: pick another action")
+        layouts = np.where(present[..., None], first["final_position"], np.nan)
+        second = cueball.simulate_many(None, np.array([[1.0, 45.0, 0.0, 0.0, 0.0]]), layouts, present=present)
+        np.testing.assert_array_equal(second["present"], present)
+        self.assertFalse(second["failure"][0])
+
+    def test_bad_masks_name_the_field(self) -> None:
+        actions = self.actions[:3]
+        for present, field in [(np.ones((3, 10)), "present"), (np.ones((2, 10), dtype=bool), "present"),
+                               (np.ones((3, 9), dtype=bool), "present")]:
+            with self.assertRaises(cueball.InvalidArgument) as e:
+                cueball.simulate_many(None, actions, present=present)
+            self.assertEqual(e.exception.field, field, str(e.exception))
+        no_cue = np.ones((3, 10), dtype=bool)
+        no_cue[1, 0] = False
+        with self.assertRaises(cueball.InvalidArgument) as e:
+            cueball.simulate_many(None, actions, present=no_cue, first_shot=40)
+        self.assertEqual(e.exception.field, "present[41][0]")
+
+    def test_noise_arguments(self) -> None:
+        actions = np.repeat(self.actions[:1], 30, axis=0)
+        plain = cueball.simulate_many(None, actions)
+        none = cueball.simulate_many(None, actions, noise="none", seed=4)
+        np.testing.assert_array_equal(plain["final_position"], none["final_position"])
+        tournament = cueball.simulate_many(None, actions, noise="tournament", seed=4)
+        self.assertGreater(np.nanstd(tournament["final_position"][:, 0, 0]), 0.0)
+        sigmas = cueball.simulate_many(None, actions, noise={"aim_deg": 0.5}, seed=4)
+        self.assertGreater(np.nanstd(sigmas["final_position"][:, 0, 0]), 0.0)
+        with open(CUT) as f:
+            quiet = json.load(f)
+        quiet.pop("noise", None)
+        with warnings.catch_warnings(record=True) as caught:
+            warnings.simplefilter("always")
+            cueball.simulate_many(quiet, actions[:2], noise=True)
+        self.assertEqual(len(caught), 1)
+        self.assertIn("no execution noise", str(caught[0].message))
+        self.assertEqual(caught[0].filename, __file__)  # the caller's line
+        for noise, field in [("loud", "noise"), ({"aim_deg": -1.0}, "noise.aim_deg"), (3, "noise")]:
+            with self.assertRaises(cueball.InvalidArgument) as e:
+                cueball.simulate_many(None, actions[:1], noise=noise)
+            self.assertEqual(e.exception.field, field, str(e.exception))
+
+
+class SimulateBatchNoiseTest(unittest.TestCase):
+    def setUp(self) -> None:
+        with open(CUT) as f:
+            self.quiet = json.load(f)
+        self.quiet.pop("noise", None)
+
+    def test_the_scenarios_noise_when_it_is_zero_warns(self) -> None:
+        with warnings.catch_warnings(record=True) as caught:
+            warnings.simplefilter("always")
+            r = cueball.simulate_batch(self.quiet, shots=20)
+        self.assertEqual(len(caught), 1)
+        self.assertTrue(issubclass(caught[0].category, UserWarning))
+        self.assertEqual(r["balls"][0]["position_std"], [0.0, 0.0])  # what it warned of
+        with warnings.catch_warnings():
+            warnings.simplefilter("error")  # identical shots asked for: no warning
+            cueball.simulate_batch(self.quiet, shots=5, noise="none")
+
+    def test_named_and_given_noise(self) -> None:
+        tournament = cueball.simulate_batch(self.quiet, shots=60, noise="tournament", seed=3)
+        self.assertGreater(tournament["balls"][0]["position_std"][0], 0.0)
+        # A dict is read as the scenario's "noise" would be: the same shots as a scenario with it.
+        sigmas = {"speed": 0.05, "side": 0.1}
+        given = cueball.simulate_batch(self.quiet, shots=60, noise=sigmas, seed=3)
+        self.assertGreater(given["balls"][0]["position_std"][0], 0.0)
+        self.assertNotEqual(given["balls"], tournament["balls"])
+        self.assertEqual(given["balls"], cueball.simulate_batch(dict(self.quiet, noise=sigmas), shots=60, seed=3)["balls"])
+        # The scenario's own noise, by default or by name: the same shots.
+        with open(CUT) as f:
+            noisy = json.load(f)
+        self.assertEqual(cueball.simulate_batch(noisy, shots=30, seed=1)["balls"],
+                         cueball.simulate_batch(noisy, shots=30, seed=1, noise="scenario")["balls"])
+        with self.assertRaises(cueball.InvalidArgument) as e:
+            cueball.simulate_batch(self.quiet, shots=5, noise={"aim": 1.0})
+        self.assertTrue(e.exception.field.startswith("noise"), e.exception.field)
 
 
 if __name__ == "__main__":

@@ -18,7 +18,7 @@ STUB = pathlib.Path(__file__).resolve().parents[1] / "cueball" / "_cueball.pyi"
 GAMES_STUB = STUB.with_name("games.pyi")
 SUBMODULES = {"games", "_rl"}  # _rl: cueball.rl's native part, typed by rl.py itself
 # Names only for type checkers: the dicts' TypedDicts and the private aliases.
-STUB_ONLY = {"EventArrays", "BallArrays", "SegmentArrays", "StateArrays", "ManyOutcomes", "_Float", "_Int", "_Vec", "_Scenario"}
+STUB_ONLY = {"EventArrays", "BallArrays", "SegmentArrays", "StateArrays", "ManyOutcomes", "_Float", "_Int", "_Vec", "_Scenario", "_Noise"}
 
 
 def stub_tree(path=STUB):

@@ -49,11 +49,16 @@ def main() -> None:
     assert final_positions(result).shape == (3, 2)
     odds = cueball.simulate_batch({"table": "pool_9ft", "rack": {"type": "nine_ball"},
                                    "cue": {"ball": 0, "target": 1, "speed": np.float32(7.0)}},
-                                  shots=np.int64(4), seed=1)
+                                  shots=np.int64(4), seed=1, noise="tournament")
     assert odds["shots"] == 4
     many: cueball.ManyOutcomes = cueball.simulate_many(None, np.array([[3.0, 0.0, 0.0, 0.0, 0.0]]), threads=1)
     pocketed: NDArray[np.bool_] = many["pocketed"]
     assert pocketed.shape == (1, 10) and many["first_contact"][0] == 1
+    on_table = np.ones((1, 10), dtype=np.bool_)
+    on_table[0, 9] = False
+    sparse = cueball.simulate_many(None, np.array([[3.0, 0.0, 0.0, 0.0, 0.0]]), present=on_table,
+                                   noise={"aim_deg": 0.1}, seed=np.uint64(2))
+    assert not sparse["present"][0, 9] and sparse["pocket"][0, 9] == -1
     bounds: list[tuple[int, int]] = cueball.dask.chunk_bounds(10, 4)
     assert bounds == [(0, 4), (4, 8), (8, 10)]
     try:

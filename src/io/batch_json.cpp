@@ -63,7 +63,7 @@ Report many_report(const ManyResult& r, const std::string& title) {
   Report report(title);
   report.add_count("shots", r.shots, "actions played");
   report.add_count("simulated", t.simulated, "shots simulated");
-  report.add_count("miscues", t.miscues, "noisy tip offsets beyond the miscue limit (not simulated)");
+  report.add_count("miscues", t.miscues, "tip offsets struck beyond the miscue limit (not simulated)");
   report.add_count("failures", t.failures, "shots stopped at the event limit");
   report.add("seconds", r.seconds, "s", "wall-clock time");
   report.add("shots_per_second", r.shots_per_second, "1/s");

@@ -421,11 +421,13 @@ namespace {
 
 std::string action_field(std::uint64_t k, const char* what) { return "actions[" + std::to_string(k) + "]." + what; }
 
-std::string layout_field(std::uint64_t k, std::size_t j) {
-  return "layouts[" + std::to_string(k) + "][" + std::to_string(j) + "]";
+std::string row_field(const char* array, std::uint64_t k, std::size_t j) {
+  return std::string(array) + "[" + std::to_string(k) + "][" + std::to_string(j) + "]";
 }
 
-void check_action(std::uint64_t k, const ShotAction& a, const BallParameters& ball) {
+// Each field against its own range; the tip offset as a whole is not
+// checked: beyond the miscue limit it is the shot's outcome (batch.hpp).
+void check_action(std::uint64_t k, const ShotAction& a) {
   const auto in = [&](const char* name, double v, double lo, double hi, const char* meaning) {
     if (!(std::isfinite(v) && v >= lo && v <= hi))
       throw InvalidArgument(action_field(k, name), v, "[" + format_number(lo) + ", " + format_number(hi) + "]", meaning);
@@ -436,68 +438,107 @@ void check_action(std::uint64_t k, const ShotAction& a, const BallParameters& ba
   in("elevation_deg", a.elevation_deg, 0.0, 89.0, "cue elevation, degrees");
   in("side", a.side, -kMiscueOffsetFraction, kMiscueOffsetFraction, "tip offset to the right, ball radii");
   in("height", a.height, -kMiscueOffsetFraction, kMiscueOffsetFraction, "tip offset above the centre, ball radii");
-  if (!cue_tip_offset_ok(to_strike(a, ball.radius), ball))
-    throw InvalidArgument(action_field(k, "tip_offset"), std::hypot(a.side, a.height),
-                          "[0, " + format_number(kMiscueOffsetFraction) + "]",
-                          "sqrt(side^2 + height^2), ball radii; beyond it the tip slips (a miscue)");
 }
 
-void check_layout(const Table& table, std::span<const double> layout, std::uint64_t k, double radius) {
+// Shot k's starting layout: its present balls on the table, apart. `on`
+// is the shot's row of `present`, or empty (every ball present).
+void check_layout(const Table& table, std::span<const double> layout, std::span<const std::uint8_t> on,
+                  std::uint64_t k, double radius) {
   const std::size_t n = layout.size() / 2;
+  const auto present = [&](std::size_t j) { return on.empty() || on[j] != 0; };
   for (std::size_t j = 0; j < n; ++j) {
+    if (!present(j)) continue;
     const Vec2 p{layout[2 * j], layout[2 * j + 1]};
+    const std::string field = row_field("layouts", k, j);
     if (!(std::isfinite(p.x) && std::isfinite(p.y)) || !ball_on_table(table, p, radius))
-      throw InvalidArgument(layout_field(k, j), layout_field(k, j) + " = (" + format_number(p.x) + ", " +
-                                                    format_number(p.y) +
-                                                    ") m is off the playing surface or inside a cushion");
+      throw InvalidArgument(field, field + " = (" + format_number(p.x) + ", " + format_number(p.y) +
+                                       ") m is off the playing surface or inside a cushion");
     for (std::size_t i = 0; i < j; ++i) {
+      if (!present(i)) continue;
       const double d = norm(p - Vec2{layout[2 * i], layout[2 * i + 1]});
       if (d < 2 * radius - kPlacementTolerance)
-        throw InvalidArgument(layout_field(k, j), layout_field(k, j) + " overlaps " + layout_field(k, i) +
-                                                      ": centres " + format_number(d) + " m apart, allowed >= 2R = " +
-                                                      format_number(2 * radius) + " m");
+        throw InvalidArgument(field, field + " overlaps " + row_field("layouts", k, i) + ": centres " +
+                                         format_number(d) + " m apart, allowed >= 2R = " + format_number(2 * radius) +
+                                         " m");
     }
   }
 }
 
-}  // namespace
+// One simulate_many call: its input, checked once, and the result its shots
+// fill in, each shot its own rows.
+struct ManyContext {
+  const Scenario& scenario;
+  std::span<const ShotAction> actions;
+  std::span<const double> layouts;         // empty: the scenario's
+  std::span<const std::uint8_t> present;   // empty: every ball
+  const ManyOptions& options;
+  std::size_t shots = 0;
+  std::size_t balls = 0;
+  std::size_t cue = 0;                     // the struck ball's index in the scenario
+  int cue_id = 0;
+  ManyResult& out;
+};
 
-ManyResult simulate_many(const Scenario& s, std::span<const ShotAction> actions, std::span<const double> layouts,
-                         const ManyOptions& options) {
-  const auto start = std::chrono::steady_clock::now();
-  if (actions.empty() || actions.size() > static_cast<std::size_t>(kMaxManyShots))
-    throw InvalidArgument("actions", static_cast<double>(actions.size()), "[1, " + format_number(kMaxManyShots) + "]",
+// Step 1: everything a shot could reject, before any shot runs (batch.hpp's
+// list of errors, in its order).
+void check_many_input(ManyContext& c) {
+  const Scenario& s = c.scenario;
+  const ManyOptions& o = c.options;
+  if (c.actions.empty() || c.actions.size() > static_cast<std::size_t>(kMaxManyShots))
+    throw InvalidArgument("actions", static_cast<double>(c.actions.size()), "[1, " + format_number(kMaxManyShots) + "]",
                           "number of shots (rows of actions)");
-  if (options.threads < 1 || options.threads > kMaxBatchThreads)
-    throw InvalidArgument("threads", static_cast<double>(options.threads),
-                          "[1, " + std::to_string(kMaxBatchThreads) + "]", "worker threads");
-  if (options.first_shot > kMaxFirstShot)
-    throw InvalidArgument("first_shot", static_cast<double>(options.first_shot), "[0, 2^53]",
+  if (o.threads < 1 || o.threads > kMaxBatchThreads)
+    throw InvalidArgument("threads", static_cast<double>(o.threads), "[1, " + std::to_string(kMaxBatchThreads) + "]",
+                          "worker threads");
+  if (o.first_shot > kMaxFirstShot)
+    throw InvalidArgument("first_shot", static_cast<double>(o.first_shot), "[0, 2^53]",
                           "index of actions[0] in the whole study");
   validate_simulation_input(s.table, s.balls, s.settings);  // once; each shot then runs unchecked
-  if (options.noise) validate(s.noise);
-  const BallParameters& ball = s.settings.parameters.ball;
-  const std::size_t shots = actions.size(), n = s.balls.size();
-  const int cue_id = s.cue ? s.cue->ball : 0;
-  std::size_t cue = n;
-  for (std::size_t j = 0; j < n; ++j)
-    if (s.balls[j].id == cue_id) cue = j;
-  if (cue == n)
+  if (o.noise) validate(s.noise);
+  c.shots = c.actions.size();
+  c.balls = s.balls.size();
+  c.cue_id = s.cue ? s.cue->ball : 0;
+  c.cue = c.balls;
+  for (std::size_t j = 0; j < c.balls; ++j)
+    if (s.balls[j].id == c.cue_id) c.cue = j;
+  if (c.cue == c.balls)
     throw InvalidArgument(s.cue ? "cue.ball" : "balls",
-                          "the scenario has no ball with id " + std::to_string(cue_id) + " to strike");
-  for (std::size_t k = 0; k < shots; ++k) check_action(options.first_shot + k, actions[k], ball);
-  if (!layouts.empty() && layouts.size() != shots * n * 2)
-    throw InvalidArgument("layouts", static_cast<double>(layouts.size()),
-                          std::to_string(shots * n * 2) + " (shots " + std::to_string(shots) + " x balls " +
-                              std::to_string(n) + " x 2) or 0",
-                          "number of coordinates");
-  for (std::size_t k = 0; k < shots && !layouts.empty(); ++k)
-    check_layout(s.table, layouts.subspan(k * n * 2, n * 2), options.first_shot + k, ball.radius);
+                          "the scenario has no ball with id " + std::to_string(c.cue_id) + " to strike");
+  for (std::size_t k = 0; k < c.shots; ++k) check_action(o.first_shot + k, c.actions[k]);
+  const std::size_t n = c.balls, shots = c.shots;
+  const std::string sizes = " (shots " + std::to_string(shots) + " x balls " + std::to_string(n);
+  if (!c.layouts.empty() && c.layouts.size() != shots * n * 2)
+    throw InvalidArgument("layouts", static_cast<double>(c.layouts.size()),
+                          std::to_string(shots * n * 2) + sizes + " x 2) or 0", "number of coordinates");
+  if (!c.present.empty() && c.present.size() != shots * n)
+    throw InvalidArgument("present", static_cast<double>(c.present.size()), std::to_string(shots * n) + sizes + ") or 0",
+                          "number of on-table flags");
+  for (std::size_t k = 0; k < shots && !c.present.empty(); ++k)
+    if (c.present[k * n + c.cue] == 0) {
+      const std::string field = row_field("present", o.first_shot + k, c.cue);
+      throw InvalidArgument(field, field + " is false: the cue ball (id " + std::to_string(c.cue_id) +
+                                       ") must be on the table in every shot");
+    }
+  const std::span<const std::uint8_t> all;
+  for (std::size_t k = 0; k < shots && !c.layouts.empty(); ++k)
+    check_layout(s.table, c.layouts.subspan(k * n * 2, n * 2), c.present.empty() ? all : c.present.subspan(k * n, n),
+                 o.first_shot + k, s.settings.parameters.ball.radius);
+}
 
-  ManyResult out;
+// Step 2: the result's arrays, every row "not simulated" until its shot
+// stores it; `present` copied from the input (all 1 without it).
+void size_result(const ManyContext& c) {
+  ManyResult& out = c.out;
+  const std::size_t shots = c.shots, n = c.balls;
   out.shots = static_cast<int>(shots);
   out.balls = static_cast<int>(n);
-  for (const SimulationBall& b : s.balls) out.ids.push_back(b.id);
+  out.ids.clear();
+  for (const SimulationBall& b : c.scenario.balls) out.ids.push_back(b.id);
+  if (c.present.empty())
+    out.present.assign(shots * n, 1);
+  else
+    out.present.assign(c.present.begin(), c.present.end());
+  for (std::uint8_t& p : out.present) p = p != 0 ? 1 : 0;
   out.pocketed.assign(shots * n, 0);
   out.pocket.assign(shots * n, -1);
   out.final_position.assign(shots * n * 2, 0.0);
@@ -509,53 +550,114 @@ ManyResult simulate_many(const Scenario& s, std::span<const ShotAction> actions,
   out.failure.assign(shots, 0);
   out.speed_reflected.assign(shots, 0);
   out.elevation_reflected.assign(shots, 0);
+}
 
-  // Each shot writes its own rows only: no two threads touch one element.
-  const auto store = [&](std::size_t k, const ShotOutcome& o) {
-    out.miscue[k] = o.kind == ShotOutcome::Kind::miscue ? 1 : 0;
-    out.failure[k] = o.kind == ShotOutcome::Kind::failure ? 1 : 0;
-    out.speed_reflected[k] = o.speed_reflected ? 1 : 0;
-    out.elevation_reflected[k] = o.elevation_reflected ? 1 : 0;
-    out.events[k] = o.events;
-    out.first_contact[k] = o.first_contact;
-    for (std::size_t j = 0; j < n; ++j) {
-      const std::size_t e = k * n + j;
-      out.pocketed[e] = o.pocketed[j] ? 1 : 0;
-      out.pocket[e] = o.pocket[j];
-      out.final_position[2 * e] = o.final_position[j].x;
-      out.final_position[2 * e + 1] = o.final_position[j].y;
-      out.cushions_before_contact[e] = o.cushions_before_contact[j];
-      out.cushions[e] = o.cushions[j];
-    }
-  };
-  const auto play = [&](int shot, ShotRecord& record) {
-    const auto k = static_cast<std::size_t>(shot);
-    CueStrike strike = to_strike(actions[k], ball.radius);
-    if (options.noise) {
-      const LimitedStrike limited = reflect_into_limits(with_noise(strike, s.noise, shot_normals(options.seed, options.first_shot + k)));
-      strike = limited.strike;
-      record.speed_reflected = limited.speed_reflected;
-      record.elevation_reflected = limited.elevation_reflected;
-      if (!cue_tip_offset_ok(strike, ball)) {
-        record.kind = ShotRecord::Kind::miscue;
-        store(k, record);
-        return;
-      }
-    }
+// Step 3 (each shot): its outcome into its rows. No two threads touch one element.
+void store_outcome(const ManyContext& c, std::size_t k, const ShotOutcome& o) {
+  ManyResult& out = c.out;
+  out.miscue[k] = o.kind == ShotOutcome::Kind::miscue ? 1 : 0;
+  out.failure[k] = o.kind == ShotOutcome::Kind::failure ? 1 : 0;
+  out.speed_reflected[k] = o.speed_reflected ? 1 : 0;
+  out.elevation_reflected[k] = o.elevation_reflected ? 1 : 0;
+  out.events[k] = o.events;
+  out.first_contact[k] = o.first_contact;
+  for (std::size_t j = 0; j < c.balls; ++j) {
+    const std::size_t e = k * c.balls + j;
+    out.pocketed[e] = o.pocketed[j] ? 1 : 0;
+    out.pocket[e] = o.pocket[j];
+    out.final_position[2 * e] = o.final_position[j].x;
+    out.final_position[2 * e + 1] = o.final_position[j].y;
+    out.cushions_before_contact[e] = o.cushions_before_contact[j];
+    out.cushions[e] = o.cushions[j];
+  }
+}
+
+// The strike of shot k as struck: the action, with the noise when asked.
+LimitedStrike struck(const ManyContext& c, std::size_t k) {
+  const CueStrike nominal = to_strike(c.actions[k], c.scenario.settings.parameters.ball.radius);
+  if (!c.options.noise) return {nominal, false, false};
+  return reflect_into_limits(
+      with_noise(nominal, c.scenario.noise, shot_normals(c.options.seed, c.options.first_shot + k)));
+}
+
+// Shot k's balls at the start: the scenario's, moved to its layout, its
+// absent balls left out; `index[i]` is ball i's index in the scenario.
+void starting_balls(const ManyContext& c, std::size_t k, std::vector<SimulationBall>& balls,
+                    std::vector<std::size_t>& index) {
+  const std::size_t n = c.balls;
+  balls.clear();
+  index.clear();
+  for (std::size_t j = 0; j < n; ++j) {
+    if (!c.present.empty() && c.present[k * n + j] == 0) continue;
+    balls.push_back(c.scenario.balls[j]);
+    index.push_back(j);
+    if (!c.layouts.empty()) balls.back().state.position = {c.layouts[(k * n + j) * 2], c.layouts[(k * n + j) * 2 + 1]};
+  }
+}
+
+// Step 3: plays shot k into `record` (reset for the scenario's balls) and stores it.
+void play_many_shot(const ManyContext& c, std::size_t k, ShotRecord& record) {
+  const Scenario& s = c.scenario;
+  const BallParameters& ball = s.settings.parameters.ball;
+  const LimitedStrike strike = struck(c, k);
+  record.speed_reflected = strike.speed_reflected;
+  record.elevation_reflected = strike.elevation_reflected;
+  if (!cue_tip_offset_ok(strike.strike, ball)) {
+    record.kind = ShotRecord::Kind::miscue;
+    store_outcome(c, k, record);
+    return;
+  }
+  if (c.present.empty()) {  // every ball: the outcome's columns are the scenario's
     std::vector<SimulationBall> balls = s.balls;
-    if (!layouts.empty())
-      for (std::size_t j = 0; j < n; ++j)
-        balls[j].state.position = {layouts[(k * n + j) * 2], layouts[(k * n + j) * 2 + 1]};
-    balls[cue].state = strike_ball(strike, balls[cue].state.position, ball, s.cue_parameters);
+    if (!c.layouts.empty())
+      for (std::size_t j = 0; j < c.balls; ++j)
+        balls[j].state.position = {c.layouts[(k * c.balls + j) * 2], c.layouts[(k * c.balls + j) * 2 + 1]};
+    balls[c.cue].state = strike_ball(strike.strike, balls[c.cue].state.position, ball, s.cue_parameters);
     try {
-      const SimulationResult r = simulate_unchecked(s.table, balls, s.settings);
-      outcome_from_result(r, cue_id, record);
+      outcome_from_result(simulate_unchecked(s.table, balls, s.settings), c.cue_id, record);
     } catch (const SimulationError&) {
       record.kind = ShotRecord::Kind::failure;
     }
-    store(k, record);
-  };
-  detail::run_batch(out.shots, options.threads, n, play);
+    store_outcome(c, k, record);
+    return;
+  }
+  // Some balls absent: simulate the present ones, then spread their outcome
+  // over the scenario's columns (the absent ones keep reset()'s values).
+  thread_local std::vector<SimulationBall> balls;
+  thread_local std::vector<std::size_t> index;
+  thread_local ShotOutcome on_table;
+  starting_balls(c, k, balls, index);
+  const auto cue = static_cast<std::size_t>(std::find(index.begin(), index.end(), c.cue) - index.begin());
+  balls[cue].state = strike_ball(strike.strike, balls[cue].state.position, ball, s.cue_parameters);
+  try {
+    outcome_from_result(simulate_unchecked(s.table, balls, s.settings), c.cue_id, on_table);
+    record.events = on_table.events;
+    record.first_contact = on_table.first_contact;
+    for (std::size_t i = 0; i < index.size(); ++i) {
+      const std::size_t j = index[i];
+      record.pocketed[j] = on_table.pocketed[i];
+      record.pocket[j] = on_table.pocket[i];
+      record.final_position[j] = on_table.final_position[i];
+      record.cushions_before_contact[j] = on_table.cushions_before_contact[i];
+      record.cushions[j] = on_table.cushions[i];
+    }
+  } catch (const SimulationError&) {
+    record.kind = ShotRecord::Kind::failure;
+  }
+  store_outcome(c, k, record);
+}
+
+}  // namespace
+
+ManyResult simulate_many(const Scenario& s, std::span<const ShotAction> actions, std::span<const double> layouts,
+                         const ManyOptions& options, std::span<const std::uint8_t> present) {
+  const auto start = std::chrono::steady_clock::now();
+  ManyResult out;
+  ManyContext c{s, actions, layouts, present, options, 0, 0, 0, 0, out};
+  check_many_input(c);
+  size_result(c);
+  detail::run_batch(out.shots, options.threads, c.balls,
+                    [&](int shot, ShotRecord& record) { play_many_shot(c, static_cast<std::size_t>(shot), record); });
   out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   out.shots_per_second = out.seconds > 0.0 ? out.shots / out.seconds : 0.0;
   return out;

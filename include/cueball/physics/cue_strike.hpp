@@ -200,6 +200,9 @@ struct CueStrikeNoise {
   double elevation = 0.0;
   double side_offset = 0.0;
   double height_offset = 0.0;
+
+  /// == CueStrikeNoise{}: no noise at all, every "noisy" strike the nominal one.
+  friend bool operator==(const CueStrikeNoise&, const CueStrikeNoise&) = default;
 };
 
 /// Throws InvalidArgument naming the first standard deviation that is

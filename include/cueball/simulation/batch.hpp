@@ -157,14 +157,31 @@ LimitedStrike reflect_into_limits(const CueStrike& strike);
 // ------------------------------------------------------------------ many different shots
 //
 // simulate_many plays N different cue actions (optionally each from its own
-// layout of the balls, optionally with the scenario's execution noise) and
-// returns every shot's outcome, struct-of-arrays: flat row-major vectors that
-// a binding can hand out as NumPy arrays of shape (N,), (N, balls) or
-// (N, balls, 2) without touching the elements. Shots are scheduled exactly as
-// simulate_batch's (blocks of kBatchBlockShots, work stealing) and each
-// writes only its own rows, so the arrays are bit-identical whatever the
-// number of threads; a shot's error other than SimulationError is rethrown
-// in the caller, the lowest shot's winning, as simulate_batch does.
+// layout of the balls, some of them absent, optionally with the scenario's
+// execution noise) and returns every shot's outcome, struct-of-arrays: flat
+// row-major vectors that a binding can hand out as NumPy arrays of shape
+// (N,), (N, balls) or (N, balls, 2) without touching the elements. Shots are
+// scheduled exactly as simulate_batch's (blocks of kBatchBlockShots, work
+// stealing) and each writes only its own rows, so the arrays are
+// bit-identical whatever the number of threads; a shot's error other than
+// SimulationError is rethrown in the caller, the lowest shot's winning, as
+// simulate_batch does.
+//
+// What is an outcome and what is an error. A tip offset beyond the miscue
+// limit (sqrt(side^2 + height^2) > kMiscueOffsetFraction ball radii) is a
+// real stroke's outcome, whether the action asks for it or the noise puts
+// it there: the offset actually struck decides (the action's without noise,
+// the noisy one with it), and the shot is a miscue (row marked, not
+// simulated, as in simulate_batch). A field outside its own range (speed
+// 0 or above the cap, side 0.6, NaN, ...) is a programming error: an
+// InvalidArgument naming it ("actions[17].speed") before any shot runs.
+//
+// Absent balls. `present`, when given, marks for each shot which of the
+// scenario's balls are on the table (1) and which are not (0: e.g. pocketed
+// by an earlier shot). An absent ball is left out of that shot's simulation;
+// its layout position is ignored (any value, NaN included); its row reports
+// present 0, pocketed 0, pocket -1, final position NaN and no cushions. The
+// struck (cue) ball must be present in every shot.
 
 /// One cue action, in the units of the scenario JSON's "cue" (so that an
 /// (N, 5) float64 array of rows speed, aim_deg, elevation_deg, side, height
@@ -174,7 +191,7 @@ struct ShotAction {
   double aim_deg = 0.0;        ///< the cue's direction in the bed's plane, degrees anticlockwise from +x, [-360, 360]
   double elevation_deg = 0.0;  ///< butt raised, degrees, [0, 89]
   double side = 0.0;           ///< tip offset to the right, ball radii, [-0.5, 0.5]
-  double height = 0.0;         ///< tip offset above the centre, ball radii, [-0.5, 0.5]; sqrt(side^2 + height^2) <= 0.5
+  double height = 0.0;         ///< tip offset above the centre, ball radii, [-0.5, 0.5]; sqrt(side^2 + height^2) > 0.5 is a miscue (an outcome)
 
   friend bool operator==(const ShotAction&, const ShotAction&) = default;
 };
@@ -184,8 +201,8 @@ static_assert(sizeof(ShotAction) == 5 * sizeof(double), "ShotAction must be five
 CueStrike to_strike(const ShotAction& action, double radius);
 
 /// Most shots in one simulate_many call. The result holds 12 bytes per shot
-/// and 29 per shot and ball (1 + 4 + 16 + 4 + 4): 1e6 shots of a 10-ball
-/// 9-ball rack are 302 MB, of a 22-ball snooker frame 650 MB. Split bigger
+/// and 30 per shot and ball (1 + 1 + 4 + 16 + 4 + 4): 1e6 shots of a 10-ball
+/// 9-ball rack are 312 MB, of a 22-ball snooker frame 672 MB. Split bigger
 /// studies into chunks, each with its ManyOptions::first_shot: the rows are
 /// those of one run of the whole study.
 inline constexpr int kMaxManyShots = 1'000'000;
@@ -197,8 +214,7 @@ struct ManyOptions {
   int threads = 1;          ///< [1, kMaxBatchThreads]
   std::uint64_t seed = 0;   ///< noise of shot k drawn from (seed, first_shot + k) as in simulate_batch
   /// Perturb each action with the scenario's execution noise (reflected into
-  /// the limits; a tip offset beyond the miscue limit is a miscue, not
-  /// simulated), exactly as simulate_batch perturbs its one strike.
+  /// the limits), exactly as simulate_batch perturbs its one strike.
   bool noise = false;
   /// Where actions[0] stands in a study split into chunks, [0, kMaxFirstShot]:
   /// shot k is shot first_shot + k of the study, for its noise and in error
@@ -215,14 +231,15 @@ struct ManyResult {
   int shots = 0;
   int balls = 0;
   std::vector<int> ids;                                 ///< (balls)
-  std::vector<std::uint8_t> pocketed;                   ///< (shots, balls) 0 / 1
+  std::vector<std::uint8_t> present;                    ///< (shots, balls) 1 on the table at the start, 0 absent
+  std::vector<std::uint8_t> pocketed;                   ///< (shots, balls) 0 / 1 (0 when absent)
   std::vector<std::int32_t> pocket;                     ///< (shots, balls) pocket index, -1 not pocketed
-  std::vector<double> final_position;                   ///< (shots, balls, 2) m; NaN when not simulated
+  std::vector<double> final_position;                   ///< (shots, balls, 2) m; NaN when not simulated or absent
   std::vector<std::int32_t> first_contact;              ///< (shots) id of the cue ball's first ball, -1 none
   std::vector<std::int32_t> cushions_before_contact;    ///< (shots, balls)
   std::vector<std::int32_t> cushions;                   ///< (shots, balls)
   std::vector<std::int32_t> events;                     ///< (shots) cue strike not counted; 0 when not simulated
-  std::vector<std::uint8_t> miscue;                     ///< (shots) 0 / 1 (noise only)
+  std::vector<std::uint8_t> miscue;                     ///< (shots) 0 / 1: tip offset struck beyond the miscue limit
   std::vector<std::uint8_t> failure;                    ///< (shots) 0 / 1: SimulationError (event limit)
   std::vector<std::uint8_t> speed_reflected;            ///< (shots) 0 / 1 (noise only)
   std::vector<std::uint8_t> elevation_reflected;        ///< (shots) 0 / 1 (noise only)
@@ -238,16 +255,21 @@ struct ManyResult {
 /// scenario's cue "target" and strike are not used (its cue mass and tip
 /// restitution are). `layouts`, when not empty, holds N x balls x 2 doubles:
 /// shot k starts with ball j at (layouts[(k balls + j) 2], ... + 1), the
-/// balls' velocities and spins being the scenario's. Everything is checked
-/// before any shot runs, each error an InvalidArgument naming the first bad
-/// item: "actions" (N in [1, kMaxManyShots]), "threads", "actions[17].speed"
-/// (or .aim_deg, .elevation_deg, .side, .height; "actions[17].tip_offset"
-/// beyond the miscue limit), "layouts" (the size), "layouts[3][2]" (ball 2
-/// of layout 3: not finite, off the table or inside a cushion, or
-/// overlapping an earlier ball of that layout), the scenario as the
-/// simulator checks it, the noise ("sigma ...") when used.
+/// balls' velocities and spins being the scenario's. `present`, when not
+/// empty, holds N x balls flags: ball j is on the table in shot k when
+/// present[k balls + j] != 0 (header comment, "Absent balls"). Everything is
+/// checked before any shot runs, each error an InvalidArgument naming the
+/// first bad item: "actions" (N in [1, kMaxManyShots]), "threads",
+/// "actions[17].speed" (or .aim_deg, .elevation_deg, .side, .height, each
+/// against its own range; a tip offset beyond the miscue limit is not an
+/// error but the shot's outcome), "layouts" (the size), "layouts[3][2]"
+/// (present ball 2 of layout 3: not finite, off the table or inside a
+/// cushion, or overlapping an earlier present ball of that layout),
+/// "present" (the size), "present[3][0]" (the cue ball absent), the scenario
+/// as the simulator checks it, the noise ("sigma ...") when used.
 ManyResult simulate_many(const Scenario& scenario, std::span<const ShotAction> actions,
-                         std::span<const double> layouts, const ManyOptions& options);
+                         std::span<const double> layouts, const ManyOptions& options,
+                         std::span<const std::uint8_t> present = {});
 
 namespace detail {
 

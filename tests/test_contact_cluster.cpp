@@ -53,7 +53,14 @@ Cluster struck_triangle(int rows, double speed) {
   return c;
 }
 
-ClusterImpact solve(const Cluster& c, double e) { return resolve_cluster_impact(c.positions, c.velocities, c.contacts, e); }
+ClusterSettings with_restitution(double e) {
+  ClusterSettings s;
+  s.restitution = e;
+  s.stiffness = hertz_stiffness_per_mass(pool_parameters().ball);
+  return s;
+}
+
+ClusterImpact solve(const Cluster& c, double e) { return resolve_cluster_impact(c.positions, c.velocities, c.contacts, with_restitution(e)); }
 
 Vec2 momentum(const std::vector<Vec2>& v) { return std::accumulate(v.begin(), v.end(), Vec2{}); }
 double energy(const std::vector<Vec2>& v) {
@@ -211,9 +218,34 @@ TEST(ContactCluster, TwiceTheSpeedTwiceTheOutcome) {
 TEST(ContactCluster, StepsConverge) {
   const Cluster c = struck_triangle(5, 10.0);
   const ClusterImpact coarse = solve(c, 0.93);
-  const ClusterImpact fine = resolve_cluster_impact(c.positions, c.velocities, c.contacts, 0.93, 4 * kClusterStepsPerContactTime);
+  ClusterSettings finer = with_restitution(0.93);
+  finer.steps_per_contact_time *= 4;
+  const ClusterImpact fine = resolve_cluster_impact(c.positions, c.velocities, c.contacts, finer);
   EXPECT_GT(fine.steps, 3 * coarse.steps);
   for (std::size_t k = 0; k < c.positions.size(); ++k) EXPECT_LT(norm(fine.velocities[k] - coarse.velocities[k]), 1e-3) << k;
+}
+
+// Hertz's law for two pool balls (contact_cluster.hpp): at 5 m/s about half
+// a millimetre of compression and a quarter of a millisecond of contact.
+TEST(ContactCluster, PhenolicBallsCompressAndTouchAsMeasured) {
+  const double k = hertz_stiffness_per_mass(pool_parameters().ball);
+  EXPECT_NEAR(hertz_compression(5.0, k), 4.8e-4, 0.2e-4);
+  EXPECT_NEAR(hertz_contact_time(5.0, k), 2.8e-4, 0.2e-4);
+}
+
+// A gap far smaller than the compression hardly matters; one far larger is
+// never crossed (a later collision: the ball behind it keeps still).
+TEST(ContactCluster, GapsSmallerThanTheCompressionAreCrossed) {
+  const Cluster frozen = struck_triangle(3, 9.0);
+  Cluster tiny = frozen, wide = frozen;
+  for (ClusterContact& c : tiny.contacts) c.gap = c.a == 0 ? 0.0 : 1e-8;
+  for (ClusterContact& c : wide.contacts) c.gap = c.a == 0 ? 0.0 : 0.05;
+  const ClusterImpact a = solve(frozen, 0.93), b = solve(tiny, 0.93), w = solve(wide, 0.93);
+  for (std::size_t k = 0; k < a.velocities.size(); ++k) EXPECT_LT(norm(a.velocities[k] - b.velocities[k]), 0.02) << k;
+  // Wide gaps: the cue ball and the apex collide as a pair (e = 0.93, head on).
+  EXPECT_NEAR(w.velocities[0].x, 9.0 * (1 - 0.93) / 2, 0.01);
+  EXPECT_NEAR(w.velocities[1].x, 9.0 * (1 + 0.93) / 2, 0.01);
+  for (std::size_t k = 2; k < w.velocities.size(); ++k) EXPECT_EQ(w.velocities[k], Vec2{}) << k;
 }
 
 // ------------------------------------------------------------ the simulator

@@ -144,8 +144,14 @@ class Simulation {
         p_(settings.parameters),
         n_(static_cast<int>(balls.size())),
         ball_contact_(ball_collision_contact(p_, settings.ball_collision_model, settings.ball_collision)),
-        restitution_(ball_contact_.model == BallCollisionModel::mathavan_2014 ? ball_contact_.mathavan.restitution
-                                                                               : ball_contact_.coulomb.restitution) {
+        stiffness_(hertz_stiffness_per_mass(p_.ball)) {
+    cluster_settings_.restitution = ball_contact_.model == BallCollisionModel::mathavan_2014
+                                        ? ball_contact_.mathavan.restitution
+                                        : ball_contact_.coulomb.restitution;
+    cluster_settings_.stiffness = stiffness_;
+    // Contacts left slower than half the impacts' threshold are resting
+    // contacts (resting_contact.hpp).
+    cluster_settings_.slow_speed = 0.5 * kPushSpeed;
     for (const CushionSegment& c : table.cushions) {
       cushion_models_.push_back(model_for(c.contact_height));
       cushion_lines_.push_back(contact_line(c.start, c.end, cushion_contact_distance(c.contact_height, p_.ball.radius)));
@@ -457,7 +463,7 @@ class Simulation {
     const double closing = -dot(b.velocity - a.velocity, unit(b.position - a.position));
     record(EventType::ball_ball, i, result_.balls[idx(j)].id);
     if (closing >= kPushSpeed) {
-      if (touching_cluster(i, j)) {
+      if (touching_cluster(i, j, closing)) {
         resolve_cluster();
         return;
       }
@@ -474,13 +480,15 @@ class Simulation {
   static Vec2 unit(Vec2 d) { return d / norm(d); }
 
   // Whether the impact of balls i and j reaches a third ball: cluster_ then
-  // holds every active ball touching them, directly or through others
-  // (within kContactTolerance), with their states now, and cluster_contacts_
-  // every touching pair among them.
-  bool touching_cluster(int i, int j) {
+  // holds every active ball touching them, directly or through others, or
+  // apart by less than the compression of their impact (contact_cluster.hpp),
+  // with their states now, and cluster_contacts_ every such pair among them
+  // with its gap.
+  bool touching_cluster(int i, int j, double closing) {
     cluster_.clear();
     cluster_contacts_.clear();
     in_cluster_.assign(idx(n_), 0);
+    const double reach = std::max(hertz_compression(closing, stiffness_), kContactTolerance);
     const auto join = [&](int k, const BallState& s) {
       in_cluster_[idx(k)] = 1;
       cluster_.push_back({k, s});
@@ -491,16 +499,17 @@ class Simulation {
       const int a = cluster_[m].ball;
       for (int k = 0; k < n_; ++k) {
         if (in_cluster_[idx(k)] || !active_[idx(k)]) continue;
-        if (!boxes_within(path_box_[idx(a)], path_box_[idx(k)], contact_ + kBoxSlack)) continue;
+        if (!boxes_within(path_box_[idx(a)], path_box_[idx(k)], contact_ + reach + kBoxSlack)) continue;
         const BallState s = state_at_now(k);
-        if (norm(s.position - cluster_[m].state.position) - contact_ <= kContactTolerance) join(k, s);
+        if (norm(s.position - cluster_[m].state.position) - contact_ <= reach) join(k, s);
       }
     }
     if (cluster_.size() == 2) return false;
     for (std::size_t m = 0; m < cluster_.size(); ++m)
-      for (std::size_t k = m + 1; k < cluster_.size(); ++k)
-        if (norm(cluster_[k].state.position - cluster_[m].state.position) - contact_ <= kContactTolerance)
-          cluster_contacts_.push_back({m, k});
+      for (std::size_t k = m + 1; k < cluster_.size(); ++k) {
+        const double gap = norm(cluster_[k].state.position - cluster_[m].state.position) - contact_;
+        if (gap <= reach) cluster_contacts_.push_back({m, k, gap <= kContactTolerance ? 0.0 : gap});
+      }
     return true;
   }
 
@@ -513,7 +522,7 @@ class Simulation {
       positions.push_back(c.state.position);
       velocities.push_back(c.state.velocity);
     }
-    const ClusterImpact impact = resolve_cluster_impact(positions, velocities, cluster_contacts_, restitution_);
+    const ClusterImpact impact = resolve_cluster_impact(positions, velocities, cluster_contacts_, cluster_settings_);
     std::vector<int> changed;
     for (std::size_t m = 0; m < cluster_.size(); ++m) {
       BallState s = cluster_[m].state;
@@ -675,7 +684,8 @@ class Simulation {
   int n_;
   double now_ = 0.0;
   BallCollisionContact ball_contact_;
-  double restitution_ = 0.0;  // the ball-ball model's e, for clusters
+  ClusterSettings cluster_settings_;  // the ball-ball model's e, phenolic balls' K / m
+  double stiffness_ = 0.0;            // cluster_settings_.stiffness
   struct ClusterBall {
     int ball;
     BallState state;

@@ -25,16 +25,23 @@
 // (C2) is Walton & Braun's loading-unloading hysteresis [5] for the Hertz
 // law: the unloading branch returns e^2 of the work stored, so a single pair
 // leaves with Newton's restitution e exactly, whatever its speed, and the
-// cluster only loses energy. The equations are homogeneous: scaling every
-// velocity scales the outcome, and the stiffness K and the mass only set
-// the time scale, so none of them is a parameter (K = m = 1 here) [1, 3].
+// cluster only loses energy. K is Hertz's for two phenolic resin balls
+// (hertz_stiffness_per_mass: 0.48 mm of compression and 0.28 ms of contact
+// at 5 m/s). Between touching balls the equations are homogeneous: scaling
+// every velocity scales the outcome, and K only sets the time scale [1, 3].
+// K matters for balls apart by a gap smaller than the compression (a rack
+// of balls made to +-0.127 mm: docs/break.md): the approach of such a
+// contact starts at -gap, so the wave crosses the gap inside the impact, as
+// it does in a real rack, instead of a pairwise collision after it.
 // (C1)-(C3) are integrated by velocity Verlet with a step of 1/64 of a
 // pair's contact time at the cluster's largest possible relative speed
 // (t_c = 2.94 delta_max / v [4, eq. 11.24]) until no contact carries a
-// force or closes. Momentum is kept to rounding (every impulse acts on two balls,
-// equal and opposite); should rounding in the integration leave more energy
-// than there was, the velocities relative to the centre of mass are scaled
-// back, so energy never rises.
+// force or closes (or only slower than the simulator's resting contacts
+// take over, or, across a gap, too slowly to close it within a contact
+// time: a later collision). Momentum is kept to rounding (every impulse
+// acts on two balls, equal and opposite); should the integration leave more
+// energy than there was, the velocities relative to the centre of mass are
+// scaled back, so energy never rises.
 //
 // Order: the balls are ranked by position (x, then y) and the contacts by
 // their balls' ranks before anything is summed, so the result is the same to
@@ -70,14 +77,17 @@
 #include <span>
 #include <vector>
 
+#include "cueball/core/parameters.hpp"
 #include "cueball/core/vec.hpp"
 
 namespace cueball {
 
-/// Two touching balls of a cluster, by their index in its lists.
+/// Two balls of a cluster, by their index in its lists, touching or apart
+/// by a gap smaller than the impact's compression.
 struct ClusterContact {
   std::size_t a = 0;
   std::size_t b = 0;
+  double gap = 0.0;  ///< m between the surfaces at the impact, >= 0: the approach starts at -gap
 };
 
 struct ClusterImpact {
@@ -91,13 +101,42 @@ struct ClusterImpact {
 /// (test_contact_cluster, StepsConverge).
 inline constexpr double kClusterStepsPerContactTime = 64.0;
 
+/// Phenolic resin pool balls: Young's modulus and Poisson's ratio (S. Crown,
+/// "Modeling the effects of velocity, spin, frictional coefficient, and
+/// impact angle on deflection angle in near-elastic collisions of phenolic
+/// resin spheres", as quoted in "Collision of billiard balls",
+/// dbkcues.ru). Two pool balls closing at 5 m/s: 0.48 mm of compression,
+/// 0.28 ms of contact.
+inline constexpr double kPhenolicYoungsModulus = 5.84e9;  ///< Pa
+inline constexpr double kPhenolicPoissonRatio = 0.34;
+
+struct ClusterSettings {
+  double restitution = 1.0;  ///< Newton's e, [0, 1] (taken as 0.01 below that: a perfectly plastic cluster can creep on without end)
+  /// K / m of (C2), m^-1/2 s^-2: Hertz's K = (4/3) E* sqrt(R / 2) for two
+  /// equal spheres [4, eq. 4.23], over a ball's mass. Without gaps the
+  /// outcome does not depend on it.
+  double stiffness = 1.0;
+  /// m/s: the impact ends once no contact closes, or could be pushed by the
+  /// work stored in it, faster than this (the simulator's resting contacts,
+  /// resting_contact.hpp, take such slow contacts; 0: never).
+  double slow_speed = 0.0;
+  double steps_per_contact_time = kClusterStepsPerContactTime;
+};
+
 /// Resolves every contact of a cluster of equal balls at once, (C1)-(C3).
-/// `positions` and `velocities` (horizontal, m and m/s) at the impact,
-/// `contacts` the touching pairs, `restitution` Newton's e in [0, 1] (taken
-/// as 0.01 below that: a perfectly plastic cluster can creep on without end).
-/// Throws SimulationError if the cluster has not parted after 200000 steps.
+/// `positions` and `velocities` (horizontal, m and m/s) at the impact.
+/// A contact apart across a gap that no closing speed brings shut within a
+/// pair's contact time is left to close later. Throws SimulationError if
+/// the cluster has not parted after 200000 steps.
 ClusterImpact resolve_cluster_impact(std::span<const Vec2> positions, std::span<const Vec2> velocities,
-                                     std::span<const ClusterContact> contacts, double restitution,
-                                     double steps_per_contact_time = kClusterStepsPerContactTime);
+                                     std::span<const ClusterContact> contacts, const ClusterSettings& settings);
+
+/// K / m for two balls of the given radius and mass made of phenolic resin.
+double hertz_stiffness_per_mass(const BallParameters& ball);
+/// The greatest compression, m, and the duration, s, of a Hertz impact of
+/// two equal balls closing at `speed` with K / m = `stiffness` (no
+/// restitution loss) [4, eqs. 11.23-11.24].
+double hertz_compression(double speed, double stiffness);
+double hertz_contact_time(double speed, double stiffness);
 
 }  // namespace cueball

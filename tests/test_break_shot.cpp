@@ -24,17 +24,17 @@ constexpr int kBreaks = 300;
 // +-0.127 mm diameter tolerance (docs/break.md, "Real racks").
 constexpr double kGapSigmaForTest = 0.000025;
 // Lower bounds on the share of breaks that are legal and make a ball
-// (docs/break.md, "The recommended break"): the share measured over 6000
+// (docs/break.md, "The recommended break"): the share measured over 2000
 // breaks with bench/break_study.cpp (--suite final) less 4 standard errors
 // of the difference between a 300-break share and it,
-// 4 sqrt(p (1 - p) / 300 + se^2): frozen 0.383 +- 0.006 -> 0.26; gaps of
-// sigma 0.025 mm 0.522 +- 0.006 -> 0.40.
-constexpr double kMadeFrozenBound = 0.26;
-constexpr double kMadeGapBound = 0.40;
+// 4 sqrt(p (1 - p) / 300 + se^2): frozen 0.810 +- 0.009 -> 0.71; gaps of
+// sigma 0.025 mm 0.785 +- 0.009 -> 0.68.
+constexpr double kMadeFrozenBound = 0.71;
+constexpr double kMadeGapBound = 0.68;
 // The same with the 9 on the foot spot (nine_on_foot_spot), as the 2016 WPA
 // World 9-Ball Championship racked (its breakers: 71 +- 4.4 %), and gaps
-// of sigma 0.025 mm: 0.534 +- 0.009 -> 0.41.
-constexpr double kMadeNineSpotBound = 0.41;
+// of sigma 0.025 mm: 0.672 +- 0.010 -> 0.55.
+constexpr double kMadeNineSpotBound = 0.55;
 
 // The share of breaks, over the seeds, that are legal and make an object
 // ball (the breaker keeps the table: WPA 2.3 and 2.5), and the legal share.

@@ -33,6 +33,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <initializer_list>
 #include <numbers>
 #include <string>
 #include <vector>
@@ -337,44 +338,31 @@ void suite_spot(const Options& o) {
       }
 }
 
-// The recommended break (games/break_shot.hpp): 10 cm off the y = 0 rail,
-// 1 cm behind the head string, square on the apex ball, 11 m/s, centre ball.
-void suite_final(const Options& o, double speed = 11.0) {
+// Breaks square on the 1 from a side spot, with the 1 or the 9 on the foot
+// spot, over gap scales and speeds.
+void side_breaks(const Options& o, const char* spot, std::initializer_list<double> speeds,
+                 std::initializer_list<double> sigmas) {
   for (bool nine : {false, true})
-    for (double sigma : {0.0, 0.000025, 0.0001}) {
-      Cell c;
-      c.spot = "side";
-      c.nine_on_spot = nine;
-      c.gap_sigma = sigma;
-      c.speed = speed;
-      run_cell(c, o);
-    }
-}
-
-// The side break (10 cm off the y = 0 rail, 1 cm behind the head string,
-// square on the 1) at three speeds, frozen and on the default gaps, with
-// the 1 or the 9 on the foot spot; and its mirror image (off the y = W
-// rail) at the recommended speed.
-void suite_side(const Options& o) {
-  for (bool nine : {false, true})
-    for (double sigma : {0.0, 0.000025})
-      for (double v : {9.0, 10.0, 11.0}) {
+    for (double sigma : sigmas)
+      for (double v : speeds) {
         Cell c;
-        c.spot = "side";
+        c.spot = spot;
         c.nine_on_spot = nine;
         c.gap_sigma = sigma;
         c.speed = v;
         run_cell(c, o);
       }
-  for (bool nine : {false, true})
-    for (double sigma : {0.0, 0.000025}) {
-      Cell c;
-      c.spot = "side_top";
-      c.nine_on_spot = nine;
-      c.gap_sigma = sigma;
-      c.speed = 10.0;
-      run_cell(c, o);
-    }
+}
+
+// The recommended break (games/break_shot.hpp): 10 cm off the y = 0 rail,
+// 1 cm behind the head string, square on the apex ball, 11 m/s, centre ball.
+void suite_final(const Options& o, double speed = 11.0) { side_breaks(o, "side", {speed}, {0.0, 0.000025, 0.0001}); }
+
+// The side break at three speeds, frozen and on the default gaps, and its
+// mirror image (off the y = W rail) at 10 m/s.
+void suite_side(const Options& o) {
+  side_breaks(o, "side", {9.0, 10.0, 11.0}, {0.0, 0.000025});
+  side_breaks(o, "side_top", {10.0}, {0.0, 0.000025});
 }
 
 // The cut break from the side that pros use with the 9 on the spot.

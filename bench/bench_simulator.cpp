@@ -14,6 +14,7 @@
 #include <chrono>
 #include <cstdint>
 #include <numbers>
+#include <string>
 #include <vector>
 
 #include "cueball/io/scenario_json.hpp"
@@ -48,6 +49,20 @@ void BM_NineBallBreak(benchmark::State& st, BallCollisionModel model) {
 }
 BENCHMARK_CAPTURE(BM_NineBallBreak, coulomb_impulse, BallCollisionModel::coulomb_impulse)->Unit(benchmark::kMicrosecond);
 BENCHMARK_CAPTURE(BM_NineBallBreak, mathavan_2014, BallCollisionModel::mathavan_2014)->Unit(benchmark::kMicrosecond);
+
+// The 9-ball and 15-ball breaks (cue 9 m/s, full on the apex ball) on a
+// frozen rack, whose touching balls are one cluster resolved at once
+// (contact_cluster.hpp), and on a rack with gap_sigma = 0.025 mm, where
+// every contact is a pair: side by side, their ratio is what the cluster
+// costs.
+void BM_Break(benchmark::State& st) {
+  const char* rack = st.range(0) == 9 ? "nine_ball" : "eight_ball";
+  const std::string gap = st.range(1) == 0 ? "0" : "2.5e-5";
+  const Scenario s = scenario_from_json(std::string(R"({"table": "pool_9ft", "rack": {"type": ")") + rack +
+                                        R"(", "gap_sigma": )" + gap + R"(, "seed": 3}, "cue": {"ball": 0, "target": 1, "speed": 9.0}})");
+  run_shot(st, s);
+}
+BENCHMARK(BM_Break)->ArgsProduct({{9, 15}, {0, 1}})->ArgNames({"balls", "gaps"})->Unit(benchmark::kMicrosecond);
 
 // The same break without re-validating the table and balls: what a batch or
 // a planner pays per shot once its scenario has been validated.

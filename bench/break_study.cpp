@@ -26,12 +26,14 @@
 // long string and box spots at the top speeds), spot (the 9 on the foot
 // spot), final / final9 (the recommended break at 11 / 9 m/s), extras
 // (tighter corner pockets, a raised cue), cut9 (the side cut break with the
-// 9 on the spot). Output: one line per cell. docs/break.md has the results.
+// 9 on the spot), side (the side break, frozen and on the default gaps, and
+// its mirror image). Output: one line per cell. docs/break.md has the results.
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <initializer_list>
 #include <numbers>
 #include <string>
 #include <vector>
@@ -336,19 +338,31 @@ void suite_spot(const Options& o) {
       }
 }
 
-// The recommended break (games/break_shot.hpp): on the long string 1 cm
-// behind the head string, square on the apex ball, 11 m/s, centre ball.
-void suite_final(const Options& o, double speed = 11.0) {
+// Breaks square on the 1 from a side spot, with the 1 or the 9 on the foot
+// spot, over gap scales and speeds.
+void side_breaks(const Options& o, const char* spot, std::initializer_list<double> speeds,
+                 std::initializer_list<double> sigmas) {
   for (bool nine : {false, true})
-    for (double sigma : {0.0, 0.000025, 0.0001}) {
-      Cell c;
-      c.spot = "side";
-      c.rail_gap = 0.5 * 1.27 - 0.028575;  // the long string
-      c.nine_on_spot = nine;
-      c.gap_sigma = sigma;
-      c.speed = speed;
-      run_cell(c, o);
-    }
+    for (double sigma : sigmas)
+      for (double v : speeds) {
+        Cell c;
+        c.spot = spot;
+        c.nine_on_spot = nine;
+        c.gap_sigma = sigma;
+        c.speed = v;
+        run_cell(c, o);
+      }
+}
+
+// The recommended break (games/break_shot.hpp): 10 cm off the y = 0 rail,
+// 1 cm behind the head string, square on the apex ball, 11 m/s, centre ball.
+void suite_final(const Options& o, double speed = 11.0) { side_breaks(o, "side", {speed}, {0.0, 0.000025, 0.0001}); }
+
+// The side break at three speeds, frozen and on the default gaps, and its
+// mirror image (off the y = W rail) at 10 m/s.
+void suite_side(const Options& o) {
+  side_breaks(o, "side", {9.0, 10.0, 11.0}, {0.0, 0.000025});
+  side_breaks(o, "side_top", {10.0}, {0.0, 0.000025});
 }
 
 // The cut break from the side that pros use with the 9 on the spot.
@@ -386,7 +400,7 @@ void suite_extras(const Options& o) {
 
 int usage(const char* why) {
   std::fprintf(stderr, "cueball-break-study: %s\nusage: cueball-break-study [--shots N] [--threads T] [--seed S] "
-                       "[--suite default|grid|order|model|rail|sigma|centre|spot|final|final9|extras|cut9]\n", why);
+                       "[--suite default|grid|order|model|rail|sigma|centre|spot|final|final9|extras|cut9|side]\n", why);
   return 2;
 }
 
@@ -417,6 +431,7 @@ int main(int argc, char** argv) {
   else if (o.suite == "final") suite_final(o);
   else if (o.suite == "final9") suite_final(o, 9.0);  // a cue ball at about 12 m/s (27 mph)
   else if (o.suite == "extras") suite_extras(o);
+  else if (o.suite == "side") suite_side(o);
   else if (o.suite == "cut9") suite_cut9(o);
   else return usage("unknown --suite (default, grid, order, model, rail, sigma, centre, spot, final, final9, extras, cut9)");
   return 0;

@@ -45,7 +45,11 @@
 // first contact, scratch, miscue: the Ruling's foul), pots nothing, or the
 // agent finds no feasible shot of its kinds (--kinds, then --fallback-kinds:
 // a kick when nothing else pots) and would play a safety. A 9 potted on the
-// break is spotted.
+// break is spotted. With --break recommended the rack is the game's own
+// (new_game: the default gaps) broken by recommended_break with tournament
+// noise through play(); only a legal break that makes a ball is run out, from
+// where the break left the cue ball (a 9 on the break is a run-out), and the
+// share of such breaks and the run-out rate after them are reported.
 //
 // Everything is seeded: the same flags give the same choices and
 // probabilities whatever --threads (the timings of course vary).
@@ -72,6 +76,7 @@
 
 #include "tool_support.hpp"
 #include "cueball/agents/agent.hpp"
+#include "cueball/games/break_shot.hpp"
 #include "cueball/games/game.hpp"
 #include "cueball/io/scenario_json.hpp"
 #include "cueball/simulation/batch.hpp"
@@ -403,13 +408,15 @@ SingleRecord run_single(const Setup& st, std::uint64_t seed, int repeats, int pl
 
 // ------------------------------------------------------------------ run-outs
 
-enum class Stop { run_out, miss, scratch, wrong_first_contact, no_feasible_shot, miscue, failure, rejected };
-const char* const kStopNames[] = {"run_out", "miss", "scratch", "wrong_first_contact", "no_feasible_shot", "miscue", "failure", "rejected_layout"};
-constexpr int kStops = 8;
+enum class Stop { run_out, miss, scratch, wrong_first_contact, no_feasible_shot, miscue, failure, rejected, dry_break };
+const char* const kStopNames[] = {"run_out", "miss", "scratch", "wrong_first_contact", "no_feasible_shot", "miscue", "failure", "rejected_layout",
+                                  "dry_break"};
+constexpr int kStops = 9;
 
 struct RackRecord {
   std::uint64_t seed = 0;
   int on_break = 0;      // object balls potted on the break (a potted 9 spotted, not counted)
+  bool made_break = false;  // --break recommended: the break was legal and made a ball
   int potted = 0;        // object balls potted by the planner's run
   int shots = 0;         // planned shots played
   Stop stop = Stop::miss;
@@ -499,6 +506,31 @@ GameState broken_game(const Setup& st, std::uint64_t seed, bool in_hand_planner,
   return g;
 }
 
+// --break recommended: a 9-ball game as new_game racks it (the default
+// gaps, the rack seeded by the rack's seed), broken by recommended_break
+// through play() with tournament noise; the breaker goes on from where the
+// break left the cue ball when the break is legal and makes a ball (no
+// push-out: the run-out is played), and a 9 on the break is a run-out.
+// Otherwise the rack ends as a dry break.
+std::optional<GameState> engine_break(const Setup& st, std::uint64_t seed, RackRecord& rec) {
+  GameConfig config = default_config(GameKind::nine_ball);
+  config.noise = st.base.noise;
+  const GameState g = new_game(config, seed);
+  const GameStep step = play(g, recommended_break(g), stream_seed(seed, kBreakStream));
+  const Ruling& r = step.ruling;
+  for (const int id : r.pocketed) rec.on_break += id != 0 ? 1 : 0;
+  rec.made_break = !r.truncated && !r.foul && rec.on_break > 0;
+  if (rec.made_break && r.game_over) rec.stop = Stop::run_out;
+  if (!rec.made_break) {
+    rec.stop = Stop::dry_break;
+    rec.detail = r.truncated || r.foul ? r.reason : "nothing pocketed on the break";
+  }
+  if (!rec.made_break || r.game_over) return std::nullopt;
+  GameState next = step.next;
+  next.push_out_available = false;
+  return next;
+}
+
 // play()'s seed whose noise draw is the one simulate_many drew for shot
 // `shot` of the stream `stream` (batch.hpp: play draws shot_normals(seed, 0),
 // simulate_many shot_normals(stream, shot), and shot_normals(x, k) depends on
@@ -509,10 +541,17 @@ std::uint64_t play_seed(std::uint64_t stream, std::uint64_t shot) {
 
 RackRecord run_rack(const Setup& st, std::uint64_t seed, int planner_simulations, int position_simulations,
                     const std::vector<ShotKind>& kinds, const std::vector<ShotKind>& fallback_kinds,
-                    bool in_hand_planner) {
+                    bool in_hand_planner, bool real_break) {
   RackRecord rec;
   rec.seed = seed;
-  GameState g = broken_game(st, seed, in_hand_planner, rec.on_break);
+  GameState g;
+  if (real_break) {
+    std::optional<GameState> after = engine_break(st, seed, rec);
+    if (!after) return rec;
+    g = std::move(*after);
+  } else {
+    g = broken_game(st, seed, in_hand_planner, rec.on_break);
+  }
   AgentOptions agent;
   agent.kind = AgentKind::planner;
   agent.simulations = planner_simulations;
@@ -618,6 +657,7 @@ struct Options {
   int planner_simulations = 4000;
   int position_simulations = 0;  // 0: run-outs without position play
   bool in_hand_planner = false;  // the run-outs' first cue ball placed by plan_ball_in_hand, not by the rule
+  bool real_break = false;       // --break recommended: the game's own break, the run-out only after a made one
   std::vector<ShotKind> kinds = PlanRequest{}.kinds;  // the run-outs' shot kinds
   std::vector<ShotKind> fallback_kinds;  // asked for when no shot of `kinds` is feasible; empty: none
   std::string json;
@@ -629,7 +669,8 @@ void usage() {
   std::printf(
       "usage: cueball-planner-benchmark [--suite single|runout|all] [--layouts N] [--racks N] [--repeats N]\n"
       "                                 [--seed S] [--planner-simulations N] [--position N] [--threads T]\n"
-      "                                 [--in-hand rule|planner] [--kinds LIST] [--fallback-kinds LIST]\n"
+      "                                 [--in-hand rule|planner] [--break rule|recommended] [--kinds LIST]\n"
+      "                                 [--fallback-kinds LIST]\n"
       "                                 [--json FILE] [--layouts-out DIR]\n"
       "The shot planner against a ghost-ball baseline and an exhaustive grid search (docs/planner-benchmark.md).\n"
       "  --suite S                single, runout or all (default all)\n"
@@ -643,6 +684,10 @@ void usage() {
       "  --in-hand H              the run-outs' cue ball in hand after the break: rule (a straight-in on the\n"
       "                           lowest ball, the default) or planner (plan_ball_in_hand, with --position's\n"
       "                           budget, 1000 without it)\n"
+      "  --break B                the run-outs' break: rule (a seeded engine break, then the cue ball in hand;\n"
+      "                           the default) or recommended (new_game's rack broken by recommended_break with\n"
+      "                           tournament noise; the run-out is played only after a legal break that makes\n"
+      "                           a ball, from where it left the cue ball)\n"
       "  --kinds LIST             the run-outs' shot kinds, comma-separated: direct, bank, kick, combination\n"
       "                           (default direct,bank, the planner's default)\n"
       "  --fallback-kinds LIST    the kinds asked for when no shot of --kinds pots the run-outs' ball, e.g. kick\n"
@@ -678,12 +723,12 @@ Options parse(int argc, char** argv) {
     }
     static const char* const known[] = {"--suite",  "--layouts", "--racks", "--repeats", "--seed", "--planner-simulations",
                                         "--position", "--kinds", "--fallback-kinds", "--threads", "--json", "--layouts-out",
-                                        "--in-hand"};
+                                        "--in-hand", "--break"};
     if (std::find_if(std::begin(known), std::end(known), [&](const char* k) { return flag == k; }) == std::end(known))
       kFlags.bad("flag", flag,
                "--suite, --layouts, --racks, --repeats, --seed, --planner-simulations, --position, --kinds, "
                "--fallback-kinds, --threads, "
-               "--json, --layouts-out, --in-hand, --help");
+               "--json, --layouts-out, --in-hand, --break, --help");
     if (i + 1 >= argc) kFlags.bad(flag, "", "a value after the flag");
     const std::string value = argv[++i];
     if (flag == "--suite") {
@@ -703,6 +748,9 @@ Options parse(int argc, char** argv) {
       o.kinds = kinds_flag(flag, value);
     } else if (flag == "--fallback-kinds") {
       o.fallback_kinds = kinds_flag(flag, value);
+    } else if (flag == "--break") {
+      if (value != "rule" && value != "recommended") kFlags.bad(flag, value, "rule, recommended");
+      o.real_break = value == "recommended";
     } else if (flag == "--in-hand") {
       if (value != "rule" && value != "planner") kFlags.bad(flag, value, "rule, planner");
       o.in_hand_planner = value == "planner";
@@ -759,10 +807,10 @@ int run(const Options& o) {
   const Setup st = make_setup();
   std::string json = "{\n \"tool\": \"cueball-planner-benchmark\",\n";
   json += fmt(" \"options\": {\"suite\": \"%s\", \"layouts\": %d, \"racks\": %d, \"repeats\": %d, \"seed\": %llu, "
-              "\"planner_simulations\": %d, \"position_simulations\": %d, \"in_hand\": \"%s\", \"kinds\": \"%s\", "
+              "\"planner_simulations\": %d, \"position_simulations\": %d, \"in_hand\": \"%s\", \"break\": \"%s\", \"kinds\": \"%s\", "
               "\"fallback_kinds\": \"%s\", \"threads\": %d},\n",
               o.suite.c_str(), o.layouts, o.racks, o.repeats, static_cast<unsigned long long>(o.seed), o.planner_simulations,
-              o.position_simulations, o.in_hand_planner ? "planner" : "rule", kinds_text(o.kinds).c_str(),
+              o.position_simulations, o.in_hand_planner ? "planner" : "rule", o.real_break ? "recommended" : "rule", kinds_text(o.kinds).c_str(),
               kinds_text(o.fallback_kinds).c_str(), o.threads);
   const CueStrikeNoise& n = st.base.noise;
   json += fmt(" \"noise\": {\"speed\": %g, \"aim_deg\": %g, \"elevation_deg\": %g, \"side\": %g, \"height\": %g},\n", n.speed,
@@ -872,7 +920,7 @@ int run(const Options& o) {
     parallel_for(o.racks, o.threads, [&](int k) {
       recs[static_cast<std::size_t>(k)] =
           run_rack(st, o.seed + static_cast<std::uint64_t>(k), o.planner_simulations, o.position_simulations, o.kinds,
-                   o.fallback_kinds, o.in_hand_planner);
+                   o.fallback_kinds, o.in_hand_planner, o.real_break);
     });
     const double wall = seconds_since(start);
     int stops[kStops] = {};
@@ -896,6 +944,16 @@ int run(const Options& o) {
                 secs.empty() ? 0.0 : static_cast<double>(sims) / static_cast<double>(secs.size()));
     std::printf("  ended by:");
     for (int k = 0; k < kStops; ++k) std::printf(" %s %d%s", kStopNames[k], stops[k], k + 1 < kStops ? "," : "\n");
+    // --break recommended: how often the break makes a ball, and how often a
+    // made break is run out.
+    int made = 0;
+    for (const RackRecord& r : recs) made += r.made_break ? 1 : 0;
+    const double made_share = static_cast<double>(made) / o.racks;
+    const double after_made = made > 0 ? static_cast<double>(stops[0]) / made : 0.0;
+    if (o.real_break)
+      std::printf("  breaks that make a ball %.3f +- %.3f; run out after them %.3f +- %.3f (%d of %d)\n", made_share,
+                  std::sqrt(made_share * (1.0 - made_share) / o.racks), after_made,
+                  made > 0 ? std::sqrt(after_made * (1.0 - after_made) / made) : 0.0, stops[0], made);
     json += first_suite ? "" : ",\n";
     json += " \"runout\": {\n";
     json += fmt("  \"racks\": %d, \"wall_seconds\": %s, \"run_out_fraction\": %s, \"run_out_standard_error\": %s, "
@@ -906,6 +964,9 @@ int run(const Options& o) {
                 num(mean(potted)).c_str(), num(mean(on_break)).c_str(), num(mean(shots)).c_str(), num(median(cpu)).c_str(), num(median(secs)).c_str(),
                 num(secs.empty() ? 0.0 : static_cast<double>(sims) / static_cast<double>(secs.size())).c_str(),
                 fraction >= 0.4 ? "true" : "false");
+    if (o.real_break)
+      json += fmt("  \"breaks_made\": %d, \"break_made_fraction\": %s, \"run_out_after_made_break\": %s,\n", made,
+                  num(made_share).c_str(), num(after_made).c_str());
     json += "  \"ended_by\": {";
     for (int k = 0; k < kStops; ++k) json += fmt("\"%s\": %d%s", kStopNames[k], stops[k], k + 1 < kStops ? ", " : "},\n");
     json += "  \"per_rack\": [\n";

@@ -99,7 +99,7 @@ Action pool_break(const GameState& state) {
 
   Action action;
   const double x = head_string_x(t) - kBreakBehindString;
-  const double y = long_string_y(t) + kBreakLateral;
+  const double y = R + kBreakFromRail;
   // The spot, or the nearest free one across the table from it.
   const Vec2 cue = cue_position(state, action, {x, y}, {0.0, 1.0});
   // A cut passes the apex on the cue ball's own side of the long string.
@@ -200,15 +200,17 @@ void choose_target(BreakOff& b, Action& action) {
   b.cue = cue_position(b.state, action, wanted, {0.0, 1.0});
 }
 
-// Step 2: thin contacts on the red's outer (yellow) side, two speeds, both
-// sides; a success hits a red first, pots nothing and leaves the cue ball
-// in baulk.
+// Step 2: contacts from thin to half-ball on the red's outer (yellow) side,
+// three speeds, both sides; a success hits a red first, pots nothing and
+// leaves the cue ball in baulk. (The pack's reds touch: the end red, backed
+// by its row, throws the cue ball off wider than a lone red would,
+// contact_cluster.hpp, so the safe contacts are the fuller ones.)
 void scan_break_off(BreakOff& b) {
   const double R = b.state.table.table.ball.radius;
-  for (const double speed : {kBreakOffSpeed - 0.5, kBreakOffSpeed})
+  for (const double speed : {kBreakOffSpeed - 1.0, kBreakOffSpeed - 0.5, kBreakOffSpeed})
     for (const double side : {kBreakOffSide, -kBreakOffSide}) {
       std::vector<Candidate> row;
-      for (double fullness = 0.02; fullness <= 0.301; fullness += 0.01) {
+      for (double fullness = 0.02; fullness <= 0.601; fullness += 0.02) {
         Candidate c;
         c.strike.speed = speed;
         c.strike.side = side;

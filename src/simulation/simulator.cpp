@@ -14,6 +14,7 @@
 #include "cueball/core/errors.hpp"
 #include "cueball/physics/contact_prediction.hpp"
 #include "cueball/physics/resting_contact.hpp"
+#include "cueball/simulation/contact_cluster.hpp"
 
 namespace cueball {
 
@@ -142,7 +143,15 @@ class Simulation {
         settings_(settings),
         p_(settings.parameters),
         n_(static_cast<int>(balls.size())),
-        ball_contact_(ball_collision_contact(p_, settings.ball_collision_model, settings.ball_collision)) {
+        ball_contact_(ball_collision_contact(p_, settings.ball_collision_model, settings.ball_collision)),
+        stiffness_(hertz_stiffness_per_mass(p_.ball)) {
+    cluster_settings_.restitution = ball_contact_.model == BallCollisionModel::mathavan_2014
+                                        ? ball_contact_.mathavan.restitution
+                                        : ball_contact_.coulomb.restitution;
+    cluster_settings_.stiffness = stiffness_;
+    // Contacts left slower than half the impacts' threshold are resting
+    // contacts (resting_contact.hpp).
+    cluster_settings_.slow_speed = 0.5 * kPushSpeed;
     for (const CushionSegment& c : table.cushions) {
       cushion_models_.push_back(model_for(c.contact_height));
       cushion_lines_.push_back(contact_line(c.start, c.end, cushion_contact_distance(c.contact_height, p_.ball.radius)));
@@ -454,6 +463,10 @@ class Simulation {
     const double closing = -dot(b.velocity - a.velocity, unit(b.position - a.position));
     record(EventType::ball_ball, i, result_.balls[idx(j)].id);
     if (closing >= kPushSpeed) {
+      if (touching_cluster(i, j, closing)) {
+        resolve_cluster();
+        return;
+      }
       std::tie(a, b) = collide(a, b, p_.ball, ball_contact_);
     } else if (!(closing <= kPressSpeed && press_apart(a, b, p_.ball.radius))) {
       push_group(i, j);
@@ -465,6 +478,66 @@ class Simulation {
   }
 
   static Vec2 unit(Vec2 d) { return d / norm(d); }
+
+  // Whether the impact of balls i and j reaches a third ball: cluster_ then
+  // holds every active ball touching them, directly or through others, or
+  // apart by less than the compression of their impact (contact_cluster.hpp),
+  // with their states now, and cluster_contacts_ every such pair among them
+  // with its gap.
+  bool touching_cluster(int i, int j, double closing) {
+    cluster_.clear();
+    cluster_contacts_.clear();
+    in_cluster_.assign(idx(n_), 0);
+    const double reach = std::max(hertz_compression(closing, stiffness_), kContactTolerance);
+    const auto join = [&](int k, const BallState& s) {
+      in_cluster_[idx(k)] = 1;
+      cluster_.push_back({k, s});
+    };
+    join(i, state_at_now(i));
+    join(j, state_at_now(j));
+    for (std::size_t m = 0; m < cluster_.size(); ++m) {
+      const int a = cluster_[m].ball;
+      for (int k = 0; k < n_; ++k) {
+        if (in_cluster_[idx(k)] || !active_[idx(k)]) continue;
+        if (!boxes_within(path_box_[idx(a)], path_box_[idx(k)], contact_ + reach + kBoxSlack)) continue;
+        const BallState s = state_at_now(k);
+        if (norm(s.position - cluster_[m].state.position) - contact_ <= reach) join(k, s);
+      }
+    }
+    if (cluster_.size() == 2) return false;
+    for (std::size_t m = 0; m < cluster_.size(); ++m)
+      for (std::size_t k = m + 1; k < cluster_.size(); ++k) {
+        const double gap = norm(cluster_[k].state.position - cluster_[m].state.position) - contact_;
+        if (gap <= reach) cluster_contacts_.push_back({m, k, gap <= kContactTolerance ? 0.0 : gap});
+      }
+    return true;
+  }
+
+  // Every contact of the cluster at once (contact_cluster.hpp). The impact
+  // that found it is recorded first, then each other contact that carried
+  // an impulse, the lower id first.
+  void resolve_cluster() {
+    std::vector<Vec2> positions, velocities;
+    for (const ClusterBall& c : cluster_) {
+      positions.push_back(c.state.position);
+      velocities.push_back(c.state.velocity);
+    }
+    const ClusterImpact impact = resolve_cluster_impact(positions, velocities, cluster_contacts_, cluster_settings_);
+    std::vector<int> changed;
+    for (std::size_t m = 0; m < cluster_.size(); ++m) {
+      BallState s = cluster_[m].state;
+      s.velocity = impact.velocities[m];
+      state_[idx(cluster_[m].ball)] = s;
+      changed.push_back(cluster_[m].ball);
+    }
+    for (std::size_t k = 0; k < cluster_contacts_.size(); ++k) {
+      if (!(impact.impulses[k] > 0.0) || (cluster_contacts_[k].a == 0 && cluster_contacts_[k].b == 1)) continue;
+      int a = cluster_[cluster_contacts_[k].a].ball, b = cluster_[cluster_contacts_[k].b].ball;
+      if (result_.balls[idx(b)].id < result_.balls[idx(a)].id) std::swap(a, b);
+      record(EventType::ball_ball, a, result_.balls[idx(b)].id);
+    }
+    commit(std::span<const int>(changed));
+  }
 
   // The inward normal of each wall (cushion nose or jaw) that ball state s
   // is entering now (touching and closing, or pressed: contact_prediction.hpp), with the
@@ -611,6 +684,15 @@ class Simulation {
   int n_;
   double now_ = 0.0;
   BallCollisionContact ball_contact_;
+  ClusterSettings cluster_settings_;  // the ball-ball model's e, phenolic balls' K / m
+  double stiffness_ = 0.0;            // cluster_settings_.stiffness
+  struct ClusterBall {
+    int ball;
+    BallState state;
+  };
+  std::vector<ClusterBall> cluster_;  // touching_cluster()'s
+  std::vector<ClusterContact> cluster_contacts_;
+  std::vector<char> in_cluster_;
   std::vector<CushionContact> cushion_models_, jaw_models_;
   std::vector<std::pair<double, CushionContact>> models_by_height_;  // model_for()'s cache
   std::vector<ContactLine> cushion_lines_;

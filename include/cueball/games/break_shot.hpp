@@ -5,22 +5,23 @@
 //   GameState s = new_game(config, seed);        // phase break_shot
 //   GameStep step = play(s, recommended_break(s), shot_seed);
 //
-// Pool (9-ball, 8-ball, 10-ball): the break that made a ball most often in
-// the engine under tournament noise (docs/break.md): the cue ball on the
-// long string just behind the head string, a square hit on the apex ball at
-// 11 m/s (a pro's break speed), centre ball, level cue. The side break that
-// pros favour with a frozen rack (D. Alciatore, "How to Rack and Break
-// 9-Ball Like a Pro", Billiards Digest 2018: from near the long rail, square
-// on the 1, the wing ball into the corner) does no better in the engine,
-// whose frozen rack does not pass the impulse through the balls at once
-// (docs/break.md, "Why"). Written on the rack as the state holds it: the
-// apex is the ball on (the lowest object ball on the table), so the same
-// break serves 8-ball and 10-ball racks.
+// Pool (9-ball, 8-ball, 10-ball): the side break pros favour (D. Alciatore,
+// "How to Rack and Break 9-Ball Like a Pro", Billiards Digest 2018: from
+// near a long rail, square on the 1, the wing ball into the corner): the cue
+// ball 10 cm off the y = 0 rail just behind the head string, a square hit on
+// the apex ball at 11 m/s (a pro's break speed), centre ball, level cue. The
+// engine resolves the rack's contacts at once (contact_cluster.hpp), so the
+// wing ball goes as players expect, and this break makes a ball on 0.78 of
+// breaks on the default rack, 0.69 with the 9 on the foot spot (the pros':
+// 0.71), under tournament noise (docs/break.md). Written on the rack as the
+// state holds it: the apex is the ball on (the lowest object ball on the
+// table), so the same break serves 8-ball and 10-ball racks.
 //
 // Snooker: a safe break-off (WPBSA Rules, section 3.2: the cue ball in hand
-// in the D, any red first): from the D on the yellow's side, a thin contact
-// on the end red of the pack's back row on that side, with running side so
-// the cue ball comes off the top and side cushions back towards baulk.
+// in the D, any red first): from the D on the yellow's side, a contact from
+// thin to half-ball (a scan with the engine keeps the safest) on the end red
+// of the pack's back row on that side, with running side so the cue ball
+// comes off the top and side cushions back towards baulk.
 //
 // Three-cushion: the standard opening (UMB: the red must be struck first):
 // the cue ball from its opening spot onto the red about half-ball on the
@@ -37,9 +38,9 @@ namespace cueball {
 
 /// Distance of the cue ball's centre behind the head string, m.
 inline constexpr double kBreakBehindString = 0.01;
-/// The cue ball's offset from the long string, m (+ towards the y = W
-/// cushion): 0, the long string. The side break is about +-0.5 m.
-inline constexpr double kBreakLateral = 0.0;
+/// The cue ball's centre's distance from the y = 0 cushion's nose line,
+/// less a radius, m: the side break (docs/break.md, "The recommended break").
+inline constexpr double kBreakFromRail = 0.10;
 /// Impact offset on the apex ball, a fraction of the ball's diameter, 0 a
 /// square hit; positive passes the apex on the cue ball's own side of the
 /// long string.
@@ -57,8 +58,10 @@ inline constexpr double kBreakElevationDeg = 0.0;
 
 /// Cue speed of the break-off, m/s.
 inline constexpr double kBreakOffSpeed = 4.0;
-/// Share of the end red hit (fraction of the diameter overlapping at contact): a thin contact.
-inline constexpr double kBreakOffFullness = 0.12;
+/// Share of the end red hit (fraction of the diameter overlapping at
+/// contact) when the scan finds no safe one: about half-ball, the middle of
+/// the safe contacts on the default pack (docs/break.md).
+inline constexpr double kBreakOffFullness = 0.5;
 /// Running side, ball radii.
 inline constexpr double kBreakOffSide = 0.3;
 

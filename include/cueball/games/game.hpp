@@ -72,8 +72,9 @@ struct GameConfig {
   /// The rack's gaps (rack.hpp), seeded by new_game's seed. The pool games
   /// default to gap_sigma = kDefaultRackGapSigma: balls made to 2 1/4 in ±
   /// 0.005 in (WPA Equipment Specifications) never close every contact of
-  /// a rack, and a frozen rack's break depends on the order in which the
-  /// simulator resolves its touching pairs (docs/break.md); 0: frozen.
+  /// a rack; gaps this small are crossed inside the break's impact, as in a
+  /// real rack (simulation/contact_cluster.hpp, docs/break.md); 0: a
+  /// perfectly frozen lattice.
   RackOptions rack;
   /// Execution noise added to every strike (none by default; the
   /// computational-pool tournaments' level: tournament_noise(), planning).

@@ -67,8 +67,9 @@
 // slip does not feel the cushion's own friction (mu_w) nor the vertical part
 // of the cushion's normal force during the pressed phase; a slow group moves
 // as one body (no rolling of one ball over another). Fast contacts keep their
-// impact models, resolved pairwise in the deterministic event order (a
-// Newton's cradle passes its impulse down the line).
+// impact models: a pair touching nothing else by the ball-ball model, a
+// cluster of touching balls (a frozen rack, a Newton's cradle) all at once
+// (simulation/contact_cluster.hpp).
 #pragma once
 
 #include <cstddef>

@@ -18,9 +18,12 @@
 // for the balls whose state an event changed (equipment-and-pitfalls.md,
 // item 7). Touching balls (resting_contact.hpp): a pair touching and closing,
 // or pressed together by its acceleration, is a contact at that instant
-// (contact_prediction.hpp); contacts closing at 1 cm/s or faster are impacts, resolved
-// one pair at a time in that order (a frozen rack or a Newton's cradle passes
-// its impulse along), slower or pressed ones are resting contacts, resolved
+// (contact_prediction.hpp); contacts closing at 1 cm/s or faster are impacts:
+// a pair touching nothing else by the ball-ball model, and a pair touching
+// others (a frozen rack, a Newton's cradle; balls apart by less than the
+// impact's compression count as touching) with every contact of that
+// cluster at once (contact_cluster.hpp), whatever the balls' order; slower
+// or pressed ones are resting contacts, resolved
 // by impulses that leave nothing closing or pressing and only remove energy
 // (a slow group of touching balls moves on as one), so no cascade of
 // contacts at one instant goes on. A ball not pocketed stays inside the

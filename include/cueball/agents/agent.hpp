@@ -196,7 +196,8 @@ struct PlannerChoice {
     break_shot, ///< break_action()
     pot,        ///< a planned pot of options.kinds (planned: the plan)
     fallback,   ///< a planned pot of options.fallback_kinds (a kick by default)
-    safety,     ///< nothing pots: safe_hit(), announced as a push-out when one is allowed
+    safety,     ///< nothing pots: safe_hit(), announced as a push-out when one is allowed;
+                ///< the safety planner's: plan_safety()'s strike (success_probability: its value)
   };
   Action action;
   Kind kind = Kind::safety;

@@ -55,17 +55,15 @@ void BM_GhostBallVsGhostBall(benchmark::State& st) {
 }
 BENCHMARK(BM_GhostBallVsGhostBall)->DenseRange(0, 3)->Unit(benchmark::kMillisecond);
 
-// A mid-rack 9-ball table: the 3 to play, five balls left, the cue ball in
-// the middle (or in hand anywhere).
-GameState mid_rack(bool in_hand) {
+// A 9-ball table in play with these balls (the cue ball, id 0, left out
+// when in hand anywhere), tournament noise, `on` the ball on.
+GameState nine_ball_table(const std::vector<std::pair<int, Vec2>>& balls, int on, bool in_hand) {
   GameConfig config = default_config(GameKind::nine_ball);
   config.noise = tournament_noise();
   GameState s = new_game(config);
   s.phase = GamePhase::play;
   s.ball_in_hand.reset();
   s.table.balls.clear();
-  const std::vector<std::pair<int, Vec2>> balls{
-      {0, {1.1, 0.6}}, {3, {1.7, 0.35}}, {4, {2.2, 1.0}}, {6, {0.6, 0.9}}, {7, {1.4, 1.1}}, {9, {2.3, 0.4}}};
   for (const auto& [id, p] : balls) {
     if (in_hand && id == 0) continue;
     SimulationBall b;
@@ -74,28 +72,25 @@ GameState mid_rack(bool in_hand) {
     b.state.position = p;
     s.table.balls.push_back(b);
   }
-  s.on = {3};
+  s.on = {on};
   if (in_hand) s.ball_in_hand = PlacementRegion{};
   return s;
+}
+
+// A mid-rack 9-ball table: the 3 to play, five balls left, the cue ball in
+// the middle (or in hand anywhere).
+GameState mid_rack(bool in_hand) {
+  return nine_ball_table({{0, {1.1, 0.6}}, {3, {1.7, 0.35}}, {4, {2.2, 1.0}}, {6, {0.6, 0.9}}, {7, {1.4, 1.1}}, {9, {2.3, 0.4}}},
+                         3, in_hand);
 }
 
 // A 9-ball table where the 1 has no clear direct pot (tests/test_safety.cpp's
 // first hidden layout): the planner finds a bank of 0.4, the safety planner
 // searches a safety and plays it.
 GameState hidden() {
-  GameState s = mid_rack(false);
-  s.table.balls.clear();
-  const std::vector<std::pair<int, Vec2>> balls{{0, {1.403, 1.063}}, {1, {1.923, 0.503}}, {2, {2.441, 0.128}},
-                                                {3, {0.513, 0.972}}, {4, {1.138, 0.953}}, {9, {1.692, 0.080}}};
-  for (const auto& [id, p] : balls) {
-    SimulationBall b;
-    b.id = id;
-    b.name = id == 0 ? "cue" : std::to_string(id);
-    b.state.position = p;
-    s.table.balls.push_back(b);
-  }
-  s.on = {1};
-  return s;
+  return nine_ball_table({{0, {1.403, 1.063}}, {1, {1.923, 0.503}}, {2, {2.441, 0.128}}, {3, {0.513, 0.972}},
+                          {4, {1.138, 0.953}}, {9, {1.692, 0.080}}},
+                         1, false);
 }
 
 void decide_on(benchmark::State& st, const AgentOptions& agent, const GameState& s) {

@@ -149,6 +149,14 @@ TEST(Safety, AnEasyPotIsPlayedNotASafety) {
   EXPECT_EQ(c.action.strike, planner_choice(planner, s, 5).action.strike);
 }
 
+TEST(Safety, ChosenByName) {
+  EXPECT_EQ(agent_kind_from_string("safety_planner"), AgentKind::safety_planner);
+  EXPECT_STREQ(to_string(AgentKind::safety_planner), "safety_planner");
+  EXPECT_NE(agent_kind_names().find("safety_planner"), std::string::npos);
+  const GameState s = ringed();
+  EXPECT_EQ(choose_action(cheap(), s, 3).strike, safety_planner_action(cheap(), s, 3).strike);
+}
+
 TEST(Safety, EveryActionIsLegalInRandomGamesOfEveryPocketDiscipline) {
   // The random agent walks a game of each discipline through the break,
   // fouls, ball in hand, push-outs, calls, nominations and decisions; in

@@ -423,7 +423,7 @@ Command add_game_command(CLI::App& app) {
   p->add_option("--seed", pf->seed, "Seed of the first game (rack, agents, noise)")->capture_default_str();
   p->add_option("--noise", pf->noise, "Execution noise of every shot, also what the agents plan under: tournament, none")
       ->capture_default_str();
-  p->add_option("--simulations", pf->simulations, "Engine runs an agent may spend on a decision (planner, carom_search)");
+  p->add_option("--simulations", pf->simulations, "Engine runs an agent may spend on a decision (planner, carom_search, safety_planner)");
   p->add_option("--record", pf->record, "Write the game record here (game replay re-plays it)");
   p->add_option("--html", pf->html, "Write the first game as a self-contained HTML viewer page (every shot, its ruling) to this file");
   p->add_flag("--json", pf->json, "Print one JSON object: the games and the totals");

@@ -349,7 +349,7 @@ void bind_games(py::module_& parent) {
       },
       "state"_a, "agent"_a = "random", "seed"_a = 0, "simulations"_a = 2000, "noise"_a = py::none(),
       "The agent's action for the player to act (always legal). agent: 'random', 'ghost_ball',\n"
-      "'planner' or 'carom_search'; noise: what the agent plans under (default: the game's).");
+      "'planner', 'carom_search' or 'safety_planner'; noise: what the agent plans under (default: the game's).");
 
   // ---------------------------------------------------------------- records
   py::class_<GameRecord> record_class(m, "GameRecord",

@@ -16,7 +16,8 @@
 namespace cueball {
 
 namespace {
-constexpr std::array kAgentKinds{AgentKind::random, AgentKind::ghost_ball, AgentKind::planner, AgentKind::carom_search};
+constexpr std::array kAgentKinds{AgentKind::random, AgentKind::ghost_ball, AgentKind::planner, AgentKind::carom_search,
+                                 AgentKind::safety_planner};
 }  // namespace
 
 const char* to_string(AgentKind kind) {
@@ -25,6 +26,7 @@ const char* to_string(AgentKind kind) {
     case AgentKind::ghost_ball: return "ghost_ball";
     case AgentKind::planner: return "planner";
     case AgentKind::carom_search: return "carom_search";
+    case AgentKind::safety_planner: return "safety_planner";
   }
   return "?";
 }
@@ -57,6 +59,7 @@ Action choose_action(const AgentOptions& options, const GameState& state, std::u
     case AgentKind::ghost_ball: return ghost_ball_action(state, seed);
     case AgentKind::planner: return planner_action(options, state, seed);
     case AgentKind::carom_search: return carom_search_action(options, state, seed);
+    case AgentKind::safety_planner: return safety_planner_action(options, state, seed);
   }
   throw InvalidArgument("kind", "unknown agent; allowed: " + agent_kind_names());
 }

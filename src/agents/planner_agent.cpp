@@ -57,11 +57,6 @@ struct Pot {
   std::string detail;
 };
 
-CueStrikeNoise planning_noise(const AgentOptions& options, const GameState& state) {
-  if (options.noise) return *options.noise;
-  return no_noise(state.config.noise) ? tournament_noise() : state.config.noise;
-}
-
 PlanRequest plan_request(const Turn& t, const std::vector<int>& targets, const std::vector<ShotKind>& kinds,
                          std::uint64_t seed) {
   PlanRequest q;
@@ -272,6 +267,11 @@ void safety(Turn& t) {
 }
 
 }  // namespace
+
+CueStrikeNoise planning_noise(const AgentOptions& options, const GameState& state) {
+  if (options.noise) return *options.noise;
+  return no_noise(state.config.noise) ? tournament_noise() : state.config.noise;
+}
 
 std::vector<std::vector<int>> next_targets(const GameState& state, int target) {
   std::vector<int> ids = object_balls(state);

@@ -13,7 +13,10 @@
 //                 calls, nominations, a kick when nothing pots, and the
 //                 decisions by a documented simple policy;
 //   carom_search  three-cushion: searches strikes with the engine for a
-//                 point (a simple search; the strong one is issue 27's).
+//                 point (a simple search; the strong one is issue 27's);
+//   safety_planner the planner, and when no pot is likely enough a safety:
+//                 the legal strike that leaves the opponent the least
+//                 (safety.cpp; its decisions by the same estimate).
 //
 // What the pool agents share (agent.cpp), so that every pocket game is
 // played through legal_actions() alone:
@@ -31,6 +34,7 @@
 // the decision to carom_search_action().
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -42,9 +46,9 @@
 
 namespace cueball {
 
-enum class AgentKind : char { random, ghost_ball, planner, carom_search };
+enum class AgentKind : char { random, ghost_ball, planner, carom_search, safety_planner };
 
-/// "random", "ghost_ball", "planner", "carom_search".
+/// "random", "ghost_ball", "planner", "carom_search", "safety_planner".
 const char* to_string(AgentKind kind);
 std::optional<AgentKind> agent_kind_from_string(std::string_view name);
 std::string agent_kind_names();
@@ -83,6 +87,7 @@ Action random_action(const GameState& state, std::uint64_t seed);
 Action ghost_ball_action(const GameState& state, std::uint64_t seed);
 Action planner_action(const AgentOptions& options, const GameState& state, std::uint64_t seed);
 Action carom_search_action(const AgentOptions& options, const GameState& state, std::uint64_t seed);
+Action safety_planner_action(const AgentOptions& options, const GameState& state, std::uint64_t seed);
 
 /// What carom_search found, for tests and benchmarks: its action, the
 /// engine runs it spent (never more than options.simulations), whether the
@@ -191,7 +196,8 @@ struct PlannerChoice {
     break_shot, ///< break_action()
     pot,        ///< a planned pot of options.kinds (planned: the plan)
     fallback,   ///< a planned pot of options.fallback_kinds (a kick by default)
-    safety,     ///< nothing pots: safe_hit(), announced as a push-out when one is allowed
+    safety,     ///< nothing pots: safe_hit(), announced as a push-out when one is allowed;
+                ///< the safety planner's: plan_safety()'s strike (success_probability: its value)
   };
   Action action;
   Kind kind = Kind::safety;
@@ -217,6 +223,10 @@ struct PlannerChoice {
 /// Only balls on the table other than the cue ball(s); empty sets dropped.
 std::vector<std::vector<int>> next_targets(const GameState& state, int target);
 
+/// The noise the planner agents plan under (AgentOptions::noise): the
+/// options', else the game's, else tournament_noise() when the game has none.
+CueStrikeNoise planning_noise(const AgentOptions& options, const GameState& state);
+
 /// The planner agent's choice (planner_action() is its action): the break;
 /// a decision by decision_by_policy() with the table good when the best
 /// pot planned from it (plan_shot, options.simulations, the cue ball placed
@@ -239,5 +249,98 @@ PlannerChoice planner_choice(const AgentOptions& options, const GameState& state
 /// The same for given legal actions (as ghost_ball_action()'s overload).
 PlannerChoice planner_choice(const AgentOptions& options, const GameState& state, const LegalActions& legal,
                              std::uint64_t seed);
+
+// ------------------------------------------------------------------ safety play (safety.cpp)
+//
+// A safety (the players' word; WPA 6.3's legal shot that does not try to
+// pot): a strike that contacts a ball on first and then sends a ball to a
+// rail or into a pocket, chosen to leave the opponent the worst chance.
+//
+// The opponent's chance is estimated by a quick search, no engine run:
+// pot_chance(), the best ghost-ball pot of the balls on from the table (with
+// ball in hand, from ghost_ball_in_hand_spot()), turned into a probability
+// by the ghost-ball aim tolerance: a cue-ball aim error d(theta) moves the
+// contact point |CG| d(theta) sideways, which turns the object ball by
+// |CG| d(theta) / (2R cos(cut)), which must stay within w / |OP| of the
+// pocket's centre line (w = kPotTolerance): the aim tolerance is
+// 2R w cos(cut) / (|CG| |OP|) = 2R w score (GhostBallShot::score), and
+// under Gaussian aim noise sigma the pot succeeds with probability
+// erf(tolerance / (sigma sqrt 2)). Direct pots only (banks, kicks and
+// combinations are left out: an opponent's estimate errs on the hopeful
+// side for us).
+
+/// The pocket's half-width for a ball's centre, m (a 9-ft table's corner
+/// mouth of 4.5 in less a ball, halved, rounded down).
+inline constexpr double kPotTolerance = 0.025;
+
+/// The chance that the player to act in `state` pots a ball on from the
+/// table (decisions due are taken as if the player shoots from the table as
+/// it stands; the cue ball in hand placed by ghost_ball_in_hand_spot()),
+/// under the aim noise of `noise` (header comment). 0 when no clear direct
+/// pot exists; 1 when the noise's aim sigma is 0 and one exists.
+double pot_chance(const GameState& state, const CueStrikeNoise& noise);
+
+/// The shooter's value after a shot that led to `next` (`shooter` is the
+/// player who played it): 1 or 0 when the game is over with a winner (1/2
+/// truncated); else q = pot_chance(next) for the player to act, or, when a
+/// decision is due, max(q, 1 - q) (they play or pass, whichever is better
+/// for them); that, when the shooter acts next, else 1 minus it.
+double value_after_shot(const GameState& next, int shooter, const CueStrikeNoise& noise);
+
+/// What a whole safety search found.
+struct SafetyPlan {
+  Action action;                ///< legal: no foul noise-free (a push-out: announced)
+  /// Mean over kSafetyRepeats noisy repeats of value_after_shot(): 1 - the
+  /// opponent's pot_chance() when the opponent shoots next (after a foul
+  /// from ball in hand), the shooter's own when the shot keeps the table,
+  /// after a push-out 1 - max(q, 1 - q).
+  double value = 0.0;
+  double noise_free_value = 0.0;  ///< the same noise-free
+  int candidates = 0;           ///< strikes proposed
+  int legal = 0;                ///< of them, legal noise-free
+  int screened = 0;             ///< of them, played out under noise
+  long long simulations = 0;    ///< engine runs (one per play())
+  std::string detail;           ///< the strike and its estimates, one line
+};
+
+/// Strikes proposed: for each of the kSafetyTargets nearest balls on, the
+/// cue ball aimed to hit it at each of kSafetyCuts (the contact's offset
+/// across the line of centres, ball diameters: 0 full ball, +-1 the
+/// thinnest) and kSafetySpeeds, centre ball, the lowest clear elevation;
+/// and safe_hit(). A push-out variant of each when one may be announced.
+inline constexpr int kSafetyTargets = 3;
+inline constexpr std::array<double, 7> kSafetyCuts{0.0, 0.4, -0.4, 0.75, -0.75, 0.95, -0.95};
+inline constexpr std::array<double, 4> kSafetySpeeds{0.8, 1.5, 2.5, 4.0};
+/// The best noise-free candidates played out under noise, and how often each.
+inline constexpr int kSafetyScreened = 10;
+inline constexpr int kSafetyRepeats = 8;
+
+/// The safety search (safety.cpp), a driver over named steps: propose the
+/// strikes; play each once noise-free through play() (the rules judge it)
+/// and drop those that foul; rank the legal ones by their noise-free value;
+/// play the kSafetyScreened best kSafetyRepeats times each under `noise`
+/// (the game's noise model, common draws: the repeats of every candidate
+/// use the seeds stream_seed(seed, 3 + k)); choose the best mean value
+/// (the first of equal ones). `place`: the cue ball's spot when in hand
+/// (required then). None when no candidate is legal.
+std::optional<SafetyPlan> plan_safety(const GameState& state, const LegalActions& legal, std::optional<Vec2> place,
+                                      const CueStrikeNoise& noise, std::uint64_t seed);
+
+/// The safety planner's choice (safety_planner_action() is its action):
+///   - the break, three-cushion: the planner's;
+///   - a shot: the planner's pot (planner_choice) when it succeeds at least
+///     kSafetyThreshold; else plan_safety() (from the planner's spot when
+///     in hand), and the pot when its success probability is at least the
+///     safety's value (a pot keeps the table with probability p, a safety
+///     wins it back with about its value); else the safety (Kind::safety,
+///     its value in success_probability);
+///   - a decision: decision_by_policy() with the table good when the
+///     player's best from it, the larger of the planner's pot (as the
+///     planner decides) and the value of plan_safety() from it (searched
+///     when that pot is below 1/2 and the cue ball is not in hand), is at
+///     least 1/2: the opponent would face the same table, so the player
+///     plays what favours the shooter and passes what does not.
+inline constexpr double kSafetyThreshold = 0.7;
+PlannerChoice safety_planner_choice(const AgentOptions& options, const GameState& state, std::uint64_t seed);
 
 }  // namespace cueball

@@ -1,0 +1,187 @@
+// Safety play (src/agents/safety.cpp): the opponent's chance estimate
+// (pot_chance) against its closed form; where every pot is blocked and the
+// plain hit leaves an easy shot, the safety planner plays a legal safety
+// that leaves the opponent less, by the same estimate; its choice is
+// deterministic for a seed; and its action is legal in every state of
+// random games of each pocket discipline. Small budgets: the file runs in
+// seconds in Release.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+
+#include "cueball/agents/agent.hpp"
+#include "cueball/core/random.hpp"
+#include "game_actions.hpp"
+
+namespace cueball {
+namespace {
+
+AgentOptions cheap() {
+  AgentOptions o;
+  o.kind = AgentKind::safety_planner;
+  o.simulations = kMinPlanSimulations;
+  return o;
+}
+
+GameState in_play(const std::vector<std::pair<int, Vec2>>& balls) {
+  return test::rotation_in_play(GameKind::nine_ball, balls);
+}
+
+GameState noise_free(GameState s) {
+  s.config.noise = CueStrikeNoise{};
+  return s;
+}
+
+// The 1 in a ring of five balls (2..6, 2.5 radii from it, every 60 deg but
+// towards the cue ball): every path of the 1 to a pocket is blocked; the
+// cue ball's path to it is clear (the planner agent's test layout).
+GameState ringed() {
+  GameState s = new_game(default_config(GameKind::nine_ball));
+  const double R = s.table.table.ball.radius;
+  const Vec2 one{1.6, s.table.table.width / 2};
+  std::vector<std::pair<int, Vec2>> balls{{0, {1.0, one.y}}, {1, one}};
+  int id = 2;
+  for (const double deg : {0.0, 60.0, -60.0, 120.0, -120.0})
+    balls.emplace_back(id++, one + 2.5 * R * Vec2{std::cos(deg * std::numbers::pi / 180), std::sin(deg * std::numbers::pi / 180)});
+  return in_play(balls);
+}
+
+TEST(Safety, PotChanceIsTheGhostBallAimToleranceUnderTheAimNoise) {
+  // The 1 on the diagonal of the bottom-left corner pocket, the cue ball
+  // behind it on that line: a straight-in, cut 0, so the score is
+  // 1 / (|CG| |OP|) and the chance erf(2 R w score / (sigma sqrt 2)).
+  const GameState s = in_play({{0, {0.9, 0.9}}, {1, {0.45, 0.45}}, {9, {2.2, 0.3}}});
+  const std::optional<GhostBallShot> g = ghost_ball_shot(s.table, 0, {1});
+  ASSERT_TRUE(g);
+  const double R = s.table.table.ball.radius;
+  const Vec2 O{0.45, 0.45}, C{0.9, 0.9};
+  const Vec2 P = s.table.table.pockets[static_cast<std::size_t>(g->pocket)].centre;
+  const double score = 1.0 / ((norm(O - C) - 2.0 * R) * norm(P - O));
+  EXPECT_NEAR(g->score, score, 1e-9 * score);
+  const CueStrikeNoise noise = tournament_noise();
+  EXPECT_NEAR(pot_chance(s, noise), std::erf(2.0 * R * kPotTolerance * score / (noise.aim * std::numbers::sqrt2)), 1e-12);
+  // Twice the aim noise: a lower chance; no aim noise: certain.
+  CueStrikeNoise wide = noise;
+  wide.aim *= 2.0;
+  EXPECT_LT(pot_chance(s, wide), pot_chance(s, noise));
+  EXPECT_EQ(pot_chance(s, CueStrikeNoise{}), 1.0);
+  // Every pot blocked: none.
+  EXPECT_EQ(pot_chance(ringed(), noise), 0.0);
+  // Ball in hand: placed straight in behind the ghost ball, an easier shot than from a distance.
+  GameState far = in_play({{0, {2.3, 1.0}}, {1, {0.45, 0.45}}, {9, {2.2, 0.3}}});
+  const double from_far = pot_chance(far, noise);
+  far.ball_in_hand = PlacementRegion{};
+  EXPECT_GT(pot_chance(far, noise), from_far);
+}
+
+// Seeded layouts where the shooter has no clear direct pot of the 1 and the
+// plain hit at it (safe_hit) leaves the opponent one (found by drawing
+// random 9-ball layouts of five balls).
+const std::vector<std::vector<std::pair<int, Vec2>>> kHidden{
+    {{0, {1.403, 1.063}}, {1, {1.923, 0.503}}, {2, {2.441, 0.128}}, {3, {0.513, 0.972}}, {4, {1.138, 0.953}}, {9, {1.692, 0.080}}},
+    {{0, {1.900, 0.297}}, {1, {0.113, 0.690}}, {2, {0.420, 0.869}}, {3, {2.409, 1.144}}, {4, {1.333, 0.349}}, {9, {0.742, 0.952}}},
+    {{0, {2.186, 0.564}}, {1, {2.144, 1.190}}, {2, {2.107, 0.404}}, {3, {0.050, 1.019}}, {4, {0.476, 0.297}}, {9, {1.131, 1.140}}},
+};
+
+TEST(Safety, BlockedPotsGiveALegalSafetyThatLeavesTheOpponentLessThanThePlainHit) {
+  const CueStrikeNoise noise = tournament_noise();
+  for (std::size_t k = 0; k < kHidden.size(); ++k) {
+    SCOPED_TRACE("layout " + std::to_string(k));
+    const GameState s = in_play(kHidden[k]);
+    EXPECT_EQ(pot_chance(s, noise), 0.0);
+    // The plain hit (the planner agent's when nothing pots) leaves an easy shot.
+    int ball = -1;
+    const std::optional<ShotAction> plain = safe_hit(s.table, 0, {1}, ball);
+    ASSERT_TRUE(plain);
+    Action naive;
+    naive.strike = *plain;
+    const GameStep after_naive = play(noise_free(s), naive, 0);
+    ASSERT_TRUE(after_naive.ruling.turn_over);
+    const double left_by_naive = pot_chance(after_naive.next, noise);
+    EXPECT_GT(left_by_naive, 0.5);
+
+    const PlannerChoice c = safety_planner_choice(cheap(), s, 4);
+    EXPECT_EQ(c.kind, PlannerChoice::Kind::safety) << c.detail;
+    EXPECT_FALSE(c.action.push_out);
+    const GameStep step = play(noise_free(s), c.action, 0);
+    EXPECT_FALSE(step.ruling.foul) << step.ruling.reason;  // contact with the 1, then a rail (WPA 6.3)
+    EXPECT_EQ(step.facts.first_contact, 1);
+    EXPECT_EQ(step.next.to_shoot, 1);
+    const double left = pot_chance(step.next, noise);
+    EXPECT_LT(left, left_by_naive) << c.detail;
+    // Under noise too, on average over its repeats, the safety leaves less.
+    const std::optional<SafetyPlan> plan = plan_safety(s, legal_actions(s), std::nullopt, noise, 9);
+    ASSERT_TRUE(plan);
+    double naive_value = 0.0;
+    GameState noisy = s;
+    noisy.config.noise = noise;
+    for (int r = 0; r < kSafetyRepeats; ++r)
+      naive_value += value_after_shot(play(noisy, naive, stream_seed(9, static_cast<std::uint64_t>(r))).next, 0, noise);
+    EXPECT_GT(plan->value, naive_value / kSafetyRepeats) << plan->detail;
+    EXPECT_GT(plan->legal, 0);
+    EXPECT_LE(plan->screened, kSafetyScreened);
+    EXPECT_EQ(plan->simulations, plan->candidates + plan->screened * kSafetyRepeats);
+  }
+}
+
+TEST(Safety, DeterministicForASeed) {
+  GameState s = ringed();
+  s.push_out_available = true;
+  for (const GameState& state : {ringed(), s}) {
+    const PlannerChoice a = safety_planner_choice(cheap(), state, 17);
+    const PlannerChoice b = safety_planner_choice(cheap(), state, 17);
+    EXPECT_EQ(a.action.strike, b.action.strike);
+    EXPECT_EQ(a.action.push_out, b.action.push_out);
+    EXPECT_EQ(a.success_probability, b.success_probability);
+    EXPECT_EQ(a.detail, b.detail);
+    EXPECT_NO_THROW((void)play(state, a.action, 17));
+  }
+}
+
+TEST(Safety, AnEasyPotIsPlayedNotASafety) {
+  const GameState s = in_play({{0, {0.62, 0.62}}, {1, {0.45, 0.45}}, {2, {1.8, 0.9}}, {9, {2.2, 0.3}}});
+  const PlannerChoice c = safety_planner_choice(cheap(), s, 5);
+  EXPECT_EQ(c.kind, PlannerChoice::Kind::pot) << c.detail;
+  EXPECT_GE(c.success_probability, kSafetyThreshold);
+  AgentOptions planner = cheap();
+  planner.kind = AgentKind::planner;
+  EXPECT_EQ(c.action.strike, planner_choice(planner, s, 5).action.strike);
+}
+
+TEST(Safety, ChosenByName) {
+  EXPECT_EQ(agent_kind_from_string("safety_planner"), AgentKind::safety_planner);
+  EXPECT_STREQ(to_string(AgentKind::safety_planner), "safety_planner");
+  EXPECT_NE(agent_kind_names().find("safety_planner"), std::string::npos);
+  const GameState s = ringed();
+  EXPECT_EQ(choose_action(cheap(), s, 3).strike, safety_planner_action(cheap(), s, 3).strike);
+}
+
+TEST(Safety, EveryActionIsLegalInRandomGamesOfEveryPocketDiscipline) {
+  // The random agent walks a game of each discipline through the break,
+  // fouls, ball in hand, push-outs, calls, nominations and decisions; in
+  // each of its first 12 states the safety planner's action must pass
+  // validate_action and play() (the planner's plans are most of the time).
+  AgentOptions random;
+  random.kind = AgentKind::random;
+  int asked = 0, safeties = 0;
+  for (const GameKind kind : {GameKind::nine_ball, GameKind::eight_ball, GameKind::ten_ball, GameKind::snooker}) {
+    GameConfig config = default_config(kind);
+    config.noise = tournament_noise();
+    GameState s = new_game(config, 1);
+    for (int k = 0; !s.over && k < 12; ++k) {
+      const std::uint64_t seed = stream_seed(1, static_cast<std::uint64_t>(k));
+      const PlannerChoice c = safety_planner_choice(cheap(), s, seed);
+      EXPECT_NO_THROW(validate_action(s, c.action)) << to_string(kind) << " shot " << k << ": " << c.detail;
+      EXPECT_NO_THROW((void)play(s, c.action, seed)) << c.detail;
+      ++asked;
+      safeties += c.kind == PlannerChoice::Kind::safety ? 1 : 0;
+      s = play(s, choose_action(random, s, seed), seed).next;
+    }
+  }
+  EXPECT_GT(asked, 25);
+  EXPECT_GT(safeties, 0);
+}
+
+}  // namespace
+}  // namespace cueball

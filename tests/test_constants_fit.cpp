@@ -94,6 +94,50 @@ TEST(Calibrate, HeldOutShotsAreDrawnBySeedAndOnlyEvaluated) {
   for (std::size_t i = 0; i < b.shots.size(); ++i) EXPECT_EQ(b.shots[i].held_out, c.shots[i].held_out);
 }
 
+// The bootstrap over shots: seeded (the same seed, the same spread), the
+// fitted value inside the replicates' 5-95 % band widened by one standard
+// deviation, and narrow on shots made without model error (mu_r within
+// 10 %, restitution within 0.02). Its start is the truth, so the spread is
+// that of the shots' noise and of the fits' local minima.
+TEST(ConstantsFit, BootstrapSpreadIsSeededAndNarrowOnConsistentShots) {
+  const FitModel truth = truth_model();
+  const TrackedShots shots = synthetic_match(truth);
+  std::vector<PreparedShot> prepared;
+  std::vector<StrikeFit> strikes;
+  for (std::size_t i = 0; i < shots.shots.size(); ++i) {
+    prepared.push_back(prepare_shot(shots.shots[i], shots.table, "shots"));
+    StrikeFitOptions so;
+    so.starts = 8;
+    strikes.push_back(fit_strike(prepared.back(), truth, so));
+  }
+  ConstantsFit fit;
+  fit.model = truth;
+  fit.strikes = strikes;
+  BootstrapOptions o;
+  o.replicates = 4;
+  o.max_evaluations = 12;
+  o.seed = 7;
+  const std::vector<ConstantSpread> a = bootstrap_constants(prepared, fit, o);
+  const std::vector<ConstantSpread> b = bootstrap_constants(prepared, fit, o);
+  ASSERT_EQ(a.size(), 5u);
+  for (std::size_t k = 0; k < a.size(); ++k) {
+    EXPECT_EQ(a[k].std_dev, b[k].std_dev) << a[k].name;
+    EXPECT_EQ(a[k].p05, b[k].p05) << a[k].name;
+    EXPECT_LE(a[k].p05, a[k].p95) << a[k].name;
+    EXPECT_GE(a[k].value, a[k].p05 - a[k].std_dev - 1e-12) << a[k].name;
+    EXPECT_LE(a[k].value, a[k].p95 + a[k].std_dev + 1e-12) << a[k].name;
+  }
+  EXPECT_EQ(a[1].name, "mu_r");
+  EXPECT_DOUBLE_EQ(a[1].value, 0.008);
+  EXPECT_LT(a[1].std_dev, 0.1 * 0.008);
+  EXPECT_EQ(a[3].name, "cushion_restitution");
+  EXPECT_LT(a[3].std_dev, 0.02);
+  o.replicates = 0;
+  EXPECT_TRUE(bootstrap_constants(prepared, fit, o).empty());
+  o.replicates = 1001;
+  EXPECT_THROW(bootstrap_constants(prepared, fit, o), InvalidArgument);
+}
+
 TEST(Calibrate, RejectsBadOptions) {
   const TrackedShots shots = synthetic_match(truth_model());
   CalibrationOptions o;
@@ -104,6 +148,12 @@ TEST(Calibrate, RejectsBadOptions) {
   EXPECT_THROW(calibrate(shots, test::carom_model(), o), InvalidArgument);
   o = {};
   o.constants.max_evaluations = 0;
+  EXPECT_THROW(calibrate(shots, test::carom_model(), o), InvalidArgument);
+  o = {};
+  o.constants.restarts = 17;
+  EXPECT_THROW(calibrate(shots, test::carom_model(), o), InvalidArgument);
+  o = {};
+  o.bootstrap.replicates = -1;
   EXPECT_THROW(calibrate(shots, test::carom_model(), o), InvalidArgument);
 }
 

@@ -144,7 +144,7 @@ void run_calibrate(const CalibrateFlags& f, std::ostream& out, std::ostream& err
   add_constant("cushion_restitution", r.model.settings.cushion.restitution, "");
   add_constant("cushion_friction", r.model.settings.cushion.friction, "");
   report.add_count("evaluations", r.constant_evaluations, "of the simplex (stage 1, restarts included)");
-  report.add_count("restarts_gained", r.constant_restarts, "restarts of the simplex that found a better point");
+  report.add_count("restart_won", r.constant_restarts, "1: a restart of the simplex found the better point");
   report.add_count("iterations", r.constant_iterations, "of the joint fit (stage 2)");
   if (r.bootstrap_replicates > 0) report.add_count("bootstrap", r.bootstrap_replicates, "replicates behind the +- (std. dev.)");
   report.end_section();

@@ -491,8 +491,12 @@ def calibrate(
     starts: int = 32,
     max_evaluations: int = 300,
     max_iterations: int = 20,
+    restarts: int = 2,
+    bootstrap: int = 0,
+    html: bool = False,
 ) -> dict[str, Any]:
-    """Fits strikes and the table's constants to tracked shots (JSON text); the report as a dict."""
+    """Fits strikes and the table's constants to tracked shots (JSON text); the report as a dict
+    (with html=True, the HTML report's page in its "html")."""
 
 # ------------------------------------------------------------------ ball-ball collision
 

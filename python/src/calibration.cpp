@@ -73,7 +73,7 @@ void bind_calibration(py::module_& m) {
       "a tracked-shots document; constants the JSON text of a scenario whose parameters and cushion to start\n"
       "from (with evaluate=True: to use, fitting strikes only). Returns the report as `cueball calibrate\n"
       "--json` prints it (a dict: constants, uncertainty, summary, shots). bootstrap=N: the constants'\n"
-      "spread over N bootstrap replicates of the training shots; html=True: the HTML report's page in the dict's "html".\n"
+      "spread over N bootstrap replicates of the training shots; html=True: the HTML report's page in the dict's \"html\".\n"
       "Releases the GIL.");
 }
 

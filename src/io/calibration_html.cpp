@@ -16,7 +16,7 @@ namespace {
 // Colours of the balls in layout order (the cue ball first).
 constexpr const char* kBallColours[] = {"#1f5fbf", "#c0392b", "#c79a00", "#2e8b57", "#8e44ad", "#d35400"};
 // Pixels per metre of the shot drawings and the margin around the table.
-constexpr double kScale = 220.0;
+constexpr double kScale = 150.0;
 constexpr double kMargin = 8.0;
 
 std::string fixed(double v, int digits) {
@@ -112,7 +112,7 @@ void distribution_section(std::string& h, const CalibrationReport& r) {
   }
   int tallest = 1;
   for (std::size_t k = 0; k < bins; ++k) tallest = std::max({tallest, training[k], held[k]});
-  const double width = 900.0, height = 180.0, left = 30.0, bottom = 24.0;
+  const double width = 900.0, height = 180.0, left = 30.0, bottom = 32.0;
   const double bar = (width - left) / static_cast<double>(bins);
   h += "<h2>Distribution of the cue-ball RMSE</h2>\n<svg id=\"distribution\" xmlns=\"http://www.w3.org/2000/svg\" width=\"" +
        fixed(width, 0) + "\" height=\"" + fixed(height + bottom, 0) + "\" font-size=\"10\">\n";
@@ -133,7 +133,7 @@ void distribution_section(std::string& h, const CalibrationReport& r) {
       h += "<text x=\"" + fixed(x, 1) + "\" y=\"" + fixed(height + 14, 0) + "\">" + fixed(100 * bin * static_cast<double>(k), 0) +
            "</text>\n";
   }
-  h += "<text x=\"" + fixed(width - 4, 0) + "\" y=\"" + fixed(height + 14, 0) + "\" text-anchor=\"end\">cm</text>\n";
+  h += "<text x=\"" + fixed(width - 4, 0) + "\" y=\"" + fixed(height + 28, 0) + "\" text-anchor=\"end\">cue-ball RMSE, cm</text>\n";
   h += "<text x=\"0\" y=\"10\">" + std::to_string(tallest) + "</text><line x1=\"" + fixed(left, 0) + "\" y1=\"" +
        fixed(height, 0) + "\" x2=\"" + fixed(width, 0) + "\" y2=\"" + fixed(height, 0) + "\" stroke=\"#444\"/>\n</svg>\n";
   h += "<p class=\"legend\"><span style=\"color:#7f8c8d\">&#9632; training shots</span><span style=\"color:#1f5fbf\">&#9632; "
@@ -160,7 +160,7 @@ void shot_figure(std::string& h, const ShotDrawing& d, const Table& table) {
            colour(j) + "\" stroke-width=\"1.5\"/>\n";
     if (j < d.measured.size() && !d.measured[j].empty())
       h += "<polyline class=\"measured\" points=\"" + points(d.measured[j], table.width) + "\" fill=\"none\" stroke=\"" +
-           colour(j) + "\" stroke-width=\"1\" stroke-dasharray=\"1 3\" stroke-linecap=\"round\" opacity=\"0.9\"/>\n";
+           colour(j) + "\" stroke-width=\"1.5\" stroke-dasharray=\"2 3\" stroke-linecap=\"round\" opacity=\"0.9\"/>\n";
     if (j < d.measured.size() && !d.measured[j].empty())
       h += "<circle cx=\"" + fixed(kMargin + d.measured[j].front().x * kScale, 1) + "\" cy=\"" +
            fixed(kMargin + (table.width - d.measured[j].front().y) * kScale, 1) + "\" r=\"" +

@@ -62,6 +62,10 @@ TEST(ConstantsFit, RecoversTheCushionAndRollingConstants) {
   const auto& fitted = r.model.settings;
   RecordProperty("mu_s", std::to_string(fitted.parameters.cloth.sliding_friction));
   RecordProperty("mu_sp", std::to_string(fitted.parameters.cloth.spin_friction));
+  RecordProperty("mu_r", std::to_string(fitted.parameters.cloth.rolling_resistance));
+  RecordProperty("restitution", std::to_string(fitted.cushion.restitution));
+  RecordProperty("friction", std::to_string(fitted.cushion.friction));
+  RecordProperty("cue_rmse_median", std::to_string(r.training.cue_rmse_median));
   EXPECT_NEAR(fitted.parameters.cloth.rolling_resistance, 0.008, 0.15 * 0.008);
   EXPECT_NEAR(fitted.cushion.friction, 0.20, 0.05);
   EXPECT_NEAR(fitted.cushion.restitution, 0.95, 0.03);

@@ -84,6 +84,9 @@ def snooker_parameters() -> Parameters:
 def pool_parameters() -> Parameters:
     """WPA pool ball on a typical pool cloth (the default of every params=)."""
 
+def carom_parameters() -> Parameters:
+    """UMB carom ball on a heated carom cloth (fitted to a recorded three-cushion match)."""
+
 def preset_parameters(name: str) -> Parameters:
     """'snooker' or 'pool'; InvalidArgument otherwise."""
 

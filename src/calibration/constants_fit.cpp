@@ -403,7 +403,7 @@ std::size_t choose_candidate(OuterContext& c, const std::vector<Candidate>& cand
 // the valley where it trades against restitution (friction up and e down,
 // or the other way), by 0.05, 0.05, 0.1, 0.1, ...: a simplex that stopped on
 // one side of the truth (issue 29: friction 0.127 for 0.20) is started again
-// from the other. A restart is a simplex of its own whose strikes are first
+// from the other (a shift that leaves the model's range is halved). A restart is a simplex of its own whose strikes are first
 // fitted afresh under its start (refit_strikes): warm-started from the
 // incumbent's strikes, 5 LM iterations leave them tuned to the incumbent's
 // constants, so every other point looks worse than it is and the simplex
@@ -415,12 +415,17 @@ int restart_stage(OuterContext& c, int restarts) {
   const int budget = std::max(c.max_evaluations / 2, 1);
   std::vector<Candidate> candidates{{c.best_u, c.incumbent}};
   for (int k = 0; k < restarts; ++k) {
-    std::vector<double> u = candidates[0].u;
     const double sign = k % 2 == 0 ? 1.0 : -1.0;
-    const double shift = 0.05 * (1 + k / 2);
-    u[4] += sign * shift;
-    u[3] -= sign * 0.3 * shift;
-    const auto model = model_of(c.start, u);
+    std::vector<double> u;
+    std::optional<FitModel> model;
+    // Outside the model's range (Mathavan's friction is capped at tan theta):
+    // half the shift, three times at most.
+    for (double shift = 0.05 * (1 + k / 2), tries = 0; !model && tries < 4; shift /= 2, ++tries) {
+      u = candidates[0].u;
+      u[4] += sign * shift;
+      u[3] -= sign * 0.3 * shift;
+      model = model_of(c.start, u);
+    }
     if (!model) continue;
     OuterContext r{c.shots, c.start, c.options, budget, refit_strikes(c, *model), c.weights,
                    std::numeric_limits<double>::infinity(), u, 0};

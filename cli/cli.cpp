@@ -134,7 +134,7 @@ CueStrikeNoise with_sigma_flags(const SigmaFlags& f, CueStrikeNoise noise, doubl
 }
 
 void add_parameter_flags(CLI::App& app, ParameterFlags& flags) {
-  app.add_option("--preset", flags.preset, "Named parameter set: pool (WPA ball) or snooker (Mathavan 2010)")
+  app.add_option("--preset", flags.preset, "Named parameter set: pool (WPA ball), snooker (Mathavan 2010) or carom (heated cloth, fitted)")
       ->check(CLI::IsMember({"snooker", "pool"}))
       ->capture_default_str();
   const auto add = [&](const char* name, std::optional<double>& target, const ParameterRange& r) {

@@ -24,4 +24,6 @@ set(CUEBALL_LONG_NUMERICS
   BallCollision.MatchesADirectIntegrationOfCoulombFriction
   # The whole calibration of a synthetic match to 3 % (calibrate(), the
   # strike and constants fits: Calibrate.*, StrikeFit.*, CliCalibrate.*).
-  ConstantsFit.RecoversTheCushionAndRollingConstants)
+  ConstantsFit.RecoversTheCushionAndRollingConstants
+  # The same from a start on the far side of the valley, with restarts.
+  ConstantsFit.RestartsRecoverFromTheFarSideOfTheValley)

@@ -61,6 +61,65 @@ TEST(CliCalibrate, CalibratesAndWritesAScenarioFragment) {
   EXPECT_NE(ev.out.find("cue_rmse_median"), std::string::npos) << ev.out;
 }
 
+// The synthetic shots as CSV files, one a shot (ball,t,x,y).
+std::vector<std::string> synthetic_csv(const TempDir& dir) {
+  const Json j = Json::parse(synthetic_file());
+  std::vector<std::string> files;
+  for (const Json& shot : j["shots"]) {
+    std::string text = "ball,t,x,y\n";
+    for (const auto& [name, b] : shot["balls"].items())
+      for (std::size_t k = 0; k < b["t"].size(); ++k)
+        text += name + "," + b["t"][k].dump() + "," + b["x"][k].dump() + "," + b["y"][k].dump() + "\n";
+    files.push_back(dir.write(shot["shot_id"].dump() + ".csv", text));
+  }
+  return files;
+}
+
+TEST(CliCalibrate, ReadsCsvShotsAndWritesTheHtmlReport) {
+  TempDir dir;
+  const std::vector<std::string> csv = synthetic_csv(dir);
+  const std::string html = dir.path("report.html");
+  std::vector<std::string> args{"calibrate"};
+  args.insert(args.end(), csv.begin(), csv.end());
+  for (const char* a : {"--table", "carom_10ft", "--held-out", "0.34", "--max-evaluations", "6", "--max-iterations", "0",
+                        "--restarts", "1", "--bootstrap", "2", "--bootstrap-evaluations", "4", "--starts", "4", "--json",
+                        "--html"})
+    args.emplace_back(a);
+  args.push_back(html);
+  const auto r = run_cli(args);
+  ASSERT_EQ(r.status, 0) << r.err;
+  const Json j = Json::parse(r.out);
+  ASSERT_EQ(j["shots"].size(), 3u);
+  EXPECT_EQ(j["shots"][0]["id"], "32");  // the file's name
+  EXPECT_EQ(j["uncertainty"]["replicates"], 2);
+  EXPECT_TRUE(j["uncertainty"]["constants"]["mu_r"]["std_dev"].is_number());
+  EXPECT_LE(j["uncertainty"]["constants"]["mu_r"]["p05"].get<double>(), j["uncertainty"]["constants"]["mu_r"]["p95"].get<double>());
+  const std::string page = test::read_text(html);
+  EXPECT_NE(page.find("<figure"), std::string::npos);
+  EXPECT_NE(page.find("id=\"shot-33\""), std::string::npos);
+  EXPECT_NE(page.find("std. dev."), std::string::npos);
+  // The text report shows the spread beside each constant.
+  args = {"calibrate", csv[0], csv[1], "--table", "carom_10ft", "--held-out", "0", "--max-evaluations", "3",
+          "--max-iterations", "0", "--restarts", "0", "--bootstrap", "2", "--bootstrap-evaluations", "3", "--starts", "2"};
+  const auto text = run_cli(args);
+  ASSERT_EQ(text.status, 0) << text.err;
+  EXPECT_NE(text.out.find("+- "), std::string::npos) << text.out;
+  EXPECT_NE(text.out.find("5-95 %"), std::string::npos) << text.out;
+}
+
+TEST(CliCalibrate, BadCsvInputIsOneLineNamingFileRowAndColumn) {
+  TempDir dir;
+  const std::vector<std::string> csv = synthetic_csv(dir);
+  expect_usage_error({"calibrate", csv[0]}, "--table is needed with CSV shots");
+  expect_usage_error({"calibrate", csv[0], "--table", "carom_10ft", "--bootstrap", "-1"}, "--bootstrap = -1");
+  expect_usage_error({"calibrate", csv[0], "--table", "carom_10ft", "--restarts", "20"}, "--restarts = 20");
+  const std::string bad = dir.write("bad.csv", "ball,t,x,y\nwhite,0,0.7,0.5\nwhite,0.02,0.7q,0.5\n");
+  expect_usage_error({"calibrate", csv[0], bad, "--table", "carom_10ft"}, "bad.csv\": row 3, column x: \"0.7q\" is not a finite number");
+  const std::string json = dir.write("shots.json", synthetic_file());
+  expect_usage_error({"calibrate", json, "--table", "carom_10ft"}, "--table and --cue-ball are for CSV shots");
+  expect_usage_error({"calibrate", csv[0], json, "--table", "carom_10ft"}, "is not a .csv file");
+}
+
 TEST(CliCalibrate, BadInputIsOneLineNamingTheFieldAndExitsTwo) {
   TempDir dir;
   const std::string file = dir.write("shots.json", synthetic_file());

@@ -241,7 +241,7 @@ TEST(ThreeCushion, AContactWithABallFrozenToTheCueBallAtTheStrikeDoesNotCount) {
   // counted, so nothing was touched.
   const double r = preset_table("carom_10ft").ball.radius;
   GameState s = in_play({1.0, 0.71}, {0.3, 0.3}, {1.0 + 2.0 * r, 0.71});
-  const GameStep step = play(s, strike(1.0, 0.0), 0);
+  const GameStep step = play(s, strike(0.7, 0.0), 0);  // soft: the white stays short of the far cushion
   ASSERT_FALSE(step.facts.frozen_balls.empty());
   ASSERT_EQ(step.facts.first_contact, kRed);
   ASSERT_EQ(step.facts.cue_cushions_before_contact.size(), 1u);  // the push at the strike, nothing after

@@ -84,6 +84,9 @@ def snooker_parameters() -> Parameters:
 def pool_parameters() -> Parameters:
     """WPA pool ball on a typical pool cloth (the default of every params=)."""
 
+def carom_parameters() -> Parameters:
+    """UMB carom ball on a heated carom cloth (fitted to a recorded three-cushion match)."""
+
 def preset_parameters(name: str) -> Parameters:
     """'snooker' or 'pool'; InvalidArgument otherwise."""
 
@@ -491,8 +494,12 @@ def calibrate(
     starts: int = 32,
     max_evaluations: int = 300,
     max_iterations: int = 20,
+    restarts: int = 2,
+    bootstrap: int = 0,
+    html: bool = False,
 ) -> dict[str, Any]:
-    """Fits strikes and the table's constants to tracked shots (JSON text); the report as a dict."""
+    """Fits strikes and the table's constants to tracked shots (JSON text); the report as a dict
+    (with html=True, the HTML report's page in its "html")."""
 
 # ------------------------------------------------------------------ ball-ball collision
 

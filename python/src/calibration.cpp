@@ -7,6 +7,7 @@
 
 #include "cueball/calibration/calibrate.hpp"
 #include "cueball/core/errors.hpp"
+#include "cueball/io/calibration_html.hpp"
 #include "cueball/io/tracked_shots_json.hpp"
 #include "cueball/models/cushion/model.hpp"
 
@@ -17,7 +18,7 @@ namespace {
 std::string run_calibration(const std::string& shots_json, double held_out, std::uint64_t seed,
                             const std::optional<std::string>& constants, bool evaluate,
                             const std::optional<std::string>& cushion_model, int threads, int starts, int max_evaluations,
-                            int max_iterations) {
+                            int max_iterations, int restarts, int bootstrap, bool html, std::string& page) {
   using namespace cueball;
   const TrackedShots shots = tracked_shots_from_json(shots_json);
   FitModel start = constants ? fit_model_from_json(*constants, shots) : default_fit_model(shots);
@@ -39,7 +40,12 @@ std::string run_calibration(const std::string& shots_json, double held_out, std:
   o.strike.starts = starts;
   o.constants.max_evaluations = max_evaluations;
   o.constants.max_iterations = max_iterations;
-  return calibration_report_to_json(calibrate(shots, start, o), -1);
+  o.constants.restarts = restarts;
+  o.bootstrap.replicates = bootstrap;
+  o.bootstrap.seed = seed;
+  const CalibrationReport report = calibrate(shots, start, o);
+  if (html) page = calibration_report_html(report, shots.table, shot_drawings(shots, report));
+  return calibration_report_to_json(report, -1);
 }
 
 }  // namespace
@@ -49,21 +55,26 @@ void bind_calibration(py::module_& m) {
       "calibrate",
       [](const std::string& shots, double held_out, std::uint64_t seed, const std::optional<std::string>& constants,
          bool evaluate, const std::optional<std::string>& cushion_model, int threads, int starts, int max_evaluations,
-         int max_iterations) {
-        std::string report;
+         int max_iterations, int restarts, int bootstrap, bool html) {
+        std::string report, page;
         {
           py::gil_scoped_release release;
           report = run_calibration(shots, held_out, seed, constants, evaluate, cushion_model, threads, starts,
-                                   max_evaluations, max_iterations);
+                                   max_evaluations, max_iterations, restarts, bootstrap, html, page);
         }
-        return py::module_::import("json").attr("loads")(report);
+        py::object out = py::module_::import("json").attr("loads")(report);
+        if (html) out["html"] = page;
+        return out;
       },
       "shots"_a, py::kw_only(), "held_out"_a = 0.25, "seed"_a = 0, "constants"_a = py::none(), "evaluate"_a = false,
       "cushion_model"_a = py::none(), "threads"_a = 1, "starts"_a = 32, "max_evaluations"_a = 300, "max_iterations"_a = 20,
+      "restarts"_a = 2, "bootstrap"_a = 0, "html"_a = false,
       "Fits the engine to tracked shots (README 'Calibrating from tracked shots'): shots is the JSON text of\n"
       "a tracked-shots document; constants the JSON text of a scenario whose parameters and cushion to start\n"
       "from (with evaluate=True: to use, fitting strikes only). Returns the report as `cueball calibrate\n"
-      "--json` prints it (a dict: constants, summary, shots). Releases the GIL.");
+      "--json` prints it (a dict: constants, uncertainty, summary, shots). bootstrap=N: the constants'\n"
+      "spread over N bootstrap replicates of the training shots; html=True: the HTML report's page in the dict's \"html\".\n"
+      "Releases the GIL.");
 }
 
 }  // namespace cueball_python

@@ -57,6 +57,8 @@ void bind_parameters(py::module_& m) {
   m.def("snooker_parameters", &cueball::snooker_parameters,
         "Snooker ball on a snooker cloth (Mathavan, Jackson & Parkin 2010 and 2009).");
   m.def("pool_parameters", &cueball::pool_parameters, "WPA pool ball on a typical pool cloth (WPA; Alciatore).");
+  m.def("carom_parameters", &cueball::carom_parameters,
+        "UMB carom ball on a heated carom cloth (fitted to a recorded three-cushion match; README).");
   m.def("preset_parameters", [](const std::string& name) { return cueball::preset_parameters(name); }, "name"_a,
         "A preset by name: 'snooker' or 'pool'; InvalidArgument otherwise.");
   m.def("validate", py::overload_cast<const Parameters&>(&cueball::validate), "params"_a,

@@ -38,13 +38,30 @@ class CalibrateTest(unittest.TestCase):
     def test_evaluate_returns_the_report(self) -> None:
         r = cueball.calibrate(json.dumps(straight_shot()), constants='{"table": "carom_10ft"}', evaluate=True)
         self.assertEqual(set(r), {"table", "constants", "start_constants", "summary", "constant_evaluations",
-                                  "constant_iterations", "seconds", "shots"})
+                                  "constant_iterations", "constant_restarts", "uncertainty", "seconds", "shots"})
+        self.assertEqual(r["uncertainty"], {"method": "none", "replicates": 0, "constants": {}})
         self.assertEqual(r["summary"]["training"]["shots"], 1)
         shot = r["shots"][0]
         self.assertEqual(shot["id"], "1")
         self.assertLess(shot["cue_rmse"], 0.05)
         self.assertAlmostEqual(shot["strike"]["aim_deg"], 0.0, delta=1.0)
         self.assertFalse(shot["balls"]["red"]["moved_simulated"])
+
+    def test_bootstrap_and_html(self) -> None:
+        doc = straight_shot()
+        doc["shots"].append(json.loads(json.dumps(doc["shots"][0])))
+        doc["shots"][1]["shot_id"] = 2
+        r = cueball.calibrate(json.dumps(doc), held_out=0.0, max_evaluations=4, max_iterations=0, restarts=0,
+                              starts=2, bootstrap=2, html=True)
+        self.assertEqual(r["uncertainty"]["replicates"], 2)
+        mu_r = r["uncertainty"]["constants"]["mu_r"]
+        self.assertLessEqual(mu_r["p05"], mu_r["p95"])
+        self.assertGreaterEqual(mu_r["std_dev"], 0.0)
+        self.assertTrue(r["html"].startswith("<!DOCTYPE html>"))
+        self.assertEqual(r["html"].count("<figure"), 2)
+        self.assertNotIn("<script", r["html"])
+        with self.assertRaises(cueball.InvalidArgument):
+            cueball.calibrate(json.dumps(doc), bootstrap=-1)
 
     def test_errors_name_the_json_path(self) -> None:
         doc = straight_shot()

@@ -60,6 +60,7 @@ class ParametersTest(unittest.TestCase):
         self.assertEqual(p.ball.mass, 0.1406)
         self.assertEqual(p.ball.radius, 0.02625)
         self.assertEqual(cueball.preset_parameters("pool"), cueball.pool_parameters())
+        self.assertEqual(cueball.preset_parameters("carom"), cueball.carom_parameters())
         self.assertNotEqual(cueball.pool_parameters(), p)
         # Nested fields are references: assigning through them changes p.
         p.ball.mass = 0.2
@@ -93,7 +94,7 @@ class ParametersTest(unittest.TestCase):
             cueball.validate(p)
         self.assertEqual(caught.exception.field, "mu_s")
         with self.assertRaises(cueball.InvalidArgument):
-            cueball.preset_parameters("carom")
+            cueball.preset_parameters("croquet")
 
     def test_parameter_ranges(self):
         self.assertEqual(set(cueball.PARAMETER_RANGES), {"mass", "radius", "mu_s", "mu_r", "mu_sp", "g"})

@@ -74,6 +74,11 @@ void fit_training(CalibrationContext& c) {
   c.report.model = fit.model;
   c.report.constant_evaluations = fit.evaluations;
   c.report.constant_iterations = fit.iterations;
+  c.report.constant_restarts = fit.restarts_taken;
+  BootstrapOptions b = c.options.bootstrap;
+  b.threads = c.options.threads;
+  c.report.spread = bootstrap_constants(shots, fit, b);
+  c.report.bootstrap_replicates = c.report.spread.empty() ? 0 : b.replicates;
   // The training shots refitted from scratch under the final constants
   // (a strike the warm starts kept in a wrong basin gets its chance again);
   // the better of that and the warm-started strike is kept.
@@ -107,6 +112,8 @@ CalibrationReport calibrate(const TrackedShots& shots, const FitModel& start, co
     throw InvalidArgument("held_out", options.held_out, "[0, 0.9]", "fraction of the shots held out");
   if (options.threads < 1 || options.threads > 256) throw InvalidArgument("threads", options.threads, "[1, 256]", "threads");
   if (shots.shots.empty()) throw InvalidArgument("shots", "shots is empty (nothing to calibrate)");
+  if (options.bootstrap.replicates < 0 || options.bootstrap.replicates > 1000)
+    throw InvalidArgument("bootstrap", options.bootstrap.replicates, "[0, 1000]", "bootstrap replicates");
   CalibrationContext c{shots, options, {}, {}, {}};
   c.report.start = c.report.model = start;
   c.report.table_name = shots.table_name;
@@ -118,6 +125,38 @@ CalibrationReport calibrate(const TrackedShots& shots, const FitModel& start, co
   c.report.held_out = summarize(c.report.shots, true);
   c.report.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   return c.report;
+}
+
+std::vector<ShotDrawing> shot_drawings(const TrackedShots& shots, const CalibrationReport& report) {
+  if (shots.shots.size() != report.shots.size())
+    throw InvalidArgument("shots", "the report has " + std::to_string(report.shots.size()) + " shots, the file " +
+                                       std::to_string(shots.shots.size()) + "; allowed: the file the report was made from");
+  std::vector<ShotDrawing> out;
+  for (std::size_t i = 0; i < shots.shots.size(); ++i) {
+    const TrackedShot& shot = shots.shots[i];
+    const ShotReport& r = report.shots[i];
+    const std::string path = "shots[" + std::to_string(i) + "]";
+    if (shot.id != r.id)
+      throw InvalidArgument(path, path + " is shot " + quote_input(shot.id) + " where the report has " + quote_input(r.id));
+    const PreparedShot prepared = prepare_shot(shot, shots.table, path);
+    ShotDrawing d;
+    d.id = r.id;
+    d.held_out = r.held_out;
+    d.contact_mismatch = r.fit.contact_mismatch;
+    d.cue_rmse = r.fit.cue_rmse;
+    d.names = prepared.names;
+    d.ball_rmse = r.fit.ball_rmse;
+    for (const std::string& name : prepared.names) {
+      std::vector<Vec2> samples;
+      for (const TrackedBall& b : shot.balls)
+        if (b.name == name)
+          for (std::size_t k = 0; k < b.t.size(); ++k) samples.push_back({b.x[k], b.y[k]});
+      d.measured.push_back(std::move(samples));
+    }
+    d.simulated = simulated_paths(prepared, report.model, r.fit.action, r.fit.strike_offset);
+    out.push_back(std::move(d));
+  }
+  return out;
 }
 
 }  // namespace cueball

@@ -215,4 +215,25 @@ StrikeFit refine_strike(const PreparedShot& shot, const FitModel& model, const S
   return f;
 }
 
+std::vector<std::vector<Vec2>> simulated_paths(const PreparedShot& shot, const FitModel& model, const ShotAction& action,
+                                               double strike_offset, double step) {
+  if (!(step > 0.0) || !std::isfinite(step)) throw InvalidArgument("step", step, "(0, inf)", "time between path points (s)");
+  const Scenario scenario = scenario_of(shot, model);
+  const auto result = play(scenario, action);
+  if (!result) return {};
+  const Parameters& p = scenario.settings.parameters;
+  const double end = std::max(result->end_time, shot.duration - strike_offset);
+  constexpr double kMinSpacing = 0.002;
+  std::vector<std::vector<Vec2>> paths(shot.layout.size());
+  const auto steps = static_cast<std::size_t>(std::ceil(std::max(end, 0.0) / step));
+  for (std::size_t j = 0; j < paths.size(); ++j) {
+    for (std::size_t k = 0; k <= steps; ++k) {
+      const double t = std::min(static_cast<double>(k) * step, std::max(end, 0.0));
+      const Vec2 q = result->state_at(j, t, p).position;
+      if (paths[j].empty() || norm(q - paths[j].back()) >= kMinSpacing || k == steps) paths[j].push_back(q);
+    }
+  }
+  return paths;
+}
+
 }  // namespace cueball

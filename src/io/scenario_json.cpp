@@ -116,8 +116,9 @@ class Reader {
 Parameters read_parameters(const Reader& r, const Table& table) {
   const std::string default_preset = cloth_preset_for(table);
   const std::string preset = r.text("preset", default_preset);
-  if (preset != "pool" && preset != "snooker")
-    throw InvalidArgument(r.field("preset"), r.field("preset") + " = " + quote_input(preset) + " is not known; allowed: pool, snooker");
+  if (preset != "pool" && preset != "snooker" && preset != "carom")
+    throw InvalidArgument(r.field("preset"),
+                          r.field("preset") + " = " + quote_input(preset) + " is not known; allowed: pool, snooker, carom");
   Parameters p = preset_parameters(preset);
   p.ball = table.ball;
   p.ball.mass = r.number("mass", p.ball.mass, kMassRange.min, kMassRange.max, "ball mass, kg");

@@ -233,6 +233,13 @@ std::string calibration_report_to_json(const CalibrationReport& r, int indent) {
   j["summary"] = {{"training", summary_json(r.training)}, {"held_out", summary_json(r.held_out)}};
   j["constant_evaluations"] = r.constant_evaluations;
   j["constant_iterations"] = r.constant_iterations;
+  j["constant_restarts"] = r.constant_restarts;
+  ordered_json spread = ordered_json::object();
+  for (const ConstantSpread& c : r.spread)
+    spread[c.name] = {{"value", c.value}, {"std_dev", c.std_dev}, {"p05", c.p05}, {"p95", c.p95}};
+  j["uncertainty"] = {{"method", r.spread.empty() ? "none" : "bootstrap over the training shots"},
+                      {"replicates", r.bootstrap_replicates},
+                      {"constants", std::move(spread)}};
   j["seconds"] = r.seconds;
   ordered_json shots = ordered_json::array();
   for (const ShotReport& s : r.shots) shots.push_back(shot_json(s));

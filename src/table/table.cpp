@@ -875,7 +875,8 @@ TableSpec preset_table_spec(std::string_view name) {
 Table preset_table(std::string_view name) { return build_table(preset_table_spec(name)); }
 
 const char* cloth_preset_for(const Table& table) {
-  return table.name.find("snooker") != std::string::npos ? "snooker" : "pool";
+  if (table.name.find("snooker") != std::string::npos) return "snooker";
+  return table.name.find("carom") != std::string::npos ? "carom" : "pool";
 }
 
 Parameters default_parameters(const Table& table) {

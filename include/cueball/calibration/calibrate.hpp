@@ -5,7 +5,7 @@
 // held-out shots (a seeded shuffle: round(held_out x N) of them, at least
 // one training shot kept); fit every training shot's strike under the start
 // constants (strike_fit.hpp); fit the constants (constants_fit.hpp) unless
-// only evaluating; then fit every shot's strike afresh, multi-start, under
+// only evaluating, and their bootstrap spread when asked; then fit every shot's strike afresh, multi-start, under
 // the final constants (the held-out shots only here: they never touch the
 // constants) and report.
 #pragma once
@@ -27,6 +27,7 @@ struct CalibrationOptions {
   int threads = 1;                 ///< [1, 256]
   StrikeFitOptions strike;
   ConstantsFitOptions constants;   ///< its threads are set from `threads`
+  BootstrapOptions bootstrap;      ///< the constants' uncertainties (its threads too)
 };
 
 struct CalibrationReport {
@@ -37,6 +38,11 @@ struct CalibrationReport {
   FitSummary training, held_out;
   int constant_evaluations = 0;   ///< the constants fit's stage 1 (simplex)
   int constant_iterations = 0;    ///< its stage 2 (joint LM)
+  int constant_restarts = 0;      ///< 1 when a restart of stage 1 won (ConstantsFit::restarts_taken)
+  /// The constants' spread over bootstrap replicates of the training shots
+  /// (empty when not asked for, or when only evaluating).
+  std::vector<ConstantSpread> spread;
+  int bootstrap_replicates = 0;
   double seconds = 0.0;
 };
 
@@ -44,6 +50,25 @@ struct CalibrationReport {
 /// InvalidArgument naming "shots[i]..." for a shot that cannot be prepared,
 /// "held_out" or "threads" for bad options.
 CalibrationReport calibrate(const TrackedShots& shots, const FitModel& start, const CalibrationOptions& options);
+
+/// One shot drawn for the HTML report: per ball (layout order) the tracked
+/// samples (all of them, the layout's too) and the path simulated with the
+/// fitted strike under the report's constants (simulated_paths).
+struct ShotDrawing {
+  std::string id;
+  bool held_out = false;
+  bool contact_mismatch = false;
+  double cue_rmse = 0.0;                     ///< m
+  std::vector<std::string> names;            ///< layout order, the cue ball first
+  std::vector<double> ball_rmse;             ///< m, NaN without samples after the strike
+  std::vector<std::vector<Vec2>> measured;   ///< per ball
+  std::vector<std::vector<Vec2>> simulated;  ///< per ball; empty when the simulation fails
+};
+
+/// The drawings of the report's shots (the same `shots` it was made from,
+/// in its order). Throws InvalidArgument when the shots do not match the
+/// report (count or ids).
+std::vector<ShotDrawing> shot_drawings(const TrackedShots& shots, const CalibrationReport& report);
 
 /// The start model of a tracked-shots file: its table with the settings a
 /// scenario on that table gets by default.

@@ -78,4 +78,12 @@ StrikeFit evaluate_strike(const PreparedShot& shot, const FitModel& model, const
 bool simulated_residuals(const PreparedShot& shot, const FitModel& model, const ShotAction& action, double strike_offset,
                          double window, std::vector<double>& residuals);
 
+/// The simulated paths of a strike, for drawing: per ball (layout order)
+/// its centre every `step` seconds (> 0) from the strike until the last
+/// ball stops or the record ends, whichever is later, points closer than
+/// 2 mm to the last one kept left out (a resting ball is one point). Times
+/// as FitSample::t; empty when the simulation fails.
+std::vector<std::vector<Vec2>> simulated_paths(const PreparedShot& shot, const FitModel& model, const ShotAction& action,
+                                               double strike_offset, double step = 0.02);
+
 }  // namespace cueball

@@ -82,9 +82,13 @@ void validate(const Parameters& p);
 Parameters snooker_parameters();
 /// WPA pool ball on a typical pool cloth (WPA specifications; Alciatore).
 Parameters pool_parameters();
-/// A preset by name: "snooker" or "pool". Throws InvalidArgument otherwise.
+/// UMB carom ball on a heated carom cloth: the cloth fitted by `cueball
+/// calibrate` to a recorded three-cushion match (README "Validated against
+/// a recorded match"); the carom_10ft table's default.
+Parameters carom_parameters();
+/// A preset by name: "snooker", "pool" or "carom". Throws InvalidArgument otherwise.
 Parameters preset_parameters(std::string_view name);
 /// The names accepted by preset_parameters().
-inline constexpr std::array<std::string_view, 2> kPresetNames{"snooker", "pool"};
+inline constexpr std::array<std::string_view, 3> kPresetNames{"snooker", "pool", "carom"};
 
 }  // namespace cueball

@@ -304,7 +304,8 @@ TableSpec preset_table_spec(std::string_view name);
 Table preset_table(std::string_view name);
 
 /// The cloth preset that goes with a table: "snooker" for a table whose name
-/// says snooker, else "pool" (what a scenario uses unless it names one).
+/// says snooker, "carom" for one whose name says carom, else "pool" (what a
+/// scenario uses unless it names one).
 const char* cloth_preset_for(const Table& table);
 /// preset_parameters(cloth_preset_for(table)) with the table's own ball.
 Parameters default_parameters(const Table& table);

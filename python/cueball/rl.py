@@ -42,7 +42,7 @@ except ImportError:  # pragma: no cover - depends on the machine
     _gym_spaces = None
 
 GAMES = ("nine_ball", "eight_ball", "ten_ball", "snooker", "three_cushion")
-OPPONENTS = ("planner", "ghost_ball", "random", "carom_search")
+OPPONENTS = ("planner", "safety_planner", "ghost_ball", "random", "carom_search")
 REWARD_TERMS = ("win", "points", "pots", "fouls", "illegal")
 # The weight a term named alone gets (reward="pots" or reward=["win", "fouls"]).
 DEFAULT_WEIGHTS = {"win": 1.0, "points": 1.0, "pots": 1.0, "fouls": -1.0, "illegal": -1.0}

@@ -117,16 +117,24 @@ CueStrikeNoise scaled(const CueStrikeNoise& n, double k) {
   return {n.speed * k, n.aim * k, n.elevation * k, n.side_offset * k, n.height_offset * k};
 }
 
-// Step 1 of env_reset: the episode's game, seat and noise.
-void start_episode(const EnvOptions& options, EnvTable& table) {
+// Step 1 of env_reset and env_reset_from: the episode's seat and noise, and
+// its game: a new one, or `start` bounded to max_shots from where it stands.
+void start_episode(const EnvOptions& options, EnvTable& table, const GameState* start = nullptr) {
   table.game_seed = stream_seed(table.seed, table.episode);
   RandomStream rng(stream_seed(table.game_seed, kEpisodeStream));
   const int seat = options.seat >= 0 ? options.seat : (rng.chance(0.5) ? 1 : 0);
   table.learner = options.opponent.kind ? seat : -1;
   table.noise = scaled(options.noise.base, rng.uniform(options.noise.scale_min, options.noise.scale_max));
-  GameConfig config = env_game_config(options);
-  config.noise = table.noise;
-  table.state = new_game(config, table.game_seed);
+  if (start) {
+    table.state = *start;
+    table.state.config.noise = table.noise;
+    table.state.config.max_shots = start->shots + options.max_shots;
+    if (options.opponent.kind && options.seat < 0) table.learner = start->to_shoot;
+  } else {
+    GameConfig config = env_game_config(options);
+    config.noise = table.noise;
+    table.state = new_game(config, table.game_seed);
+  }
   table.steps = 0;
   table.history.clear();
   if (table.record_steps) table.start = table.state;
@@ -201,13 +209,7 @@ void env_reset_from(const EnvOptions& options, EnvTable& table, const GameState&
                                        to_string(options.game) + " environment");
   if (start.over) throw InvalidArgument("state", "state: the game is over (" + start.end_reason + ")");
   table.episode += 1;
-  start_episode(options, table);
-  const CueStrikeNoise noise = table.state.config.noise;
-  table.state = start;
-  table.state.config.noise = noise;
-  table.state.config.max_shots = start.shots + options.max_shots;  // the episode's bound, from here
-  if (options.opponent.kind && options.seat < 0) table.learner = start.to_shoot;
-  if (table.record_steps) table.start = table.state;
+  start_episode(options, table, &start);
   EnvStepResult ignored;
   StepRun run{options, table, ignored};
   advance(run);

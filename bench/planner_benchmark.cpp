@@ -39,12 +39,14 @@
 // ghost-ball agent's rule (ghost_ball_in_hand_spot: a straight-in on the 1,
 // kGhostBallInHandBack behind the ghost ball of the easiest clear pocket).
 // That table is a 9-ball GameState in play (games/game.hpp; with --in-hand
-// planner the cue ball is in hand anywhere), and the planner agent
-// (agents/agent.hpp, planner_choice) plays it through play() with
-// tournament noise until the 9 drops (a run-out), a shot is a foul (wrong
-// first contact, scratch, miscue: the Ruling's foul), pots nothing, or the
-// agent finds no feasible shot of its kinds (--kinds, then --fallback-kinds:
-// a kick when nothing else pots) and would play a safety. A 9 potted on the
+// planner, the default, the cue ball is in hand anywhere), and the agent
+// (--agent: by default strongest_agent(), agents/agent.hpp: the safety
+// planner with position play and kicks; or the planner) plays it through
+// play() with tournament noise until the 9 drops (a run-out), a shot is a
+// foul (wrong first contact, scratch, miscue: the Ruling's foul), pots
+// nothing, the agent finds no feasible shot of its kinds (--kinds, then
+// --fallback-kinds) or it chooses a safety (the safety planner, when no pot
+// is likely enough). A 9 potted on the
 // break is spotted. With --break recommended the rack is the game's own
 // (new_game: the default gaps) broken by recommended_break with tournament
 // noise through play(); only a legal break that makes a ball is run out, from
@@ -408,10 +410,10 @@ SingleRecord run_single(const Setup& st, std::uint64_t seed, int repeats, int pl
 
 // ------------------------------------------------------------------ run-outs
 
-enum class Stop { run_out, miss, scratch, wrong_first_contact, no_feasible_shot, miscue, failure, rejected, dry_break };
+enum class Stop { run_out, miss, scratch, wrong_first_contact, no_feasible_shot, miscue, failure, rejected, dry_break, safety };
 const char* const kStopNames[] = {"run_out", "miss", "scratch", "wrong_first_contact", "no_feasible_shot", "miscue", "failure", "rejected_layout",
-                                  "dry_break"};
-constexpr int kStops = 9;
+                                  "dry_break", "safety"};
+constexpr int kStops = 10;
 
 struct RackRecord {
   std::uint64_t seed = 0;
@@ -539,9 +541,13 @@ std::uint64_t play_seed(std::uint64_t stream, std::uint64_t shot) {
   return stream ^ splitmix64(shot) ^ splitmix64(0);
 }
 
-RackRecord run_rack(const Setup& st, std::uint64_t seed, int planner_simulations, int position_simulations,
-                    const std::vector<ShotKind>& kinds, const std::vector<ShotKind>& fallback_kinds,
-                    bool in_hand_planner, bool real_break) {
+// The agent's choice: the planner's or the safety planner's.
+PlannerChoice agent_choice(const AgentOptions& agent, const GameState& g, std::uint64_t seed) {
+  return agent.kind == AgentKind::safety_planner ? safety_planner_choice(agent, g, seed) : planner_choice(agent, g, seed);
+}
+
+RackRecord run_rack(const Setup& st, std::uint64_t seed, const AgentOptions& agent, bool in_hand_planner,
+                    bool real_break) {
   RackRecord rec;
   rec.seed = seed;
   GameState g;
@@ -552,12 +558,6 @@ RackRecord run_rack(const Setup& st, std::uint64_t seed, int planner_simulations
   } else {
     g = broken_game(st, seed, in_hand_planner, rec.on_break);
   }
-  AgentOptions agent;
-  agent.kind = AgentKind::planner;
-  agent.simulations = planner_simulations;
-  agent.position_simulations = position_simulations;
-  agent.kinds = kinds;
-  agent.fallback_kinds = fallback_kinds;
   const std::uint64_t noise_stream = stream_seed(seed, kMeasureStream);
   for (;;) {
     const int target = g.on.front();
@@ -565,7 +565,7 @@ RackRecord run_rack(const Setup& st, std::uint64_t seed, int planner_simulations
     const double cpu_start = thread_cpu_seconds();
     PlannerChoice c;
     try {
-      c = planner_choice(agent, g, stream_seed(seed, 100 + static_cast<std::uint64_t>(rec.shots)));
+      c = agent_choice(agent, g, stream_seed(seed, 100 + static_cast<std::uint64_t>(rec.shots)));
     } catch (const std::exception& e) {  // the layout the engine left (never seen)
       rec.stop = Stop::rejected;
       rec.detail = e.what();
@@ -574,8 +574,8 @@ RackRecord run_rack(const Setup& st, std::uint64_t seed, int planner_simulations
     rec.decision_seconds.push_back(seconds_since(start));
     rec.decision_cpu_seconds.push_back(thread_cpu_seconds() - cpu_start);
     rec.simulations += c.simulations;
-    if (c.kind == PlannerChoice::Kind::safety) {  // no pot of --kinds or --fallback-kinds
-      rec.stop = Stop::no_feasible_shot;
+    if (c.kind == PlannerChoice::Kind::safety) {  // no pot of --kinds or --fallback-kinds, or one the agent would not risk
+      rec.stop = c.success_probability >= 0.0 ? Stop::safety : Stop::no_feasible_shot;
       rec.detail = c.detail;
       return rec;
     }
@@ -654,12 +654,27 @@ struct Options {
   std::uint64_t seed = 1;
   bool single = true, runout = true;
   int threads = 1;
-  int planner_simulations = 4000;
-  int position_simulations = 0;  // 0: run-outs without position play
-  bool in_hand_planner = false;  // the run-outs' first cue ball placed by plan_ball_in_hand, not by the rule
+  int planner_simulations = 4000;  // the single pots' plan_shot budget
+  // The run-outs' agent: --agent, then the flags given over its options.
+  std::string agent_name = "strongest";
+  std::optional<int> agent_simulations;     // --planner-simulations
+  std::optional<int> position_simulations;  // --position
+  std::optional<int> noisy_leaves;          // --noisy-leaves
+  bool in_hand_planner = true;   // the run-outs' first cue ball placed by plan_ball_in_hand, not by the rule
   bool real_break = false;       // --break recommended: the game's own break, the run-out only after a made one
-  std::vector<ShotKind> kinds = PlanRequest{}.kinds;  // the run-outs' shot kinds
-  std::vector<ShotKind> fallback_kinds;  // asked for when no shot of `kinds` is feasible; empty: none
+  std::optional<std::vector<ShotKind>> kinds;           // the run-outs' shot kinds
+  std::optional<std::vector<ShotKind>> fallback_kinds;  // asked for when no shot of `kinds` is feasible; empty: none
+
+  // The run-outs' agent: agent_named(agent_name) with the flags given.
+  AgentOptions runout_agent() const {
+    AgentOptions a = *agent_named(agent_name);
+    if (agent_simulations) a.simulations = *agent_simulations;
+    if (position_simulations) a.position_simulations = *position_simulations;
+    if (noisy_leaves) a.position_noisy_leaves = *noisy_leaves;
+    if (kinds) a.kinds = *kinds;
+    if (fallback_kinds) a.fallback_kinds = *fallback_kinds;
+    return a;
+  }
   std::string json;
   std::string layouts_out;  // a folder: each single-pot layout written there as a scenario
   std::string suite = "all";
@@ -670,7 +685,7 @@ void usage() {
       "usage: cueball-planner-benchmark [--suite single|runout|all] [--layouts N] [--racks N] [--repeats N]\n"
       "                                 [--seed S] [--planner-simulations N] [--position N] [--threads T]\n"
       "                                 [--in-hand rule|planner] [--break rule|recommended] [--kinds LIST]\n"
-      "                                 [--fallback-kinds LIST]\n"
+      "                                 [--fallback-kinds LIST] [--agent NAME] [--noisy-leaves N]\n"
       "                                 [--json FILE] [--layouts-out DIR]\n"
       "The shot planner against a ghost-ball baseline and an exhaustive grid search (docs/planner-benchmark.md).\n"
       "  --suite S                single, runout or all (default all)\n"
@@ -678,26 +693,32 @@ void usage() {
       "  --racks N                9-ball racks for the run-outs, [1, 1000000] (default 1000); rack k from seed S + k\n"
       "  --repeats N              noisy repeats measuring each chosen shot, [10, 1000000] (default 2000)\n"
       "  --seed S                 first seed, [0, 1e18] (default 1)\n"
+      "  --agent NAME             the run-outs' player: strongest (the default: the safety planner with\n"
+      "                           position play and kicks, agents/agent.hpp strongest_agent()), safety_planner or\n"
+      "                           planner (their default options); the flags below given override its options\n"
       "  --planner-simulations N  plan_shot's budget, [%d, %d] (default 4000, the planner's default)\n"
       "  --position N             run-outs played for position (plan_shot_for_position), N engine runs per\n"
-      "                           next-shot plan, [%d, %d] (default: no position play)\n"
-      "  --in-hand H              the run-outs' cue ball in hand after the break: rule (a straight-in on the\n"
-      "                           lowest ball, the default) or planner (plan_ball_in_hand, with --position's\n"
-      "                           budget, 1000 without it)\n"
+      "                           next-shot plan, [%d, %d] (default: the agent's; strongest 1000)\n"
+      "  --noisy-leaves N         position play: noisy outcomes of each finalist whose leaves are scored,\n"
+      "                           [0, %d] (default %d; 0: the noise-free leave alone)\n"
+      "  --in-hand H              the run-outs' cue ball in hand after the break: planner (plan_ball_in_hand,\n"
+      "                           with --position's budget, 1000 without it; the default) or rule (a straight-in\n"
+      "                           on the lowest ball)\n"
       "  --break B                the run-outs' break: rule (a seeded engine break, then the cue ball in hand;\n"
       "                           the default) or recommended (new_game's rack broken by recommended_break with\n"
       "                           tournament noise; the run-out is played only after a legal break that makes\n"
       "                           a ball, from where it left the cue ball)\n"
       "  --kinds LIST             the run-outs' shot kinds, comma-separated: direct, bank, kick, combination\n"
-      "                           (default direct,bank, the planner's default)\n"
+      "                           (default direct,bank, the agent's)\n"
       "  --fallback-kinds LIST    the kinds asked for when no shot of --kinds pots the run-outs' ball, e.g. kick\n"
-      "                           (default: none, the inning ends)\n"
+      "                           (default: the agent's, kick)\n"
       "  --threads T              layouts in parallel, [1, 256] (default 1); results do not depend on it, timings do\n"
       "  --json FILE              also write the results as JSON\n"
       "  --layouts-out DIR        write each single-pot layout as DIR/layout-<seed>.json (a scenario without a\n"
       "                           cue: the balls at rest, tournament noise), for cueball plan-shot --ball 1\n"
       "Exit status: 0 done, 1 an engine error, 2 bad flags.\n",
-      kMinPlanSimulations, kMaxPlanSimulations, kMinPlanSimulations, kMaxPlanSimulations);
+      kMinPlanSimulations, kMaxPlanSimulations, kMinPlanSimulations, kMaxPlanSimulations, kMaxPositionNoisyLeaves,
+      kPositionNoisyLeaves);
 }
 
 std::vector<ShotKind> kinds_flag(const std::string& flag, const std::string& value) {
@@ -723,12 +744,12 @@ Options parse(int argc, char** argv) {
     }
     static const char* const known[] = {"--suite",  "--layouts", "--racks", "--repeats", "--seed", "--planner-simulations",
                                         "--position", "--kinds", "--fallback-kinds", "--threads", "--json", "--layouts-out",
-                                        "--in-hand", "--break"};
+                                        "--in-hand", "--break", "--agent", "--noisy-leaves"};
     if (std::find_if(std::begin(known), std::end(known), [&](const char* k) { return flag == k; }) == std::end(known))
       kFlags.bad("flag", flag,
                "--suite, --layouts, --racks, --repeats, --seed, --planner-simulations, --position, --kinds, "
                "--fallback-kinds, --threads, "
-               "--json, --layouts-out, --in-hand, --break, --help");
+               "--json, --layouts-out, --in-hand, --break, --agent, --noisy-leaves, --help");
     if (i + 1 >= argc) kFlags.bad(flag, "", "a value after the flag");
     const std::string value = argv[++i];
     if (flag == "--suite") {
@@ -744,6 +765,13 @@ Options parse(int argc, char** argv) {
       o.repeats = static_cast<int>(kFlags.integer(flag, value, 10, 1000000));
     } else if (flag == "--seed") {
       o.seed = static_cast<std::uint64_t>(kFlags.integer(flag, value, 0, 1000000000000000000LL));
+    } else if (flag == "--noisy-leaves") {
+      o.noisy_leaves = static_cast<int>(kFlags.integer(flag, value, 0, kMaxPositionNoisyLeaves));
+    } else if (flag == "--agent") {
+      const std::optional<AgentOptions> a = agent_named(value);
+      if (!a || (a->kind != AgentKind::planner && a->kind != AgentKind::safety_planner))
+        kFlags.bad(flag, value, "planner, safety_planner, strongest");
+      o.agent_name = value;
     } else if (flag == "--kinds") {
       o.kinds = kinds_flag(flag, value);
     } else if (flag == "--fallback-kinds") {
@@ -758,6 +786,7 @@ Options parse(int argc, char** argv) {
       o.position_simulations = static_cast<int>(kFlags.integer(flag, value, kMinPlanSimulations, kMaxPlanSimulations));
     } else if (flag == "--planner-simulations") {
       o.planner_simulations = static_cast<int>(kFlags.integer(flag, value, kMinPlanSimulations, kMaxPlanSimulations));
+      o.agent_simulations = o.planner_simulations;
     } else if (flag == "--threads") {
       o.threads = static_cast<int>(kFlags.integer(flag, value, 1, 256));
     } else if (flag == "--layouts-out") {
@@ -806,12 +835,16 @@ std::string kinds_text(const std::vector<ShotKind>& kinds) {
 int run(const Options& o) {
   const Setup st = make_setup();
   std::string json = "{\n \"tool\": \"cueball-planner-benchmark\",\n";
+  const AgentOptions agent = o.runout_agent();
   json += fmt(" \"options\": {\"suite\": \"%s\", \"layouts\": %d, \"racks\": %d, \"repeats\": %d, \"seed\": %llu, "
-              "\"planner_simulations\": %d, \"position_simulations\": %d, \"in_hand\": \"%s\", \"break\": \"%s\", \"kinds\": \"%s\", "
+              "\"planner_simulations\": %d, \"agent\": \"%s\", \"agent_simulations\": %d, \"position_simulations\": %d, \"noisy_leaves\": %d, "
+              "\"in_hand\": \"%s\", \"break\": \"%s\", \"kinds\": \"%s\", "
               "\"fallback_kinds\": \"%s\", \"threads\": %d},\n",
               o.suite.c_str(), o.layouts, o.racks, o.repeats, static_cast<unsigned long long>(o.seed), o.planner_simulations,
-              o.position_simulations, o.in_hand_planner ? "planner" : "rule", o.real_break ? "recommended" : "rule", kinds_text(o.kinds).c_str(),
-              kinds_text(o.fallback_kinds).c_str(), o.threads);
+              o.agent_name.c_str(), agent.simulations, agent.position_simulations, agent.position_noisy_leaves,
+              o.in_hand_planner ? "planner" : "rule",
+              o.real_break ? "recommended" : "rule", kinds_text(agent.kinds).c_str(), kinds_text(agent.fallback_kinds).c_str(),
+              o.threads);
   const CueStrikeNoise& n = st.base.noise;
   json += fmt(" \"noise\": {\"speed\": %g, \"aim_deg\": %g, \"elevation_deg\": %g, \"side\": %g, \"height\": %g},\n", n.speed,
               n.aim / kDeg, n.elevation / kDeg, n.side_offset / st.radius, n.height_offset / st.radius);
@@ -919,8 +952,7 @@ int run(const Options& o) {
     std::vector<RackRecord> recs(static_cast<std::size_t>(o.racks));
     parallel_for(o.racks, o.threads, [&](int k) {
       recs[static_cast<std::size_t>(k)] =
-          run_rack(st, o.seed + static_cast<std::uint64_t>(k), o.planner_simulations, o.position_simulations, o.kinds,
-                   o.fallback_kinds, o.in_hand_planner, o.real_break);
+          run_rack(st, o.seed + static_cast<std::uint64_t>(k), agent, o.in_hand_planner, o.real_break);
     });
     const double wall = seconds_since(start);
     int stops[kStops] = {};
@@ -936,7 +968,9 @@ int run(const Options& o) {
       sims += r.simulations;
     }
     const double fraction = static_cast<double>(stops[0]) / o.racks;
-    std::printf("\nrun-outs: %d racks (seeds %llu..%llu), %.1f s\n", o.racks, static_cast<unsigned long long>(o.seed),
+    std::printf("\nrun-outs by %s (%d runs a plan, position %d, in hand: %s): %d racks (seeds %llu..%llu), %.1f s\n",
+                o.agent_name.c_str(), agent.simulations, agent.position_simulations, o.in_hand_planner ? "planner" : "rule",
+                o.racks, static_cast<unsigned long long>(o.seed),
                 static_cast<unsigned long long>(o.seed + static_cast<std::uint64_t>(o.racks) - 1), wall);
     std::printf("  run out %.3f +- %.3f (goal >= 0.40); balls potted per rack %.2f (plus %.2f on the break); shots %.2f\n", fraction,
                 std::sqrt(fraction * (1.0 - fraction) / o.racks), mean(potted), mean(on_break), mean(shots));

@@ -299,14 +299,14 @@ struct PlayFlags {
 std::array<AgentOptions, 2> players_flag(const PlayFlags& f, const CueStrikeNoise& noise) {
   const std::vector<std::string> names = split(f.players, ',');
   if (names.size() != 2)
-    throw UsageError("--players = " + quote_input(f.players) + " must name two agents, A,B; allowed: " + agent_kind_names());
+    throw UsageError("--players = " + quote_input(f.players) + " must name two agents, A,B; allowed: " + agent_names());
   std::array<AgentOptions, 2> players;
   for (std::size_t p = 0; p < 2; ++p) {
-    const std::optional<AgentKind> kind = agent_kind_from_string(names[p]);
-    if (!kind)
+    const std::optional<AgentOptions> agent = agent_named(names[p]);
+    if (!agent)
       throw UsageError("--players = " + quote_input(f.players) + ": " + quote_input(names[p]) + " is not an agent; allowed: " +
-                       agent_kind_names());
-    players[p].kind = *kind;
+                       agent_names());
+    players[p] = *agent;
     players[p].noise = noise;
     if (!f.simulations.empty())
       players[p].simulations = static_cast<int>(whole("--simulations", f.simulations, 1, 1'000'000, "engine runs a decision may spend"));
@@ -418,7 +418,7 @@ Command add_game_command(CLI::App& app) {
   auto pf = std::make_shared<PlayFlags>();
   CLI::App* p = game->add_subcommand("play", "Plays whole games between two agents and prints each game's score, fouls and pots.");
   p->add_option("--game", pf->game, "The game: " + game_kind_names())->required();
-  p->add_option("--players", pf->players, "A,B: the agents of players 0 and 1 (" + agent_kind_names() + ")")->required();
+  p->add_option("--players", pf->players, "A,B: the agents of players 0 and 1 (" + agent_names() + ")")->required();
   p->add_option("--games", pf->games, "Games to play; game g (from 0) uses seed --seed + g")->capture_default_str();
   p->add_option("--seed", pf->seed, "Seed of the first game (rack, agents, noise)")->capture_default_str();
   p->add_option("--noise", pf->noise, "Execution noise of every shot, also what the agents plan under: tournament, none")

@@ -231,6 +231,8 @@ void run_plan_shot(const PlanShotFlags& f, std::ostream& out, std::ostream& err)
     line += l.next_feasible ? "P = " + fixed(l.next_success_probability, 3) + " (" + l.next_kind + " into " +
                                   l.next_pocket + ")"
                             : "no feasible shot";
+    if (l.noisy_leaves > 0)
+      line += "; from " + std::to_string(l.noisy_leaves) + " noisy leaves " + fixed(l.noisy_next_window, 3);
     return line + "; P(both) = " + fixed(l.score, 3) + " (this pot screened at " + fixed(l.screened_probability, 3) + ")";
   };
   if (in_hand)

@@ -39,7 +39,7 @@ TEST(CliPlanShotPosition, JsonGivesEveryShotsLeaveAndPlaysTheBestScore) {
   const nlohmann::json& p = j["position"];
   for (const char* key :
        {"next", "cue_ball", "next_feasible", "next_success_probability", "next_kind", "next_pocket", "next_ball",
-        "screened_probability", "score"})
+        "screened_probability", "noisy_leaves", "noisy_next_window", "score"})
     EXPECT_TRUE(p.contains(key)) << key;
   EXPECT_EQ(p["next"], 2);  // the lowest id left
   if (p["next_feasible"].get<bool>()) {
@@ -47,8 +47,10 @@ TEST(CliPlanShotPosition, JsonGivesEveryShotsLeaveAndPlaysTheBestScore) {
   } else {
     EXPECT_TRUE(p["next_ball"].is_null());
   }
-  EXPECT_DOUBLE_EQ(p["score"].get<double>(),
-                   p["screened_probability"].get<double>() * p["next_success_probability"].get<double>());
+  // scored on the noisy successes' leaves when there are any
+  const double next = p["noisy_leaves"].get<int>() > 0 ? p["noisy_next_window"].get<double>()
+                                                       : p["next_success_probability"].get<double>();
+  EXPECT_DOUBLE_EQ(p["score"].get<double>(), p["screened_probability"].get<double>() * next);
   // The cue ball's leave is where the noise-free shot's prediction puts it.
   for (const nlohmann::json& b : j["predicted"]) {
     if (b["id"] == 0) {

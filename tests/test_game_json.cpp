@@ -277,6 +277,44 @@ TEST(GameJson, RecordsReplayBitForBitAndNameTheFirstDifference) {
   });
 }
 
+TEST(GameJson, AnAgentsReasoningRoundTripsInARecord) {
+  AgentOptions planner;
+  planner.kind = AgentKind::planner;
+  planner.simulations = kMinPlanSimulations;
+  AgentOptions random;
+  random.kind = AgentKind::random;
+  GameConfig config = default_config(GameKind::nine_ball);
+  config.max_shots = 3;
+  const GameRecord game = play_game(config, {planner, random}, 4);
+  // the planner breaks: its reasoning says so; the random agent's steps have none
+  ASSERT_GE(game.steps.size(), 2u);
+  EXPECT_EQ(game.steps[0].reasoning.summary, "break");
+  const std::string text = game_records_to_json({game});
+  const std::vector<GameRecord> back = game_records_from_json(text);
+  ASSERT_EQ(back.front().steps.size(), game.steps.size());
+  for (std::size_t k = 0; k < game.steps.size(); ++k) {
+    const Reasoning& a = game.steps[k].reasoning;
+    const Reasoning& b = back.front().steps[k].reasoning;
+    EXPECT_EQ(a.summary, b.summary);
+    ASSERT_EQ(a.considered.size(), b.considered.size());
+    for (std::size_t j = 0; j < a.considered.size(); ++j) {
+      EXPECT_EQ(a.considered[j].what, b.considered[j].what);
+      EXPECT_DOUBLE_EQ(a.considered[j].estimate, b.considered[j].estimate);
+      EXPECT_DOUBLE_EQ(a.considered[j].next_estimate, b.considered[j].next_estimate);
+    }
+  }
+  EXPECT_EQ(game_records_to_json(back), text);
+  // a bad estimate is named by its path
+  GameRecord bad = game;
+  bad.steps[0].reasoning.considered = {{"a shot", 0.5, -1.0}};
+  std::string bad_text = game_records_to_json({bad});
+  const std::size_t at = bad_text.find("\"estimate\":0.5");
+  ASSERT_NE(at, std::string::npos);
+  bad_text.replace(at, 14, "\"estimate\":1.5");
+  expect_invalid("record.games[0].steps[0].reasoning.considered[0].estimate",
+                 [&] { (void)game_records_from_json(bad_text); });
+}
+
 TEST(GameJson, ConfigsRoundTripWithTheirVariants) {
   GameConfig c = default_config(GameKind::eight_ball);
   c.break_scratch_region = PlacementRegion::Kind::anywhere;

@@ -8,6 +8,7 @@
 
 #include "cueball/agents/agent.hpp"
 #include "cueball/agents/match.hpp"
+#include "cueball/core/errors.hpp"
 #include "cueball/games/break_shot.hpp"
 #include "cueball/games/game.hpp"
 #include "cueball/io/game_viewer_json.hpp"
@@ -141,6 +142,44 @@ TEST(GameViewerJson, ARecordReplaysToTheSameDocument) {
   EXPECT_EQ(game.at("players"), nlohmann::json::array({"ghost_ball", "random"}));
   const GameState& end = record.steps.back().state;
   EXPECT_EQ(game.at("end_reason"), end.end_reason);
+}
+
+TEST(GameViewerJson, AnAgentsReasoningIsInItsEntry) {
+  // the planner agent's reasoning recorded by play_game reaches the document;
+  // the ghost-ball agent weighs nothing and its entries have none
+  GameConfig config = default_config(GameKind::nine_ball);
+  config.max_shots = 4;
+  AgentOptions planner = agent(AgentKind::planner);
+  planner.simulations = kMinPlanSimulations;
+  const GameRecord record = play_game(config, {planner, agent(AgentKind::ghost_ball)}, 3);
+  const auto shots = nlohmann::json::parse(game_viewer_json(record)).at("game").at("shots");
+  ASSERT_EQ(shots.size(), record.steps.size());
+  int with = 0;
+  for (std::size_t k = 0; k < record.steps.size(); ++k) {
+    const Reasoning& r = record.steps[k].reasoning;
+    const GameState& before = k == 0 ? record.start : record.steps[k - 1].state;
+    EXPECT_EQ(shots[k].contains("reasoning"), before.to_shoot == 0) << k;
+    if (!shots[k].contains("reasoning")) continue;
+    ++with;
+    EXPECT_EQ(shots[k].at("reasoning").at("summary"), r.summary);
+    ASSERT_EQ(shots[k].at("reasoning").at("considered").size(), r.considered.size());
+    for (std::size_t j = 0; j < r.considered.size(); ++j) {
+      EXPECT_EQ(shots[k].at("reasoning").at("considered")[j].at("what"), r.considered[j].what);
+      if (r.considered[j].estimate >= 0.0) {
+        EXPECT_DOUBLE_EQ(shots[k].at("reasoning").at("considered")[j].at("estimate").get<double>(), r.considered[j].estimate);
+      }
+    }
+  }
+  EXPECT_GT(with, 0);
+  // a reasoning list of the wrong length is refused
+  std::vector<GameStep> steps;
+  GameState s = record.start;
+  for (const RecordedStep& r : record.steps) {
+    steps.push_back(play(s, r.action, r.seed));
+    s = steps.back().next;
+  }
+  EXPECT_THROW((void)game_viewer_json(record.start, steps, record.players, -1, std::vector<Reasoning>(1)),
+               InvalidArgument);
 }
 
 TEST(GameViewerJson, AnEmptyGameHasNoShots) {

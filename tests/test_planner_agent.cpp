@@ -67,6 +67,41 @@ TEST(PlannerAgent, PotsAndIsDeterministicForASeed) {
   EXPECT_NO_THROW((void)play(s, p.action, 5));
 }
 
+TEST(PlannerAgent, ItsReasoningIsTheShotPlannedAndTheAlternatives) {
+  const GameState s = in_play({{0, {0.62, 0.62}}, {1, {0.45, 0.45}}, {2, {1.8, 0.9}}, {9, {2.2, 0.3}}});
+  for (const int position : {0, kMinPlanSimulations}) {
+    AgentOptions o = cheap();
+    o.position_simulations = position;
+    const PlannerChoice c = planner_choice(o, s, 5);
+    const AgentChoice a = choose(o, s, 5);
+    EXPECT_EQ(a.action.strike, c.action.strike);
+    EXPECT_EQ(a.action.place, c.action.place);
+    EXPECT_EQ(a.action.strike, choose_action(o, s, 5).strike);
+    EXPECT_EQ(a.reasoning.summary, c.detail);
+    ASSERT_FALSE(a.reasoning.considered.empty());
+    // the chosen shot first, with the estimates the choice reports
+    EXPECT_DOUBLE_EQ(a.reasoning.considered.front().estimate, c.success_probability);
+    EXPECT_DOUBLE_EQ(a.reasoning.considered.front().next_estimate, c.next_success_probability);
+    EXPECT_NE(a.reasoning.summary.find(a.reasoning.considered.front().what), std::string::npos);
+    for (const ConsideredOption& k : a.reasoning.considered) {
+      EXPECT_FALSE(k.what.empty());
+      EXPECT_LE(k.estimate, 1.0);
+      EXPECT_EQ(k.next_estimate >= 0.0, position > 0) << k.what;
+    }
+  }
+  // a decision: the policy's reason and the estimate behind it
+  GameState push = in_play({{0, {0.62, 0.62}}, {1, {0.45, 0.45}}, {9, {2.2, 0.3}}});
+  push.phase = GamePhase::decision;
+  push.decisions = {Decision::play, Decision::pass};
+  const PlannerChoice c = planner_choice(cheap(), push, 2);
+  const AgentChoice d = choose(cheap(), push, 2);
+  ASSERT_TRUE(d.action.decision);
+  EXPECT_EQ(d.action.decision, c.action.decision);
+  EXPECT_EQ(d.reasoning.summary.rfind(to_string(*d.action.decision), 0), 0u) << d.reasoning.summary;
+  ASSERT_EQ(d.reasoning.considered.size(), 1u);
+  EXPECT_DOUBLE_EQ(d.reasoning.considered.front().estimate, c.success_probability);
+}
+
 TEST(PlannerAgent, BallInHandIsPlacedInsideTheRegion) {
   AgentOptions o = cheap();
   o.position_simulations = kMinPlanSimulations;

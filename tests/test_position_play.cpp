@@ -108,7 +108,8 @@ TEST(PositionPlay, PlaysTheCandidateWithTheBestTwoBallScoreAndEachLeaveIsReprodu
   for (unsigned seed : {3u, 4u, 5u, 6u}) {
     SCOPED_TRACE(seed);
     const Scenario s = random_layout(seed);
-    const PositionRequest q = request_for(1);
+    PositionRequest q = request_for(1);
+    if (seed % 2 == 1) q.noisy_leaves = 0;  // the noise-free leave alone
     PositionPlanResult r;
     try {
       r = plan_shot_for_position(s, q);
@@ -128,7 +129,19 @@ TEST(PositionPlay, PlaysTheCandidateWithTheBestTwoBallScoreAndEachLeaveIsReprodu
     // Each leave's next probability is that of an independent plan on the table it leaves.
     const auto check = [&](const PlannedShot& shot, const Leave& leave) {
       const std::optional<double> p_next = next_probability(s, shot, r.plan.cue_ball, 2, q.next_simulations);
-      EXPECT_DOUBLE_EQ(leave.score, two_ball_score(s, shot, leave.screened_probability, r.plan.cue_ball, 2, q.next_simulations));
+      // scored on the noisy successes' leaves (the mean of the next shot's
+      // best window there), or on the noise-free leave when none succeeded
+      EXPECT_LE(leave.noisy_leaves, q.noisy_leaves);
+      EXPECT_GE(leave.noisy_next_window, 0.0);
+      EXPECT_LE(leave.noisy_next_window, 1.0);
+      if (leave.noisy_leaves > 0) {
+        EXPECT_DOUBLE_EQ(leave.score, leave.screened_probability * leave.noisy_next_window);
+      } else {
+        EXPECT_DOUBLE_EQ(leave.score, two_ball_score(s, shot, leave.screened_probability, r.plan.cue_ball, 2, q.next_simulations));
+      }
+      if (q.noisy_leaves > 0 && leave.screened_probability > 0.0 && p_next) {
+        EXPECT_GT(leave.noisy_leaves, 0);
+      }
       if (p_next) {
         ++lookahead;
         EXPECT_EQ(leave.next_success_probability, *p_next);
@@ -223,6 +236,11 @@ TEST(PositionPlay, BadInputNamesTheField) {
   q = request_for(1);
   q.next_simulations = 10;
   EXPECT_EQ(field(q), "next_simulations");
+  q = request_for(1);
+  q.noisy_leaves = -1;
+  EXPECT_EQ(field(q), "noisy_leaves");
+  q.noisy_leaves = kMaxPositionNoisyLeaves + 1;
+  EXPECT_EQ(field(q), "noisy_leaves");
   q = request_for(5);
   EXPECT_EQ(field(q), "target");
   q = request_for(1);

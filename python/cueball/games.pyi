@@ -151,7 +151,7 @@ def play(state: GameState, action: Action, seed: int = 0) -> GameStep:
     """Plays the action; step.next is the state after it."""
 
 def choose_action(
-    state: GameState, agent: str = "random", seed: int = 0, simulations: int = 2000, noise: str | dict[str, float] | None = None
+    state: GameState, agent: str = "random", seed: int = 0, simulations: int | None = None, noise: str | dict[str, float] | None = None
 ) -> Action:
     """The agent's action for the player to act (always legal)."""
 
@@ -173,7 +173,7 @@ def play_game(
     config: GameConfig | str,
     players: tuple[str, str] | list[str] = ("random", "random"),
     seed: int = 0,
-    simulations: int = 2000,
+    simulations: int | None = None,
     noise: str | dict[str, float] | None = None,
 ) -> GameRecord:
     """Plays one game between two agents and records it."""

@@ -48,12 +48,16 @@ GameConfig config_argument(const py::object& config) {
 
 double radius_of(const GameConfig& c) { return cueball::preset_table(c.table).ball.radius; }
 
-cueball::AgentKind agent_kind(const std::string& name, const std::string& field) {
-  const std::optional<cueball::AgentKind> kind = cueball::agent_kind_from_string(name);
-  if (!kind)
+// An agent by name (agents/agent.hpp, agent_named()), its engine runs a
+// decision when given.
+cueball::AgentOptions agent_options(const std::string& name, const std::string& field, std::optional<int> simulations) {
+  const std::optional<cueball::AgentOptions> agent = cueball::agent_named(name);
+  if (!agent)
     throw cueball::InvalidArgument(field, field + " = " + cueball::quote_input(name) + " is not an agent; allowed: " +
-                                              cueball::agent_kind_names());
-  return *kind;
+                                              cueball::agent_names());
+  cueball::AgentOptions o = *agent;
+  if (simulations) o.simulations = *simulations;
+  return o;
 }
 
 py::object region_object(const std::optional<cueball::PlacementRegion>& r) {
@@ -338,18 +342,19 @@ void bind_games(py::module_& parent) {
   // ---------------------------------------------------------------- agents
   m.def(
       "choose_action",
-      [](const GameState& s, const std::string& agent, std::uint64_t seed, int simulations, const py::object& noise) {
-        cueball::AgentOptions o;
-        o.kind = agent_kind(agent, "agent");
-        o.simulations = simulations;
+      [](const GameState& s, const std::string& agent, std::uint64_t seed, std::optional<int> simulations,
+         const py::object& noise) {
+        cueball::AgentOptions o = agent_options(agent, "agent", simulations);
         o.noise = noise_argument(noise, s.table.table.ball.radius);
         if (!o.noise) o.noise = s.config.noise;
         py::gil_scoped_release release;
         return cueball::choose_action(o, s, seed);
       },
-      "state"_a, "agent"_a = "random", "seed"_a = 0, "simulations"_a = 2000, "noise"_a = py::none(),
+      "state"_a, "agent"_a = "random", "seed"_a = 0, "simulations"_a = py::none(), "noise"_a = py::none(),
       "The agent's action for the player to act (always legal). agent: 'random', 'ghost_ball',\n"
-      "'planner', 'carom_search' or 'safety_planner'; noise: what the agent plans under (default: the game's).");
+      "'planner', 'carom_search', 'safety_planner' or 'strongest' (the safety planner with position play);\n"
+      "simulations: engine runs a decision (default: the agent's own, 2000; strongest 4000); noise: what the\n"
+      "agent plans under (default: the game's).");
 
   // ---------------------------------------------------------------- records
   py::class_<GameRecord> record_class(m, "GameRecord",
@@ -396,20 +401,19 @@ void bind_games(py::module_& parent) {
 
   m.def(
       "play_game",
-      [](const py::object& config, const std::array<std::string, 2>& players, std::uint64_t seed, int simulations,
-         const py::object& noise) {
+      [](const py::object& config, const std::array<std::string, 2>& players, std::uint64_t seed,
+         std::optional<int> simulations, const py::object& noise) {
         GameConfig c = config_argument(config);
         if (const auto n = noise_argument(noise, radius_of(c))) c.noise = *n;
         std::array<cueball::AgentOptions, 2> agents;
         for (std::size_t p = 0; p < 2; ++p) {
-          agents[p].kind = agent_kind(players[p], "players[" + std::to_string(p) + "]");
-          agents[p].simulations = simulations;
+          agents[p] = agent_options(players[p], "players[" + std::to_string(p) + "]", simulations);
           agents[p].noise = c.noise;
         }
         py::gil_scoped_release release;
         return cueball::play_game(c, agents, seed);
       },
-      "config"_a, "players"_a = std::array<std::string, 2>{"random", "random"}, "seed"_a = 0, "simulations"_a = 2000,
+      "config"_a, "players"_a = std::array<std::string, 2>{"random", "random"}, "seed"_a = 0, "simulations"_a = py::none(),
       "noise"_a = py::none(),
       "Plays one game between two agents (players[0] breaks) and records it, as `cueball game play`\n"
       "does with --seed seed: the same seeds, the same game. noise: the game's execution noise\n"

@@ -33,12 +33,36 @@ const char* to_string(AgentKind kind) {
 std::optional<AgentKind> agent_kind_from_string(std::string_view name) { return value_named(kAgentKinds, name); }
 std::string agent_kind_names() { return names_of(kAgentKinds, ""); }
 
+AgentOptions strongest_agent() {
+  AgentOptions o;
+  o.kind = AgentKind::safety_planner;
+  o.simulations = kStrongestSimulations;
+  o.position_simulations = kStrongestPositionSimulations;
+  o.fallback_kinds = {ShotKind::kick};
+  return o;
+}
+
+std::optional<AgentOptions> agent_named(std::string_view name) {
+  if (name == "strongest") return strongest_agent();
+  const std::optional<AgentKind> kind = agent_kind_from_string(name);
+  if (!kind) return std::nullopt;
+  AgentOptions o;
+  o.kind = *kind;
+  return o;
+}
+
+std::string agent_names() { return agent_kind_names() + ", strongest"; }
+
 void validate(const AgentOptions& options) {
   if (options.simulations < 1 || options.simulations > 1'000'000)
     throw InvalidArgument("simulations", std::to_string(options.simulations) + " is out of range [1, 1000000]");
   if (options.position_simulations < 0 || options.position_simulations > 1'000'000)
     throw InvalidArgument("position_simulations",
                           std::to_string(options.position_simulations) + " is out of range [0, 1000000]");
+  if (options.position_noisy_leaves < 0 || options.position_noisy_leaves > kMaxPositionNoisyLeaves)
+    throw InvalidArgument("position_noisy_leaves", std::to_string(options.position_noisy_leaves) +
+                                                       " is out of range [0, " +
+                                                       std::to_string(kMaxPositionNoisyLeaves) + "]");
   if (options.noise) validate(*options.noise);
   if (options.kinds.empty()) throw InvalidArgument("kinds", "is empty; allowed: one or more of " + shot_kind_names());
   const auto no_repeat = [](const std::vector<ShotKind>& kinds, const char* field) {
@@ -51,17 +75,57 @@ void validate(const AgentOptions& options) {
   no_repeat(options.fallback_kinds, "fallback_kinds");
 }
 
-Action choose_action(const AgentOptions& options, const GameState& state, std::uint64_t seed) {
+namespace {
+
+// A planner agent's reasoning: its one-line detail and the options it
+// weighed (the chosen one alone when it lists none).
+Reasoning reasoning_of(PlannerChoice&& c) {
+  Reasoning r;
+  r.summary = std::move(c.detail);
+  r.considered = std::move(c.considered);
+  if (r.considered.empty() && c.success_probability >= 0.0)
+    r.considered.push_back({r.summary, c.success_probability, c.next_success_probability});
+  return r;
+}
+
+Reasoning reasoning_of(const CaromSearchResult& c) {
+  Reasoning r;
+  const double share = c.noisy_tries > 0 ? static_cast<double>(c.noisy_points) / c.noisy_tries : -1.0;
+  r.summary = std::string("carom_search: the strike found ") + (c.point ? "scores" : "does not score") +
+              " noise-free; " + std::to_string(c.noisy_points) + " of " + std::to_string(c.noisy_tries) +
+              " noisy repeats score (" + std::to_string(c.simulations) + " engine runs)";
+  r.considered.push_back({"the strike found", share, -1.0});
+  return r;
+}
+
+}  // namespace
+
+AgentChoice choose(const AgentOptions& options, const GameState& state, std::uint64_t seed) {
   validate(options);
   if (state.over) throw InvalidArgument("state", "the game is over (" + state.end_reason + ")");
   switch (options.kind) {
-    case AgentKind::random: return random_action(state, seed);
-    case AgentKind::ghost_ball: return ghost_ball_action(state, seed);
-    case AgentKind::planner: return planner_action(options, state, seed);
-    case AgentKind::carom_search: return carom_search_action(options, state, seed);
-    case AgentKind::safety_planner: return safety_planner_action(options, state, seed);
+    case AgentKind::random: return {random_action(state, seed), {}};          // nothing weighed
+    case AgentKind::ghost_ball: return {ghost_ball_action(state, seed), {}};  // a rule, nothing weighed
+    case AgentKind::planner: {
+      PlannerChoice c = planner_choice(options, state, seed);
+      Action a = c.action;
+      return {std::move(a), reasoning_of(std::move(c))};
+    }
+    case AgentKind::carom_search: {
+      const CaromSearchResult c = carom_search(options, state, seed);
+      return {c.action, reasoning_of(c)};
+    }
+    case AgentKind::safety_planner: {
+      PlannerChoice c = safety_planner_choice(options, state, seed);
+      Action a = c.action;
+      return {std::move(a), reasoning_of(std::move(c))};
+    }
   }
   throw InvalidArgument("kind", "unknown agent; allowed: " + agent_kind_names());
+}
+
+Action choose_action(const AgentOptions& options, const GameState& state, std::uint64_t seed) {
+  return choose(options, state, seed).action;
 }
 
 // ------------------------------------------------------------------ shared by the pool agents

@@ -34,10 +34,11 @@ GameRecord play_game(const GameConfig& config, const std::array<AgentOptions, 2>
   record.start = new_game(config, seed);
   GameState state = record.start;
   for (int k = 0; !state.over; ++k) {
-    const Action action = choose_action(players[slot(state.to_shoot)], state, agent_seed(seed, k));
-    GameStep step = play(state, action, shot_seed(seed, k));
+    AgentChoice choice = choose(players[slot(state.to_shoot)], state, agent_seed(seed, k));
+    GameStep step = play(state, choice.action, shot_seed(seed, k));
     state = step.next;
-    record.steps.push_back(RecordedStep{action, shot_seed(seed, k), std::move(step.ruling), std::move(step.next)});
+    record.steps.push_back(RecordedStep{choice.action, shot_seed(seed, k), std::move(step.ruling), std::move(step.next),
+                                        std::move(choice.reasoning)});
   }
   return record;
 }

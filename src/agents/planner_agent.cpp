@@ -55,6 +55,7 @@ struct Pot {
   double next = -1.0;
   long long simulations = 0;
   std::string detail;
+  std::vector<ConsideredOption> considered;  // the shot, then the plan's alternatives
 };
 
 PlanRequest plan_request(const Turn& t, const std::vector<int>& targets, const std::vector<ShotKind>& kinds,
@@ -83,6 +84,20 @@ std::string describe(const PlannedShot& s) {
   std::snprintf(b, sizeof b, " (window %.3f, screen %.3f)", s.window_probability, s.success_probability);
   return std::string(to_string(s.kind)) + " " + std::to_string(s.target) + " " + s.pocket_name +
          (s.cushion.empty() ? "" : " off " + s.cushion) + b;
+}
+
+// The shots a plan weighed, the chosen one first, at most kConsideredShown
+// (with position play each with its leave's next-shot estimate).
+constexpr std::size_t kConsideredShown = 6;
+std::vector<ConsideredOption> considered_of(const ShotPlanResult& plan, const Leave* leave,
+                                            const std::vector<Leave>& alternative_leaves) {
+  std::vector<ConsideredOption> out;
+  const auto next_of = [](const Leave* l) { return l ? (l->next_feasible ? l->next_success_probability : 0.0) : -1.0; };
+  out.push_back({describe(plan.shot), plan.shot.success_probability, next_of(leave)});
+  for (std::size_t k = 0; k < plan.alternatives.size() && out.size() < kConsideredShown; ++k)
+    out.push_back({describe(plan.alternatives[k]), plan.alternatives[k].success_probability,
+                   next_of(k < alternative_leaves.size() ? &alternative_leaves[k] : nullptr)});
+  return out;
 }
 
 // The next targets after a shot at any of `targets`: with one, next_targets();
@@ -116,6 +131,7 @@ Pot plan_pot(const Turn& t, const std::vector<ShotKind>& kinds) {
       p.shot = q;
       p.next_targets = next_targets_of(t.state, t.targets);
       p.next_simulations = position ? t.options.position_simulations : kInHandNextSimulations;
+      p.noisy_leaves = t.options.position_noisy_leaves;
       PositionPlanResult pr;
       if (in_hand) {
         BallInHandRequest h{p, std::nullopt};
@@ -128,10 +144,12 @@ Pot plan_pot(const Turn& t, const std::vector<ShotKind>& kinds) {
         pr = plan_shot_for_position(t.state.table, p);
       }
       pot.next = pr.leave.next_feasible ? pr.leave.next_success_probability : 0.0;
+      pot.considered = considered_of(pr.plan, &pr.leave, pr.alternative_leaves);
       pot.shot = std::move(pr.plan.shot);
       pot.simulations = pr.plan.simulations;
     } else {
       ShotPlanResult r = plan_shot(t.state.table, q);
+      pot.considered = considered_of(r, nullptr, {});
       pot.shot = std::move(r.shot);
       pot.simulations = r.simulations;
     }
@@ -206,6 +224,7 @@ bool pot(Turn& t) {
     t.choice.success_probability = p.shot.success_probability;
     t.choice.next_success_probability = p.next;
     t.choice.detail = (round == 0 ? "" : "fallback: ") + p.detail;
+    t.choice.considered = p.considered;
     if (t.legal.call_required) {
       t.choice.action.called_ball = p.shot.target;
       t.choice.action.called_pocket = p.shot.pocket;

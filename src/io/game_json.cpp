@@ -686,15 +686,35 @@ Ruling read_ruling(const Json& j, const std::string& path) {
 
 constexpr const char* kRecordFormat = "cueball-game-record";
 
+Reasoning read_reasoning(const Json& j, const std::string& path) {
+  const Reader r(j, path);
+  r.allow_only({"summary", "considered"});
+  Reasoning out;
+  out.summary = r.text("summary", "");
+  if (r.has("considered")) {
+    const Json& list = r.array("considered", 1000);
+    for (std::size_t i = 0; i < list.size(); ++i) {
+      const Reader c(list[i], r.field("considered") + "[" + std::to_string(i) + "]");
+      c.allow_only({"what", "estimate", "next_estimate"});
+      out.considered.push_back({c.text("what", ""), c.number("estimate", -1.0, 0.0, 1.0, "a probability"),
+                                c.number("next_estimate", -1.0, 0.0, 1.0, "a probability")});
+    }
+  }
+  return out;
+}
+
 Json record_json(const GameRecord& g) {
   Json j;
   j["players"] = Json::array({g.players[0], g.players[1]});
   j["seed"] = g.seed;
   j["start"] = state_json(g.start);
   Json steps = Json::array();
-  for (const RecordedStep& s : g.steps)
-    steps.push_back({{"action", action_json(s.action)}, {"seed", s.seed}, {"ruling", ruling_json(s.ruling)},
-                     {"state", state_json(s.state)}});
+  for (const RecordedStep& s : g.steps) {
+    Json step{{"action", action_json(s.action)}, {"seed", s.seed}, {"ruling", ruling_json(s.ruling)},
+              {"state", state_json(s.state)}};
+    if (io::has_reasoning(s.reasoning)) step["reasoning"] = io::reasoning_json(s.reasoning);
+    steps.push_back(std::move(step));
+  }
   j["steps"] = steps;
   return j;
 }
@@ -716,7 +736,7 @@ GameRecord read_record(const Json& j, const std::string& path) {
     const Json& steps = r.array("steps", 1000000);
     for (std::size_t i = 0; i < steps.size(); ++i) {
       const Reader s(steps[i], r.field("steps") + "[" + std::to_string(i) + "]");
-      s.allow_only({"action", "seed", "ruling", "state"});
+      s.allow_only({"action", "seed", "ruling", "state", "reasoning"});
       for (const char* key : {"action", "ruling", "state"})
         if (!s.has(key)) throw InvalidArgument(s.field(key), s.field(key) + " is required");
       RecordedStep step;
@@ -724,6 +744,7 @@ GameRecord read_record(const Json& j, const std::string& path) {
       step.seed = s.seed("seed", 0);
       step.ruling = read_ruling(s.at("ruling"), s.field("ruling"));
       step.state = read_state(s.at("state"), s.field("state"));
+      if (s.has("reasoning")) step.reasoning = read_reasoning(s.at("reasoning"), s.field("reasoning"));
       g.steps.push_back(std::move(step));
     }
   }
@@ -900,5 +921,22 @@ std::optional<ReplayDifference> replay_difference(const GameRecord& record, int 
   }
   return std::nullopt;
 }
+
+namespace io {
+
+nlohmann::json reasoning_json(const Reasoning& r) {
+  nlohmann::json considered = nlohmann::json::array();
+  for (const ConsideredOption& c : r.considered) {
+    nlohmann::json o{{"what", c.what}};
+    if (c.estimate >= 0.0) o["estimate"] = c.estimate;
+    if (c.next_estimate >= 0.0) o["next_estimate"] = c.next_estimate;
+    considered.push_back(std::move(o));
+  }
+  return {{"summary", r.summary}, {"considered", considered}};
+}
+
+bool has_reasoning(const Reasoning& r) { return !r.summary.empty() || !r.considered.empty(); }
+
+}  // namespace io
 
 }  // namespace cueball

@@ -6,7 +6,9 @@
 
 #include <nlohmann/json.hpp>
 
+#include "cueball/core/errors.hpp"
 #include "cueball/io/result_json.hpp"
+#include "io/json_output.hpp"
 #include "cueball/simulation/simulator.hpp"
 
 namespace cueball {
@@ -68,10 +70,15 @@ std::string game_step_caption(const GameState& before, const GameStep& step) {
 }
 
 std::string game_viewer_json(const GameState& start, const std::vector<GameStep>& steps,
-                             const std::array<std::string, 2>& players, int indent) {
+                             const std::array<std::string, 2>& players, int indent,
+                             const std::vector<Reasoning>& reasoning) {
+  if (!reasoning.empty() && reasoning.size() != steps.size())
+    throw InvalidArgument("reasoning", static_cast<double>(reasoning.size()), std::to_string(steps.size()),
+                          "one reasoning per step, or none");
   Json shots = Json::array();
   const GameState* before = &start;
-  for (const GameStep& step : steps) {
+  for (std::size_t k = 0; k < steps.size(); ++k) {
+    const GameStep& step = steps[k];
     Json entry;
     entry["player"] = before->to_shoot;
     entry["caption"] = game_step_caption(*before, step);
@@ -83,6 +90,7 @@ std::string game_viewer_json(const GameState& start, const std::vector<GameStep>
       entry["foul"] = step.ruling.foul ? Json(to_string(*step.ruling.foul)) : Json(nullptr);
       entry["result"] = Json::parse(result_to_json(step.shot, step.result, 0.0, -1));
     }
+    if (!reasoning.empty() && io::has_reasoning(reasoning[k])) entry["reasoning"] = io::reasoning_json(reasoning[k]);
     shots.push_back(std::move(entry));
     before = &step.next;
   }
@@ -98,13 +106,15 @@ std::string game_viewer_json(const GameState& start, const std::vector<GameStep>
 
 std::string game_viewer_json(const GameRecord& record, int indent) {
   std::vector<GameStep> steps;
+  std::vector<Reasoning> reasoning;
   steps.reserve(record.steps.size());
   GameState state = record.start;
   for (const RecordedStep& recorded : record.steps) {
     steps.push_back(play(state, recorded.action, recorded.seed));
+    reasoning.push_back(recorded.reasoning);
     state = steps.back().next;
   }
-  return game_viewer_json(record.start, steps, record.players, indent);
+  return game_viewer_json(record.start, steps, record.players, indent, reasoning);
 }
 
 }  // namespace cueball

@@ -7,6 +7,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "cueball/games/record.hpp"
 #include "cueball/io/report.hpp"
 #include "cueball/simulation/scenario.hpp"
 #include "cueball/simulation/shot_facts.hpp"
@@ -32,6 +33,12 @@ nlohmann::json cue_json(const Scenario& s);
 double in_units(double x, double unit, std::optional<double> given);
 /// scenario_to_json() as a value.
 nlohmann::json scenario_json(const Scenario& s);
+/// An agent's reasoning (games/record.hpp) as a record's and the viewer's
+/// game document write it: {"summary", "considered": [{"what", "estimate",
+/// "next_estimate"}]}, each estimate only when known (>= 0) (game_json.cpp).
+nlohmann::json reasoning_json(const Reasoning& r);
+/// False for an empty reasoning (a user's action): nothing written.
+bool has_reasoning(const Reasoning& r);
 /// report_to_json() as a value, for the writers that add to a report
 /// (batch_json.cpp, cushion_json.cpp).
 nlohmann::ordered_json report_json(const Report& report);

@@ -24,6 +24,8 @@ Json leave_json(const Leave& l, int next) {
   j["next_pocket"] = text_or_null(l.next_pocket);
   j["next_ball"] = id_or_null(l.next_ball);
   j["screened_probability"] = l.screened_probability;
+  j["noisy_leaves"] = l.noisy_leaves;
+  j["noisy_next_window"] = l.noisy_next_window;
   j["score"] = l.score;
   return j;
 }

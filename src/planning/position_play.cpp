@@ -183,14 +183,28 @@ void score_leaves_by_windows(Lookahead& la, std::vector<Candidate>& candidates) 
   if (candidates.size() > kMaxPositionCandidates) candidates.resize(kMaxPositionCandidates);
 }
 
+// The mean over the tables some noisy successes leave of the best next
+// shot's window probability on each (1 where the shot left no next ball);
+// 0 for none.
+double noisy_next_window(Lookahead& la, const std::vector<Scenario>& leaves) {
+  if (leaves.empty()) return 0.0;
+  double sum = 0.0;
+  for (const Scenario& left : leaves) {
+    const std::vector<int> ids = next_ids_on(left, la, {});
+    sum += ids.empty() ? 1.0 : best_window_probability(left, next_request(la, ids), la.simulations);
+  }
+  return sum / static_cast<double>(leaves.size());
+}
+
 // Step 3: the finalists, each shot screened on the same noisy draws and the
 // next shot planned in full on the table it leaves; best score first.
 void screen_finalists(Lookahead& la, std::vector<Candidate>& candidates) {
   const PositionRequest& q = la.q;
   const int screen_shots = std::max(1, q.shot.simulations / kPositionScreenFraction);
   for (Candidate& c : candidates) {
-    set_estimate(c.shot, noisy_successes(la.s, q.shot, la.cue_id, c.shot, screen_shots, kScreenFirstShot),
-                 screen_shots);
+    const NoisyOutcomes screened =
+        noisy_outcomes(la.s, q.shot, la.cue_id, c.shot, screen_shots, kScreenFirstShot, q.noisy_leaves);
+    set_estimate(c.shot, screened.hits, screen_shots);
     c.shot.simulations += screen_shots;
     c.leave.screened_probability = c.shot.success_probability;
     la.simulations += screen_shots;
@@ -198,6 +212,8 @@ void screen_finalists(Lookahead& la, std::vector<Candidate>& candidates) {
       c.leave.score = c.leave.screened_probability;
       continue;
     }
+    c.leave.noisy_leaves = static_cast<int>(screened.leaves.size());
+    c.leave.noisy_next_window = noisy_next_window(la, screened.leaves);
     try {
       const ShotPlanResult n = plan_shot(c.left, next_request(la, c.next_ids));
       la.simulations += n.simulations;
@@ -209,7 +225,8 @@ void screen_finalists(Lookahead& la, std::vector<Candidate>& candidates) {
     } catch (const NoFeasibleShot&) {
       la.simulations += q.next_simulations;
     }
-    c.leave.score = c.leave.screened_probability * c.leave.next_success_probability;
+    c.leave.score = c.leave.screened_probability * (c.leave.noisy_leaves > 0 ? c.leave.noisy_next_window
+                                                                             : c.leave.next_success_probability);
   }
   std::stable_sort(candidates.begin(), candidates.end(),
                    [](const Candidate& a, const Candidate& b) { return a.leave.score > b.leave.score; });
@@ -245,6 +262,9 @@ PositionPlanResult plan_shot_for_position(const Scenario& table_state, const Pos
     throw InvalidArgument("next_simulations", static_cast<double>(q.next_simulations),
                           "[" + std::to_string(kMinPlanSimulations) + ", " + std::to_string(kMaxPlanSimulations) + "]",
                           "engine runs of each next-shot plan");
+  if (q.noisy_leaves < 0 || q.noisy_leaves > kMaxPositionNoisyLeaves)
+    throw InvalidArgument("noisy_leaves", static_cast<double>(q.noisy_leaves),
+                          "[0, " + std::to_string(kMaxPositionNoisyLeaves) + "]", "noisy leaves scored per finalist");
   PositionPlanResult result;
   // The cue ball as plan_shot() takes it (which checks it, the target and the rest).
   Lookahead la{s, q, cue_ball_id(s, q.shot), {}, q.shot, 0};

@@ -166,8 +166,8 @@ Scenario scenario_with_shot(const Scenario& table_state, int cue_ball, const Pla
   return s;
 }
 
-int noisy_successes(const Scenario& table_state, const PlanRequest& q, int cue_ball, const PlannedShot& shot, int shots,
-                    std::uint64_t first_shot) {
+NoisyOutcomes noisy_outcomes(const Scenario& table_state, const PlanRequest& q, int cue_ball, const PlannedShot& shot,
+                             int shots, std::uint64_t first_shot, int leaves) {
   Scenario noisy = table_state;
   noisy.cue = ShotStrike{};  // simulate_many strikes cue.ball with each action
   noisy.cue->ball = cue_ball;
@@ -182,14 +182,28 @@ int noisy_successes(const Scenario& table_state, const PlanRequest& q, int cue_b
   options.first_shot = first_shot;
   const ManyResult m = simulate_many(noisy, actions, {}, options);
   const auto n = static_cast<std::size_t>(m.balls);
-  int hits = 0;
-  for (std::size_t k = 0; k < static_cast<std::size_t>(m.shots); ++k)
-    hits += !m.miscue[k] && !m.failure[k] &&
-                    pots_target(m.first_contact[k], first_contact, m.pocket[k * n + target], pocket,
-                                m.pocketed[k * n + cue])
-                ? 1
-                : 0;
-  return hits;
+  NoisyOutcomes out;
+  for (std::size_t k = 0; k < static_cast<std::size_t>(m.shots); ++k) {
+    const bool hit = !m.miscue[k] && !m.failure[k] &&
+                     pots_target(m.first_contact[k], first_contact, m.pocket[k * n + target], pocket,
+                                 m.pocketed[k * n + cue]);
+    if (!hit) continue;
+    ++out.hits;
+    if (static_cast<int>(out.leaves.size()) >= leaves) continue;
+    std::vector<BallAfterShot> after;
+    for (std::size_t j = 0; j < n; ++j) {
+      const std::size_t e = k * n + j;
+      after.push_back({noisy.balls[j].id, {m.final_position[2 * e], m.final_position[2 * e + 1]}, m.pocketed[e] != 0,
+                       m.pocket[e]});
+    }
+    out.leaves.push_back(table_after(table_state, after));
+  }
+  return out;
+}
+
+int noisy_successes(const Scenario& table_state, const PlanRequest& q, int cue_ball, const PlannedShot& shot, int shots,
+                    std::uint64_t first_shot) {
+  return noisy_outcomes(table_state, q, cue_ball, shot, shots, first_shot, 0).hits;
 }
 
 void set_estimate(PlannedShot& shot, int hits, int shots) {

@@ -46,6 +46,17 @@ SearchedShots search_shots(const Scenario& table_state, const PlanRequest& q, co
 int noisy_successes(const Scenario& table_state, const PlanRequest& q, int cue_ball, const PlannedShot& shot, int shots,
                     std::uint64_t first_shot);
 
+/// What noisy repeats of a planned shot did (noisy_outcomes()).
+struct NoisyOutcomes {
+  int hits = 0;                  ///< successes by the planner's rule
+  std::vector<Scenario> leaves;  ///< the tables the first successes leave (balls at rest, the pocketed removed)
+};
+
+/// noisy_successes(), keeping the tables the first `leaves` successes leave
+/// (table_after(), simulation/scenario.hpp), in the stream's order.
+NoisyOutcomes noisy_outcomes(const Scenario& table_state, const PlanRequest& q, int cue_ball, const PlannedShot& shot,
+                             int shots, std::uint64_t first_shot, int leaves);
+
 /// Sets the shot's success probability to hits / shots, its standard error
 /// sqrt(p (1 - p) / shots) and noisy_shots to shots.
 void set_estimate(PlannedShot& shot, int hits, int shots);

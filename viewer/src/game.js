@@ -3,10 +3,13 @@
 //             "shots": [{"player", "caption", "scores": [p0, p1],
 //                        "foul": null | name, "result": <result JSON>}
 //                       or {"player", "caption", "scores", "decision": name,
-//                           "result": <the table as it stands> (optional)}]}}
+//                           "result": <the table as it stands> (optional)}],
+//             each with an optional "reasoning": {"summary", "considered":
+//             [{"what", "estimate"?, "next_estimate"?}]} (the agent's)}}
 // read and checked (loadGame), and the shot list beside the table: a click
 // on a row, the keys [ and ] or the prev/next buttons load that shot into
-// the viewer.
+// the viewer, and the agent's reasoning for it (the options it weighed and
+// their estimates) is shown under the caption.
 
 /** True when the embedded document is a game, not one result. */
 export function isGame(doc) {
@@ -15,6 +18,40 @@ export function isGame(doc) {
 
 function fail(path, what) {
   throw new Error(`${path}: ${what}`);
+}
+
+function checkProbability(value, path) {
+  if (value === undefined) return null;
+  if (typeof value !== 'number' || !(value >= 0 && value <= 1)) fail(path, 'expected a probability in [0, 1]');
+  return value;
+}
+
+/** An entry's "reasoning", checked: {summary, considered: [{what, estimate, next}]} or null. */
+export function loadReasoning(value, path) {
+  if (value === undefined || value === null) return null;
+  if (typeof value !== 'object') fail(path, 'expected an object');
+  const summary = value.summary === undefined ? '' : value.summary;
+  if (typeof summary !== 'string') fail(`${path}.summary`, 'expected a string');
+  const list = value.considered === undefined ? [] : value.considered;
+  if (!Array.isArray(list)) fail(`${path}.considered`, 'expected an array');
+  const considered = list.map((c, i) => {
+    const at = `${path}.considered[${i}]`;
+    if (!c || typeof c !== 'object' || typeof c.what !== 'string') fail(`${at}.what`, 'expected a string');
+    return {
+      what: c.what,
+      estimate: checkProbability(c.estimate, `${at}.estimate`),
+      next: checkProbability(c.next_estimate, `${at}.next_estimate`),
+    };
+  });
+  return { summary, considered };
+}
+
+/** One line of a weighed option: "direct 3 ...: P 0.82, next 0.75". */
+export function consideredLine(c) {
+  const parts = [];
+  if (c.estimate !== null) parts.push(`P ${c.estimate.toFixed(3)}`);
+  if (c.next !== null) parts.push(`next ${c.next.toFixed(3)}`);
+  return parts.length ? `${c.what}: ${parts.join(', ')}` : c.what;
 }
 
 function checkScores(value, path) {
@@ -60,6 +97,7 @@ export function loadGame(doc) {
       decision,
       result,
       atEnd,
+      reasoning: loadReasoning(shot.reasoning, `${path}.reasoning`),
     };
   });
   return {
@@ -142,6 +180,28 @@ export class GameList {
     if (game.entries.length === 0) el.shotCaption.textContent = 'no shots';
   }
 
+  /** The agent's reasoning under the caption: its summary, then the options weighed, the chosen first. */
+  showReasoning(reasoning) {
+    const box = this.el.shotReasoning;
+    if (!box) return;
+    box.replaceChildren();
+    box.hidden = !reasoning;
+    if (!reasoning) return;
+    const summary = document.createElement('div');
+    summary.className = 'reasoning-summary';
+    summary.textContent = reasoning.summary;
+    box.append(summary);
+    if (reasoning.considered.length === 0) return;
+    const list = document.createElement('ol');
+    list.className = 'reasoning-considered';
+    for (const c of reasoning.considered) {
+      const item = document.createElement('li');
+      item.textContent = consideredLine(c);
+      list.append(item);
+    }
+    box.append(list);
+  }
+
   step(delta) {
     const k = this.current + delta;
     if (k >= 0 && k < this.game.entries.length) this.select(k);
@@ -156,6 +216,7 @@ export class GameList {
     row.classList.add('current');
     row.scrollIntoView({ block: 'nearest' });
     this.el.shotCaption.textContent = entry.caption;
+    this.showReasoning(entry.reasoning);
     this.el.prevShot.disabled = index === 0;
     this.el.nextShot.disabled = index === this.game.entries.length - 1;
     this.show(entry);

@@ -34,6 +34,7 @@ function elements() {
     prevShot: get('prev-shot'),
     nextShot: get('next-shot'),
     shotCaption: get('shot-caption'),
+    shotReasoning: get('shot-reasoning'),
     shotList: get('shot-list'),
     gameResult: get('game-result'),
   };

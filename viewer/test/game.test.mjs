@@ -3,7 +3,7 @@
 import assert from 'node:assert/strict';
 import { describe, test } from 'node:test';
 import { ballLook, ballStyle } from '../src/balls.js';
-import { gameOutcome, isGame, loadGame } from '../src/game.js';
+import { consideredLine, gameOutcome, isGame, loadGame } from '../src/game.js';
 import { loadResult } from '../src/model.js';
 import { readFixture } from './helpers.mjs';
 
@@ -52,6 +52,34 @@ describe('game document', () => {
   test('a one-shot result is not a game', () => {
     assert.equal(isGame(breakResult), false);
     assert.equal(isGame(doc([])), true);
+  });
+
+  test("an agent's reasoning is read with its estimates; none is null", () => {
+    const reasoning = {
+      summary: 'direct 3 bottom-right (window 0.910, screen 0.880)',
+      considered: [
+        { what: 'direct 3 bottom-right', estimate: 0.88, next_estimate: 0.75 },
+        { what: 'bank 3 top-left', estimate: 0.41 },
+        { what: 'safety' },
+      ],
+    };
+    const game = loadGame(
+      doc([
+        { player: 0, caption: 'break', scores: [0, 0], foul: null, result: breakResult },
+        { player: 1, caption: 'a pot', scores: [0, 0], foul: null, result: cutResult, reasoning },
+      ]),
+    );
+    assert.equal(game.entries[0].reasoning, null);
+    const r = game.entries[1].reasoning;
+    assert.equal(r.summary, reasoning.summary);
+    assert.deepEqual(
+      r.considered.map(consideredLine),
+      ['direct 3 bottom-right: P 0.880, next 0.750', 'bank 3 top-left: P 0.410', 'safety'],
+    );
+    const bad = (value) => doc([{ player: 0, caption: 'x', scores: [0, 0], result: cutResult, reasoning: value }]);
+    assert.throws(() => loadGame(bad({ summary: 3 })), /game\.shots\[0\]\.reasoning\.summary/);
+    assert.throws(() => loadGame(bad({ considered: [{ what: 'x', estimate: 1.5 }] })), /reasoning\.considered\[0\]\.estimate/);
+    assert.throws(() => loadGame(bad({ considered: [{}] })), /reasoning\.considered\[0\]\.what/);
   });
 
   test('errors name the path', () => {

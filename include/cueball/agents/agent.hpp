@@ -42,6 +42,8 @@
 #include <vector>
 
 #include "cueball/games/game.hpp"
+#include "cueball/games/record.hpp"
+#include "cueball/planning/position_play.hpp"
 #include "cueball/planning/shot_planner.hpp"
 
 namespace cueball {
@@ -61,6 +63,9 @@ struct AgentOptions {
   int simulations = 2000;
   /// Engine runs of each next-shot plan in position play (planner; 0: no position play).
   int position_simulations = 0;
+  /// Position play: the noisy outcomes of each finalist whose leaves are
+  /// scored (PositionRequest::noisy_leaves; 0: the noise-free leave alone).
+  int position_noisy_leaves = kPositionNoisyLeaves;
   /// The execution noise the agent plans under (planner). None: the game's
   /// (GameConfig::noise), or tournament_noise() when the game has none (a
   /// plan under no noise cannot tell a safe pot from a thin one).
@@ -77,10 +82,37 @@ struct AgentOptions {
 /// Throws InvalidArgument naming the field ("simulations", ...).
 void validate(const AgentOptions& options);
 
+/// The strongest pool player of the agents (issue 27), and what the
+/// planner benchmark's run-out suite measures by default: the safety
+/// planner with each pot planned at kStrongestSimulations runs, played for
+/// position (kStrongestPositionSimulations runs of each next-shot plan), a
+/// kick when nothing else pots; three-cushion: carom_search at its default.
+inline constexpr int kStrongestSimulations = 4000;
+inline constexpr int kStrongestPositionSimulations = 1000;
+AgentOptions strongest_agent();
+
+/// An agent by the name a user gives (the CLI's --players, Python's
+/// opponents): an AgentKind's name (agent_kind_names(), its default
+/// options) or "strongest" (strongest_agent()). None for another name.
+std::optional<AgentOptions> agent_named(std::string_view name);
+/// The names agent_named() takes, comma-separated.
+std::string agent_names();
+
 /// The agent's action for the player to act in `state` (a game not over).
 /// Always legal: play(state, choose_action(...), s) never throws
 /// InvalidArgument for it.
 Action choose_action(const AgentOptions& options, const GameState& state, std::uint64_t seed);
+
+/// An action and why (games/record.hpp's Reasoning): the planner agents
+/// give the shot planned, its estimates and the alternatives they weighed,
+/// or the decision and the estimate behind it; carom_search its search's
+/// outcome; the ghost-ball and random agents none (they weigh nothing).
+struct AgentChoice {
+  Action action;
+  Reasoning reasoning;
+};
+/// choose_action() with its reasoning (the same action for the same seed).
+AgentChoice choose(const AgentOptions& options, const GameState& state, std::uint64_t seed);
 
 // The agents, one file each (src/agents/<agent>.cpp).
 Action random_action(const GameState& state, std::uint64_t seed);
@@ -211,6 +243,9 @@ struct PlannerChoice {
   /// One line: the shot planned ("in hand at (x, y): direct 1 into ..."),
   /// or why nothing potted.
   std::string detail;
+  /// The options weighed, the chosen first (the pot's alternatives, with
+  /// position play their leaves' next-shot estimates; a safety's candidates).
+  std::vector<ConsideredOption> considered;
 };
 
 /// The next shots' legal targets after a shot that pots `target`, as

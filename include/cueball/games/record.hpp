@@ -13,6 +13,21 @@
 
 namespace cueball {
 
+/// One option an agent weighed for an action (information only).
+struct ConsideredOption {
+  std::string what;            ///< the shot or decision, one line ("direct 3 into top-right ...")
+  double estimate = -1.0;      ///< its success probability, or a safety's value; -1 not estimated
+  double next_estimate = -1.0; ///< position play: the next shot's success probability from its leave; -1 none
+};
+
+/// Why an agent chose an action (information only: replaying a record does
+/// not use it): a one-line summary and the options it weighed, the chosen
+/// one first. Empty for a user's action or an agent that does not say.
+struct Reasoning {
+  std::string summary;
+  std::vector<ConsideredOption> considered;
+};
+
 /// One play() of a record: the action, the seed it was played with, and
 /// what it gave.
 struct RecordedStep {
@@ -20,6 +35,7 @@ struct RecordedStep {
   std::uint64_t seed = 0;  ///< play()'s seed (the execution noise)
   Ruling ruling;
   GameState state;         ///< the state after it
+  Reasoning reasoning;     ///< the agent's, when an agent chose the action
 };
 
 /// One game.

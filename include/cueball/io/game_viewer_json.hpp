@@ -30,14 +30,18 @@ std::string game_step_caption(const GameState& before, const GameStep& step);
 /// name, "result": the table as it stands (a result of the balls at rest,
 /// no cue)} for a decision. `start` is the state the first step was played
 /// from; winner and end_reason are the last step's (null and "" while the
-/// game goes on). `indent` as result_to_json (-1: one line).
+/// game goes on). `indent` as result_to_json (-1: one line). `reasoning`,
+/// when not empty, holds each step's agent reasoning (games/record.hpp), in
+/// order: an entry with any gets "reasoning": {"summary", "considered":
+/// [{"what", "estimate", "next_estimate"}]}, as a record writes it.
 std::string game_viewer_json(const GameState& start, const std::vector<GameStep>& steps,
-                             const std::array<std::string, 2>& players, int indent = -1);
+                             const std::array<std::string, 2>& players, int indent = -1,
+                             const std::vector<Reasoning>& reasoning = {});
 
 /// The game document of a record (games/record.hpp: `cueball game play
 /// --record`): its steps re-played from record.start with each step's action
 /// and seed (play() is deterministic, so the shots are the recorded ones),
-/// with the record's players.
+/// with the record's players and each step's reasoning.
 std::string game_viewer_json(const GameRecord& record, int indent = -1);
 
 }  // namespace cueball

@@ -27,17 +27,31 @@
 //      is screened on the same noisy draws (a kPositionScreenFraction-th of
 //      the request's budget: common random numbers, a paired comparison),
 //      and the next target's shot planned in full with plan_shot() on the
-//      table it leaves (the same kinds and noise, `next_simulations` runs). A
-//      next shot with no feasible candidate scores 0.
+//      table the noise-free shot leaves (the same kinds and noise,
+//      `next_simulations` runs). A next shot with no feasible candidate
+//      scores 0. The leaves of the first PositionRequest::noisy_leaves
+//      successes of the screen (the balls where each noisy shot left them)
+//      are scored too: the next shot's best window probability on each
+//      (1 where the shot left no next ball), averaged. Under the tournament
+//      noise a 0.075 m/s speed error moves the cue ball's stop by tens of
+//      centimetres, so a leave that is good only where the noise-free shot
+//      stops (a narrow window, a ball that blocks a few centimetres away)
+//      scores less than one good over the spread: the expectation over the
+//      shot's outcomes that the tournament programs' search takes (M. Smith,
+//      "PickPocket: A computer billiards shark", Artificial Intelligence 171
+//      (2007) 1069-1091, the expectimax's chance nodes; C. Archibald, A.
+//      Altman, Y. Shoham, "Analysis of a winning computational billiards
+//      player", IJCAI 2009, CueCard's sampled outcomes).
 //   4. The finalist played maximises P(this pot) x P(next pot), the
-//      probability of potting both under the noise (each estimated from
-//      noisy simulations; the product treats them as independent and takes
-//      the next shot from the noise-free leave: a one-shot lookahead, as in
-//      the computational-pool tournament programs' first level of search:
-//      M. Smith, "PickPocket: A computer billiards shark", Artificial
-//      Intelligence 171 (2007) 1069-1091). Its success probability is then
-//      measured on fresh draws (a kPositionEstimateFraction-th of the
-//      budget), so it carries no selection bias.
+//      probability of potting both under the noise: the screened
+//      probability times the mean next window over the noisy leaves (times
+//      the full next plan's probability from the noise-free leave when
+//      noisy_leaves is 0 or no noisy shot succeeded). The product treats the
+//      two as independent: a one-shot lookahead, as in the
+//      computational-pool tournament programs' first level of search. Its
+//      success probability is then measured on fresh draws (a
+//      kPositionEstimateFraction-th of the budget), so it carries no
+//      selection bias.
 //
 // The leave's quality is measured on the exact simulation and the real
 // planner, so it includes what the next shot needs (its cut, distance,
@@ -68,6 +82,10 @@ inline constexpr double kPositionKeepFraction = 0.5;
 inline constexpr std::size_t kPositionLeaves = 24;
 /// Most candidates whose leave is evaluated in full (the finalists).
 inline constexpr std::size_t kMaxPositionCandidates = 3;
+/// The finalists' noisy successes whose leaves are scored (step 3), at
+/// most, by default (PositionRequest::noisy_leaves), and the most allowed.
+inline constexpr int kPositionNoisyLeaves = 4;
+inline constexpr int kMaxPositionNoisyLeaves = 64;
 /// The finalists' common screen takes the request's budget over this; the
 /// final estimate of the one played, the budget over kPositionEstimateFraction.
 inline constexpr int kPositionScreenFraction = 5;
@@ -93,6 +111,10 @@ struct PositionRequest {
   std::vector<std::vector<int>> next_targets;
   /// Engine runs of each next-shot plan, [kMinPlanSimulations, kMaxPlanSimulations].
   int next_simulations = kMinPlanSimulations;
+  /// The noisy successes of each finalist whose leaves are scored (step 3),
+  /// [0, kMaxPositionNoisyLeaves]; 0: the noise-free leave alone, the next
+  /// shot's full plan from it (the one-shot lookahead before issue 27).
+  int noisy_leaves = kPositionNoisyLeaves;
 };
 
 /// What a candidate leaves for the next shot.
@@ -105,10 +127,17 @@ struct Leave {
   std::string next_kind;                   ///< the next shot's kind ("direct", ...); empty when infeasible
   std::string next_pocket;                 ///< the next shot's pocket name; empty when infeasible
   int next_ball = -1;                      ///< the ball the next shot's plan pots; -1 when none or infeasible
-  /// screened_probability x next_success_probability. When the noise-free
-  /// shot pots the next target too, next_* are of the ball after it (the
-  /// lowest id left); with no ball left, score = screened_probability.
+  /// screened_probability x noisy_next_window (x next_success_probability
+  /// when noisy_leaves is 0). When the noise-free shot pots the next target
+  /// too, next_* are of the ball after it (the lowest id left); with no ball
+  /// left, score = screened_probability.
   double score = 0.0;
+  /// The noisy successes of the finalists' screen whose leaves were scored
+  /// (at most PositionRequest::noisy_leaves; 0: the noise-free leave
+  /// scores), and the mean over them of the best next shot's window
+  /// probability.
+  int noisy_leaves = 0;
+  double noisy_next_window = 0.0;
 };
 
 struct PositionPlanResult {

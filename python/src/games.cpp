@@ -80,9 +80,22 @@ struct Step {
 };
 
 // A record's step, as in the record JSON.
+// An agent's reasoning (games/record.hpp) as a dict: {"summary", "considered":
+// [{"what", "estimate", "next_estimate"}]}, an unknown estimate None; None
+// when the step has none (a user's action, the random and ghost-ball agents).
+py::object reasoning_object(const cueball::Reasoning& r) {
+  if (r.summary.empty() && r.considered.empty()) return py::none();
+  const auto probability = [](double p) -> py::object { return p >= 0.0 ? py::object(py::float_(p)) : py::none(); };
+  py::list considered;
+  for (const cueball::ConsideredOption& c : r.considered)
+    considered.append(py::dict("what"_a = c.what, "estimate"_a = probability(c.estimate),
+                               "next_estimate"_a = probability(c.next_estimate)));
+  return py::dict("summary"_a = r.summary, "considered"_a = considered);
+}
+
 py::dict recorded_step(const cueball::RecordedStep& s) {
   return py::dict("action"_a = s.action, "seed"_a = s.seed, "ruling"_a = loads(cueball::ruling_to_json(s.ruling)),
-                  "state"_a = s.state);
+                  "state"_a = s.state, "reasoning"_a = reasoning_object(s.reasoning));
 }
 
 }  // namespace
@@ -370,7 +383,8 @@ void bind_games(py::module_& parent) {
             for (const cueball::RecordedStep& s : r.steps) out.append(recorded_step(s));
             return out;
           },
-          "[{action, seed, ruling, state}, ...]")
+          "[{action, seed, ruling, state, reasoning}, ...]: reasoning is the agent's ({summary, considered:\n"
+          "[{what, estimate, next_estimate}]}, the chosen option first) or None")
       .def_property_readonly("end", [](const GameRecord& r) { return r.steps.empty() ? r.start : r.steps.back().state; },
                              "The state after the last step")
       .def(

@@ -92,7 +92,8 @@ class GamesTest(unittest.TestCase):
         self.assertTrue(record.end.over)
         self.assertIsNone(record.replay())
         self.assertEqual(len(record.steps), record.end.shots)
-        self.assertEqual(set(record.steps[0]), {"action", "seed", "ruling", "state"})
+        self.assertEqual(set(record.steps[0]), {"action", "seed", "ruling", "state", "reasoning"})
+        self.assertIsNone(record.steps[0]["reasoning"])  # the random agent weighs nothing
         tally = record.tally()
         self.assertEqual(sum(tally["shots"]), len(record.steps))
         text = games.records_to_json([record])
@@ -106,6 +107,22 @@ class GamesTest(unittest.TestCase):
         with self.assertRaises(cueball.InvalidArgument) as e:
             games.choose_action(s, agent="shark")
         self.assertEqual(e.exception.field, "agent")
+
+    def test_the_planner_agents_reasoning_is_in_the_record(self):
+        game = games.play_game("nine_ball", ("planner", "ghost_ball"), seed=3, simulations=500, noise="tournament")
+        first = game.steps[0]["reasoning"]
+        self.assertEqual(first["summary"], "break")  # the planner breaks
+        planned = [s["reasoning"] for s in game.steps if s["reasoning"] and s["reasoning"]["considered"]]
+        for r in planned:
+            self.assertTrue(all(c["what"] for c in r["considered"]))
+            estimates = [c["estimate"] for c in r["considered"] if c["estimate"] is not None]
+            self.assertTrue(all(0.0 <= p <= 1.0 for p in estimates))
+        back = games.records_from_json(games.records_to_json([game]))[0]
+        self.assertEqual([s["reasoning"] for s in back.steps], [s["reasoning"] for s in game.steps])
+        # "strongest" is an agent name too (the safety planner with position play)
+        with self.assertRaises(cueball.InvalidArgument) as e:
+            games.play_game("nine_ball", ("strongest", "shark"))
+        self.assertEqual(e.exception.field, "players[1]")
 
     @unittest.skipUnless(os.environ.get("CUEBALL_BIN"), "needs the CLI (CUEBALL_BIN)")
     def test_records_load_in_both_the_cli_and_python(self):

@@ -31,7 +31,6 @@
 #include <string>
 #include <vector>
 
-#include <time.h>  // clock_gettime(CLOCK_THREAD_CPUTIME_ID)
 
 #include "tool_support.hpp"
 #include "cueball/agents/agent.hpp"
@@ -42,13 +41,9 @@ namespace {
 
 using namespace cueball;
 using cueball::tools::fmt;
+using cueball::tools::thread_cpu_seconds;
 constexpr tools::Flags kFlags{"cueball-agent-benchmark"};
 
-double thread_cpu_seconds() {
-  timespec t{};
-  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
-  return static_cast<double>(t.tv_sec) + 1e-9 * static_cast<double>(t.tv_nsec);
-}
 
 struct Options {
   GameKind game = GameKind::nine_ball;
@@ -310,22 +305,10 @@ int run(const Options& o) {
                 static_cast<double>(fouls[a]) / o.games, median(cpu[a]), cpu[a].size(), a == 0 ? "," : "");
   }
   json += " ]\n}\n";
-  if (!o.json.empty()) {
-    std::ofstream out(o.json);
-    if (!out) kFlags.bad("--json", o.json, "a writable file path");
-    out << json;
-  }
+  if (!o.json.empty()) tools::write_file(kFlags, "--json", o.json, json);
   return 0;
 }
 
 }  // namespace
 
-int main(int argc, char** argv) {
-  const Options o = parse(argc, argv);
-  try {
-    return run(o);
-  } catch (const std::exception& e) {
-    std::fprintf(stderr, "cueball-agent-benchmark: %s\n", e.what());
-    return 1;
-  }
-}
+int main(int argc, char** argv) { return cueball::tools::tool_main("cueball-agent-benchmark", parse(argc, argv), run); }

@@ -74,7 +74,6 @@
 #include <thread>
 #include <vector>
 
-#include <time.h>  // clock_gettime(CLOCK_THREAD_CPUTIME_ID): the calling thread's CPU time
 
 #include "tool_support.hpp"
 #include "cueball/agents/agent.hpp"
@@ -97,6 +96,7 @@ namespace {
 
 using namespace cueball;
 using cueball::tools::fmt;
+using cueball::tools::thread_cpu_seconds;
 using cueball::tools::quoted;
 constexpr tools::Flags kFlags{"cueball-planner-benchmark"};
 
@@ -118,13 +118,6 @@ constexpr std::uint64_t kScreenStream = 1, kMeasureStream = 2, kBreakStream = 3;
 
 double seconds_since(std::chrono::steady_clock::time_point t) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
-}
-// CPU time of the calling thread, s: a decision's cost on one core, whatever
-// else the machine runs (the wall-clock time is reported too).
-double thread_cpu_seconds() {
-  timespec t{};
-  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
-  return static_cast<double>(t.tv_sec) + 1e-9 * static_cast<double>(t.tv_nsec);
 }
 
 double angle_deg(Vec2 v) { return std::atan2(v.y, v.x) / kDeg; }
@@ -1019,22 +1012,10 @@ int run(const Options& o) {
     json += "  ]\n }";
   }
   json += "\n}\n";
-  if (!o.json.empty()) {
-    std::ofstream out(o.json);
-    if (!out) kFlags.bad("--json", o.json, "a writable file path");
-    out << json;
-  }
+  if (!o.json.empty()) tools::write_file(kFlags, "--json", o.json, json);
   return 0;
 }
 
 }  // namespace
 
-int main(int argc, char** argv) {
-  const Options o = parse(argc, argv);
-  try {
-    return run(o);
-  } catch (const std::exception& e) {
-    std::fprintf(stderr, "cueball-planner-benchmark: error: %s\n", e.what());
-    return 1;
-  }
-}
+int main(int argc, char** argv) { return cueball::tools::tool_main("cueball-planner-benchmark", parse(argc, argv), run); }

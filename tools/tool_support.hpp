@@ -10,7 +10,10 @@
 #include <cstdio>
 #include <cstdlib>
 #include <exception>
+#include <fstream>
 #include <string>
+
+#include <time.h>  // clock_gettime(CLOCK_THREAD_CPUTIME_ID)
 
 namespace cueball::tools {
 
@@ -76,5 +79,32 @@ struct Flags {
     return x;
   }
 };
+
+/// CPU time of the calling thread, s: a decision's cost on one core, whatever
+/// else the machine runs.
+inline double thread_cpu_seconds() {
+  timespec t{};
+  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
+  return static_cast<double>(t.tv_sec) + 1e-9 * static_cast<double>(t.tv_nsec);
+}
+
+/// Writes `text` to `path` (a --json file); a path that cannot be written is
+/// the flag's bad value (exit 2).
+inline void write_file(const Flags& flags, const char* flag, const std::string& path, const std::string& text) {
+  std::ofstream out(path);
+  if (!out) flags.bad(flag, path, "a writable file path");
+  out << text;
+}
+
+/// A tool's main: run(options), an engine error one line on stderr and exit status 1.
+template <class Options, class Run>
+int tool_main(const char* program, const Options& options, const Run& run) {
+  try {
+    return run(options);
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "%s: error: %s\n", program, e.what());
+    return 1;
+  }
+}
 
 }  // namespace cueball::tools

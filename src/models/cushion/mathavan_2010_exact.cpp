@@ -1025,17 +1025,19 @@ struct ExactLimits {
   // are large the directions turn slowly and an error committed there is not
   // amplified (the steps' errors add up to about the tolerance), while near
   // zero slip, where the default 1e-8 is needed, the tolerance is the
-  // solver's. On 20,000 random sliding impacts (bench_cushion_impact's
-  // BM_CushionTolerance) this takes 15 % fewer steps (17.9 -> 15.2) and keeps
-  // the error against the solve at 1e-11 at 7e-8 of the largest incoming
-  // velocity (as before). 10x took 25 % fewer steps (13.3) for a worst error
-  // of 1.0e-7, but moved the constants fit of tests/test_constants_fit.cpp
-  // (mu_w 0.127 for a truth of 0.20 on its synthetic carom match: its
-  // objective is flat in mu_w and its shots chaotic). A sticking contact has
+  // solver's. On 200,000 random sliding impacts (bench_cushion_impact's
+  // BM_CushionRandomAccuracy) 10x takes 16.1 steps against 17.8 at 3x,
+  // worst error against the solve at 1e-11 5.1e-7 of the largest
+  // incoming velocity (4.3e-7 at 3x), none beyond the accuracy goal;
+  // the five-rail shot of bench_simulator 57.6k -> 54.3k instructions. (10x
+  // once moved the constants fit of tests/test_constants_fit.cpp, whose
+  // objective is flat along a valley where the cushion's restitution and
+  // friction trade: its path, not the simulated shots; the fit's restarts
+  // now reach the truth under either tolerance.) A sticking contact has
   // zero slip. Only at the default tolerance or looser: reference solves and
   // the rolling-ball table's are not loosened.
   static constexpr double loose_slip = 0.01;
-  static constexpr double loosening = 3.0;
+  static constexpr double loosening = 10.0;
 };
 
 }  // namespace

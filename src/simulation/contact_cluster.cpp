@@ -23,6 +23,7 @@ struct Spring {
   double approach = 0.0;     // delta, (C1); negative: apart
   double deepest = 0.0;      // delta_max
   double impulse = 0.0;      // integral of F dt
+  double force = 0.0;        // F at the present approach (ClusterSolve::update_forces)
   bool touching = true;      // no gap at the start
 };
 
@@ -105,20 +106,27 @@ struct ClusterSolve {
     return k * x * std::sqrt(x) / (e * e * e);
   }
 
+  // Each contact's force at its present approach: computed once per step,
+  // read by the kicks, the accelerations and the end test.
+  void update_forces() {
+    for (Spring& s : springs) s.force = force(s);
+  }
+
   // The closing speed the work stored in a contact could still give it,
   // sqrt(2 W / mu) with mu = 1/2: W = (2/5) F delta on the loading branch,
   // (2/5) F (delta - set) on the unloading one.
   double stored_speed(const Spring& s) const {
-    const double f = force(s);
+    const double f = s.force;
     if (f == 0.0) return 0.0;
     const double x = s.approach >= s.deepest ? s.approach : s.approach - (1.0 - e * e) * s.deepest;
     return std::sqrt(4.0 * 0.4 * f * x);
   }
 
   void accelerate() {
+    update_forces();
     std::fill(acceleration.begin(), acceleration.end(), Vec2{});
     for (const Spring& s : springs) {
-      const Vec2 f = force(s) * s.normal;
+      const Vec2 f = s.force * s.normal;
       acceleration[s.a] = acceleration[s.a] - f;
       acceleration[s.b] = acceleration[s.b] + f;
     }
@@ -128,7 +136,7 @@ struct ClusterSolve {
   void kick() {
     const double h = 0.5 * dt;
     for (std::size_t r = 0; r < v.size(); ++r) v[r] = v[r] + h * acceleration[r];
-    for (Spring& s : springs) s.impulse += h * force(s);
+    for (Spring& s : springs) s.impulse += h * s.force;
   }
 
   // One velocity Verlet step of (C1)-(C3).
@@ -149,7 +157,7 @@ struct ClusterSolve {
   // it carries and closes is slower than `slow` (the simulator's resting
   // contacts take it from there).
   bool over(const Spring& s) const {
-    const double f = force(s), speed = closing(s);
+    const double f = s.force, speed = closing(s);
     if (f == 0.0 && speed <= 0.0) return true;
     if (f == 0.0 && !s.touching && s.approach < 0.0 && -s.approach > speed * window) return true;
     return std::max(speed, 0.0) + stored_speed(s) < slow;
@@ -199,6 +207,7 @@ ClusterImpact resolve_cluster_impact(std::span<const Vec2> positions, std::span<
   solve.slow = settings.slow_speed;
   solve.steps_per_contact_time = settings.steps_per_contact_time;
   solve.order_canonically(positions, velocities, contacts);
+  solve.update_forces();
   const Vec2 c = solve.centre_of_mass_velocity();
   const double before = solve.relative_energy(c);
   if (before > 0.0) solve.choose_time_step();

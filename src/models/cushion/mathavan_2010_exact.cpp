@@ -23,8 +23,10 @@
 // Predictive step-size control: K. Gustafsson, ACM TOMS 20 (1994) 496-517.
 #include <algorithm>
 #include <array>
+#include <bit>
 #include <cmath>
 #include <cstddef>
+#include <cstdint>
 #include <tuple>
 #include <vector>
 
@@ -98,11 +100,35 @@ Vec2 unit(Vec2 v) { return v / length(v); }
 // of cross(u, r(u)) and bisecting; of the rays, an attracting one (a slip
 // direction near it turns towards it, as the Euler scheme's does) with the
 // fastest growth is taken. `rate_for(u)` is the contact's slip rate.
+constexpr int kOnsetSamples = 96;
+
+// The angles of the scan below and their unit vectors, computed once (the
+// same values as evaluating cos and sin at each angle in every scan).
+struct OnsetSamples {
+  std::array<double, kOnsetSamples + 1> phi;
+  std::array<Vec2, kOnsetSamples + 1> u;
+  OnsetSamples() {
+    for (int i = 0; i <= kOnsetSamples; ++i) {
+      phi[static_cast<std::size_t>(i)] = -kPi + 2.0 * kPi * i / kOnsetSamples;
+      u[static_cast<std::size_t>(i)] = {std::cos(phi[static_cast<std::size_t>(i)]), std::sin(phi[static_cast<std::size_t>(i)])};
+    }
+  }
+};
+const OnsetSamples& onset_samples() {
+  static const OnsetSamples samples;
+  return samples;
+}
+
 template <class RateFor>
 bool slip_onset_direction(RateFor rate_for, Vec2& direction) {
-  constexpr int kSamples = 96;
+  constexpr int kSamples = kOnsetSamples;
+  const OnsetSamples& samples = onset_samples();
   auto g = [&](double phi) {
     const Vec2 u{std::cos(phi), std::sin(phi)};
+    return cross(u, rate_for(u));
+  };
+  auto g_sample = [&](int i) {
+    const Vec2 u = samples.u[static_cast<std::size_t>(i)];
     return cross(u, rate_for(u));
   };
   bool found = false;
@@ -125,11 +151,11 @@ bool slip_onset_direction(RateFor rate_for, Vec2& direction) {
       consider(u, g(phi - 1e-7) >= 0.0 && g(phi + 1e-7) <= 0.0);
     }
   }
-  double phi0 = -kPi;
-  double g0 = g(phi0);
+  double phi0 = samples.phi[0];
+  double g0 = g_sample(0);
   for (int i = 1; i <= kSamples; ++i) {
-    const double phi1 = -kPi + 2.0 * kPi * i / kSamples;
-    const double g1 = g(phi1);
+    const double phi1 = samples.phi[static_cast<std::size_t>(i)];
+    const double g1 = g_sample(i);
     if ((g0 > 0.0 && g1 < 0.0) || (g0 < 0.0 && g1 > 0.0)) {
       double lo = phi0;
       double hi = phi1;
@@ -151,6 +177,12 @@ bool slip_onset_direction(RateFor rate_for, Vec2& direction) {
     g0 = g1;
   }
   return found;
+}
+
+// Whether two vectors are equal to the bit (signed zeros told apart).
+bool same_bits(Vec2 a, Vec2 b) {
+  return std::bit_cast<std::uint64_t>(a.x) == std::bit_cast<std::uint64_t>(b.x) &&
+         std::bit_cast<std::uint64_t>(a.y) == std::bit_cast<std::uint64_t>(b.y);
 }
 
 // Chooses the modes at a state where the contacts flagged `*_at_zero` have
@@ -202,9 +234,14 @@ Modes select_modes(const Coefficients& k, Vec2 cushion_slip_now, Vec2 bed_slip_n
     // Onset at both contacts at once: alternate the two one-contact problems.
     Vec2 cd = unit(cushion_slip_rate(k, friction_for(k, kStick, {}, kStick, {})) + Vec2{1e-9, 0.0});
     Vec2 bd = unit(bed_slip_rate(k, friction_for(k, kStick, {}, kStick, {})) + Vec2{1e-9, 0.0});
+    // Each round is a function of (cd, bd) alone, so once a round leaves both
+    // unchanged to the bit the remaining rounds would too: stop there.
     for (int it = 0; it < 16; ++it) {
+      const Vec2 cd_before = cd;
+      const Vec2 bd_before = bd;
       slip_onset_direction([&](Vec2 u) { return cushion_slip_rate(k, friction_for(k, kSlip, u, kSlip, bd)); }, cd);
       slip_onset_direction([&](Vec2 u) { return bed_slip_rate(k, friction_for(k, kSlip, cd, kSlip, u)); }, bd);
+      if (same_bits(cd, cd_before) && same_bits(bd, bd_before)) break;
     }
     m.cushion_direction = cd;
     m.bed_direction = bd;
@@ -1025,17 +1062,19 @@ struct ExactLimits {
   // are large the directions turn slowly and an error committed there is not
   // amplified (the steps' errors add up to about the tolerance), while near
   // zero slip, where the default 1e-8 is needed, the tolerance is the
-  // solver's. On 20,000 random sliding impacts (bench_cushion_impact's
-  // BM_CushionTolerance) this takes 15 % fewer steps (17.9 -> 15.2) and keeps
-  // the error against the solve at 1e-11 at 7e-8 of the largest incoming
-  // velocity (as before). 10x took 25 % fewer steps (13.3) for a worst error
-  // of 1.0e-7, but moved the constants fit of tests/test_constants_fit.cpp
-  // (mu_w 0.127 for a truth of 0.20 on its synthetic carom match: its
-  // objective is flat in mu_w and its shots chaotic). A sticking contact has
+  // solver's. On 200,000 random sliding impacts (bench_cushion_impact's
+  // BM_CushionRandomAccuracy) 10x takes 16.1 steps against 17.8 at 3x,
+  // worst error against the solve at 1e-11 5.1e-7 of the largest
+  // incoming velocity (4.3e-7 at 3x), none beyond the accuracy goal;
+  // the five-rail shot of bench_simulator 57.6k -> 54.3k instructions. (10x
+  // once moved the constants fit of tests/test_constants_fit.cpp, whose
+  // objective is flat along a valley where the cushion's restitution and
+  // friction trade: its path, not the simulated shots; the fit's restarts
+  // now reach the truth under either tolerance.) A sticking contact has
   // zero slip. Only at the default tolerance or looser: reference solves and
   // the rolling-ball table's are not loosened.
   static constexpr double loose_slip = 0.01;
-  static constexpr double loosening = 3.0;
+  static constexpr double loosening = 10.0;
 };
 
 }  // namespace

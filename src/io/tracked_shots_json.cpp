@@ -7,6 +7,7 @@
 #include "cueball/core/errors.hpp"
 #include "cueball/io/scenario_json.hpp"
 #include "cueball/io/table_json.hpp"
+#include "cueball/models/ball_collision/model.hpp"
 #include "cueball/models/cushion/model.hpp"
 #include "cueball/simulation/scenario.hpp"
 #include "io/json_input.hpp"
@@ -124,6 +125,16 @@ ordered_json constants_json(const FitModel& m, const std::string& table_name) {
   const CushionSettings& c = m.settings.cushion;
   j["cushion"] = {{"model", to_string(c.model)}, {"restitution", c.restitution}, {"friction", c.friction}};
   if (c.model == CushionModel::stronge_compliant) j["cushion"]["frequency_ratio"] = c.frequency_ratio;
+  // The ball-ball model the strikes were fitted under (not fitted itself),
+  // with its constants, in the scenario's form.
+  const BallCollisionParameters& b = m.settings.ball_collision;
+  j["ball_collision"] = {{"model", to_string(m.settings.ball_collision_model)},
+                         {"restitution", b.restitution},
+                         {"friction", b.friction}};
+  if (m.settings.ball_collision_model == BallCollisionModel::coulomb_impulse) {
+    j["ball_collision"]["friction_excess"] = b.friction_excess;
+    j["ball_collision"]["friction_decay"] = b.friction_decay;
+  }
   return j;
 }
 

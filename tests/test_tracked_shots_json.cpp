@@ -109,6 +109,9 @@ TEST(TrackedShotsJson, ReportHasTheDocumentedKeys) {
   ASSERT_EQ(j["shots"].size(), 1u);
   EXPECT_LT(j["shots"][0]["cue_rmse"].get<double>(), 0.01);
   EXPECT_TRUE(j["shots"][0]["balls"].contains("red"));
+  const Json& first = j["shots"][0]["first_contact"];
+  EXPECT_TRUE(first.is_null() || first == "yellow" || first == "red") << first;
+  EXPECT_EQ(j["constants"]["ball_collision"]["model"], "coulomb_impulse");
 }
 
 TEST(TrackedShotsJson, TheSharedMatchReads) {

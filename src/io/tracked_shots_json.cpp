@@ -7,10 +7,10 @@
 #include "cueball/core/errors.hpp"
 #include "cueball/io/scenario_json.hpp"
 #include "cueball/io/table_json.hpp"
-#include "cueball/models/ball_collision/model.hpp"
 #include "cueball/models/cushion/model.hpp"
 #include "cueball/simulation/scenario.hpp"
 #include "io/json_input.hpp"
+#include "io/json_output.hpp"
 
 namespace cueball {
 
@@ -127,14 +127,7 @@ ordered_json constants_json(const FitModel& m, const std::string& table_name) {
   if (c.model == CushionModel::stronge_compliant) j["cushion"]["frequency_ratio"] = c.frequency_ratio;
   // The ball-ball model the strikes were fitted under (not fitted itself),
   // with its constants, in the scenario's form.
-  const BallCollisionParameters& b = m.settings.ball_collision;
-  j["ball_collision"] = {{"model", to_string(m.settings.ball_collision_model)},
-                         {"restitution", b.restitution},
-                         {"friction", b.friction}};
-  if (m.settings.ball_collision_model == BallCollisionModel::coulomb_impulse) {
-    j["ball_collision"]["friction_excess"] = b.friction_excess;
-    j["ball_collision"]["friction_decay"] = b.friction_decay;
-  }
+  j["ball_collision"] = io::ball_collision_json<ordered_json>(m.settings);
   return j;
 }
 
@@ -170,6 +163,8 @@ ordered_json shot_json(const ShotReport& r) {
                          {"moved_simulated", have && f.moved_simulated[k] != 0}};
   }
   j["balls"] = std::move(balls);
+  const auto first = static_cast<std::size_t>(f.first_contact);
+  j["first_contact"] = f.first_contact >= 0 && first < r.balls.size() ? ordered_json(r.balls[first]) : ordered_json(nullptr);
   j["contact_mismatch"] = f.contact_mismatch;
   j["simulations"] = f.simulations;
   j["seconds"] = f.seconds;

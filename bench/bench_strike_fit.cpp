@@ -1,11 +1,12 @@
 // The per-shot strike fit (src/calibration/strike_fit.cpp): one fit of a
 // synthetic three-cushion-table shot tracked at 50 Hz with a 1.5 cm dead band
 // (the goal of issue 28: <= 0.2 s a shot on one core; 51-145 ms with 32 starts). The shot is made by
-// the engine under the carom table's default constants.
+// the engine under the carom table's default constants, with either ball-ball model.
 #include <benchmark/benchmark.h>
 
 #include <cmath>
 #include <memory>
+#include <string>
 #include <vector>
 
 #include "cueball/io/scenario_json.hpp"
@@ -21,12 +22,14 @@ struct Fixture {
   PreparedShot shot;
 };
 
-const Fixture& fixture(const ShotAction& action) {
+// The shot made and fitted under the ball-ball model `ball_collision`.
+const Fixture& fixture(const ShotAction& action, const char* ball_collision) {
   static std::vector<std::unique_ptr<Fixture>> made;
   auto f = std::make_unique<Fixture>();
-  Scenario s = scenario_from_json(R"({"table": "carom_10ft", "balls": [
+  Scenario s = scenario_from_json(std::string(R"({"table": "carom_10ft", "balls": [
       {"id": 0, "name": "white", "position": [0.7, 0.5]}, {"id": 1, "name": "yellow", "position": [2.1, 0.35]},
-      {"id": 2, "name": "red", "position": [1.9, 1.05]}], "cue": {"ball": 0, "speed": 1}})");
+      {"id": 2, "name": "red", "position": [1.9, 1.05]}], "cue": {"ball": 0, "speed": 1},
+      "ball_collision": {"model": ")") + ball_collision + R"("}})");
   f->model = {s.table, s.settings, s.cue_parameters};
   const SimulationResult r = simulate(s.table, balls_after_strike(s, to_strike(action, s.table.ball.radius)), s.settings);
   TrackedShot shot;
@@ -53,7 +56,9 @@ const Fixture& fixture(const ShotAction& action) {
 
 void BM_FitStrike(benchmark::State& state) {
   const ShotAction actions[] = {{3.2, 25.0, 4.0, 0.2, 0.15}, {2.6, 4.0, 6.0, -0.25, -0.2}};
-  const Fixture& f = fixture(actions[state.range(0)]);
+  const char* models[] = {"coulomb_impulse", "mathavan_2014"};
+  const Fixture& f = fixture(actions[state.range(0)], models[state.range(1)]);
+  state.SetLabel(models[state.range(1)]);
   double simulations = 0;
   for (auto _ : state) {
     const StrikeFit fit = fit_strike(f.shot, f.model);
@@ -62,6 +67,8 @@ void BM_FitStrike(benchmark::State& state) {
   }
   state.counters["simulations"] = benchmark::Counter(simulations, benchmark::Counter::kAvgIterations);
 }
-BENCHMARK(BM_FitStrike)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond);
+// Second argument: the ball-ball model (0 coulomb_impulse, 1 mathavan_2014,
+// which fits the recorded match best: README "Validated against a real match").
+BENCHMARK(BM_FitStrike)->ArgsProduct({{0, 1}, {0, 1}})->Unit(benchmark::kMillisecond);
 
 }  // namespace

@@ -9,6 +9,7 @@
 #include "cueball/io/calibration_html.hpp"
 #include "cueball/io/tracked_shots_csv.hpp"
 #include "cueball/io/tracked_shots_json.hpp"
+#include "cueball/models/ball_collision/model.hpp"
 #include "cueball/models/cushion/model.hpp"
 #include "cueball/simulation/scenario.hpp"
 
@@ -31,6 +32,7 @@ struct CalibrateFlags {
   int bootstrap_evaluations = BootstrapOptions{}.max_evaluations;
   std::optional<std::string> html;
   std::optional<std::string> cushion_model;
+  std::optional<std::string> ball_collision_model;
   std::optional<std::string> constants;
   std::optional<std::string> output;
   bool evaluate = false;
@@ -105,6 +107,14 @@ void run_calibrate(const CalibrateFlags& f, std::ostream& out, std::ostream& err
       throw UsageError("--cushion-model = " + quote_input(*f.cushion_model) + " is not known; allowed: " + cushion_model_names(""));
     if (*model != start.settings.cushion.model) start.settings.cushion = default_cushion_settings(*model);
   }
+  if (f.ball_collision_model) {
+    const auto model = ball_collision_model_from_string(*f.ball_collision_model);
+    if (!model)
+      throw UsageError("--ball-collision-model = " + quote_input(*f.ball_collision_model) +
+                       " is not known; allowed: " + ball_collision_model_names(""));
+    if (*model != start.settings.ball_collision_model)
+      start.settings.ball_collision_model = *model, start.settings.ball_collision = default_ball_collision(*model);
+  }
   CalibrationOptions options;
   options.held_out = f.evaluate ? 0.0 : f.held_out;
   options.seed = static_cast<std::uint64_t>(f.seed);
@@ -143,6 +153,7 @@ void run_calibrate(const CalibrateFlags& f, std::ostream& out, std::ostream& err
   report.add_text("cushion_model", to_string(r.model.settings.cushion.model));
   add_constant("cushion_restitution", r.model.settings.cushion.restitution, "");
   add_constant("cushion_friction", r.model.settings.cushion.friction, "");
+  report.add_text("ball_collision_model", to_string(r.model.settings.ball_collision_model), "not fitted");
   report.add_count("evaluations", r.constant_evaluations, "of the simplex (stage 1, restarts included)");
   report.add_count("restart_won", r.constant_restarts, "1: a restart of the simplex found the better point");
   report.add_count("iterations", r.constant_iterations, "of the joint fit (stage 2)");
@@ -187,6 +198,9 @@ Command add_calibrate_command(CLI::App& app) {
       ->capture_default_str();
   sub->add_option("--html", flags->html, "Write the report as a self-contained HTML page: the error distribution and every shot drawn");
   sub->add_option("--cushion-model", flags->cushion_model, "Cushion model to fit (default: the constants' or the table's)");
+  sub->add_option("--ball-collision-model", flags->ball_collision_model,
+                  "Ball-ball model the fit plays (not fitted; default: the constants' or coulomb_impulse): "
+                  "coulomb_impulse, mathavan_2014");
   sub->add_option("--constants", flags->constants, "Start from (or, with --evaluate, use) these constants: a scenario JSON");
   sub->add_option("-o,--output", flags->output, "Write the fitted constants to this file (a scenario fragment)");
   sub->add_flag("--evaluate", flags->evaluate, "Fit the strikes only, under --constants, and report");

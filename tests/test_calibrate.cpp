@@ -15,6 +15,7 @@
 
 #include "cueball/calibration/calibrate.hpp"
 #include "cueball/io/tracked_shots_json.hpp"
+#include "cueball/models/ball_collision/model.hpp"
 #include "cueball/models/cushion/model.hpp"
 
 namespace cueball {
@@ -74,6 +75,29 @@ TEST(CalibrateOnTheRecordedMatch, FittedConstantsBeatTheDefaults) {
   EXPECT_LT(fitted.training.cue_rmse_median, 0.12);
   EXPECT_LT(fitted.training.cue_rmse_median, defaults.training.cue_rmse_median);
   EXPECT_LT(fitted.training.all_rmse_median, defaults.training.all_rmse_median);
+}
+
+// The ball-ball contact with the cloth's friction at the table (mathavan_2014)
+// against coulomb_impulse, each with the constants fitted under it on the 30
+// training shots of README's split (held-out cue-ball RMSE median 5.7 cm
+// against 7.9): on the first 12 shots the former fits better too.
+TEST(CalibrateOnTheRecordedMatch, MathavanBallBallContactFitsBetter) {
+  const auto shots = match_shots(12);
+  if (!shots) GTEST_SKIP() << "the recorded match (../shared/data/measured-three-cushion/shots.json) is not here";
+  FitModel coulomb = han_model(*shots);
+  coulomb.settings.parameters.cloth = {0.2164, 0.00582, 0.00995, coulomb.settings.parameters.cloth.gravity};
+  coulomb.settings.cushion.restitution = 0.840, coulomb.settings.cushion.friction = 0.259;
+  FitModel mathavan = han_model(*shots);
+  mathavan.settings.parameters.cloth = {0.2271, 0.00578, 0.00815, mathavan.settings.parameters.cloth.gravity};
+  mathavan.settings.cushion.restitution = 0.847, mathavan.settings.cushion.friction = 0.269;
+  mathavan.settings.ball_collision_model = BallCollisionModel::mathavan_2014;
+  mathavan.settings.ball_collision = default_ball_collision(BallCollisionModel::mathavan_2014);
+  const CalibrationReport a = evaluate(*shots, coulomb);
+  const CalibrationReport b = evaluate(*shots, mathavan);
+  RecordProperty("coulomb_cue_median_cm", std::to_string(100 * a.training.cue_rmse_median));
+  RecordProperty("mathavan_cue_median_cm", std::to_string(100 * b.training.cue_rmse_median));
+  EXPECT_LT(b.training.cue_rmse_median, a.training.cue_rmse_median);
+  EXPECT_LT(b.training.all_rmse_median, a.training.all_rmse_median);
 }
 
 }  // namespace

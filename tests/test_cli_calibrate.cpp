@@ -7,8 +7,11 @@
 
 #include <nlohmann/json.hpp>
 #include <string>
+#include <vector>
 
 #include "cli_runner.hpp"
+#include "cueball/io/tracked_shots_json.hpp"
+#include "cueball/models/ball_collision/model.hpp"
 #include "synthetic_tracks.hpp"
 #include "temp_dir.hpp"
 
@@ -20,12 +23,9 @@ using test::expect_usage_error;
 using test::run_cli;
 using test::TempDir;
 
-// Three synthetic shots as a tracked-shots file.
-std::string synthetic_file() {
-  const FitModel m = test::carom_model();
+// Synthetic shots made under `m` as a tracked-shots file (ids from seed + 1).
+std::string shots_file(const FitModel& m, const std::vector<ShotAction>& actions, std::uint64_t seed) {
   Json shots = Json::array();
-  const ShotAction actions[] = {{3.2, 25.0, 4.0, 0.2, 0.15}, {2.6, 4.0, 6.0, -0.25, -0.2}, {3.0, -20.0, 3.0, 0.1, 0.0}};
-  std::uint64_t seed = 31;
   for (const ShotAction& a : actions) {
     const TrackedShot s = test::synthetic_shot(m, test::carom_layout({0.7, 0.5}, {2.1, 0.35}, {1.9, 1.05}), a, 0.01, seed++);
     Json balls = Json::object();
@@ -33,6 +33,35 @@ std::string synthetic_file() {
     shots.push_back({{"shot_id", seed}, {"cue_ball", s.cue_ball}, {"balls", balls}});
   }
   return Json{{"what", "synthetic"}, {"table", "carom_10ft"}, {"shots", shots}}.dump();
+}
+
+// Three synthetic shots as a tracked-shots file.
+std::string synthetic_file() {
+  return shots_file(test::carom_model(),
+                    {{3.2, 25.0, 4.0, 0.2, 0.15}, {2.6, 4.0, 6.0, -0.25, -0.2}, {3.0, -20.0, 3.0, 0.1, 0.0}}, 31);
+}
+
+// Shots made under mathavan_2014's ball-ball contact (cut shots, where the
+// models part) are fitted better under that model, which
+// --ball-collision-model chooses and -o writes with the constants.
+TEST(CliCalibrate, TheBallCollisionModelIsChosenAndWritten) {
+  FitModel m = test::carom_model();
+  m.settings.ball_collision_model = BallCollisionModel::mathavan_2014;
+  m.settings.ball_collision = default_ball_collision(BallCollisionModel::mathavan_2014);
+  TempDir dir;
+  const std::string file = dir.write("shots.json", shots_file(m, {{3.0, 18.0, 2.0, 0.3, -0.3}, {2.5, 27.0, 2.0, -0.3, 0.3}}, 51));
+  const std::string constants = dir.write("constants.json", constants_to_json(test::carom_model(), "carom_10ft"));
+  const std::string out = dir.path("out.json");
+  const auto coulomb = run_cli({"calibrate", file, "--constants", constants, "--evaluate", "--json"});
+  const auto mathavan = run_cli({"calibrate", file, "--constants", constants, "--evaluate", "--json",
+                                 "--ball-collision-model", "mathavan_2014", "-o", out});
+  ASSERT_EQ(coulomb.status, 0) << coulomb.err;
+  ASSERT_EQ(mathavan.status, 0) << mathavan.err;
+  const double under_coulomb = Json::parse(coulomb.out)["summary"]["training"]["all_rmse_median"].get<double>();
+  const double under_mathavan = Json::parse(mathavan.out)["summary"]["training"]["all_rmse_median"].get<double>();
+  EXPECT_LT(under_mathavan, 2e-3);  // the noise and the layout read from it (0.5 mm)
+  EXPECT_LT(under_mathavan, 0.5 * under_coulomb) << under_mathavan << " m against " << under_coulomb << " m";  // 5 mm
+  EXPECT_EQ(Json::parse(test::read_text(out))["ball_collision"]["model"], "mathavan_2014");
 }
 
 TEST(CliCalibrate, CalibratesAndWritesAScenarioFragment) {
@@ -128,6 +157,7 @@ TEST(CliCalibrate, BadInputIsOneLineNamingTheFieldAndExitsTwo) {
   expect_usage_error({"calibrate", file, "--starts", "100"}, "--starts");
   expect_usage_error({"calibrate", file, "--evaluate"}, "--constants");
   expect_usage_error({"calibrate", file, "--cushion-model", "rubber"}, "--cushion-model");
+  expect_usage_error({"calibrate", file, "--ball-collision-model", "glue"}, "--ball-collision-model");
   expect_usage_error({"calibrate", dir.path("missing.json")}, "missing.json");
   Json j = Json::parse(synthetic_file());
   j["shots"][1]["balls"]["red"]["x"][0] = 7.5;

@@ -76,6 +76,26 @@ TEST(StrikeFit, TheTrueStrikeOfANoiselessRecordCostsNothing) {
   EXPECT_GT(off.all_rmse, 10 * truth.all_rmse);
 }
 
+TEST(StrikeFit, AFirstContactOtherThanTheRecordsIsAMismatch) {
+  // White straight at red (ball 2), yellow well out of the way: the record
+  // says red departs first; the same shot aimed at yellow strikes ball 1
+  // first, which evaluate_strike reports as a contact mismatch.
+  const FitModel model = test::carom_model();
+  const auto layout = test::carom_layout({0.7, 0.5}, {2.1, 0.35}, {1.9, 1.05});
+  const double at_red = std::atan2(1.05 - 0.5, 1.9 - 0.7) * 180.0 / 3.14159265358979323846;
+  const double at_yellow = std::atan2(0.35 - 0.5, 2.1 - 0.7) * 180.0 / 3.14159265358979323846;
+  const ShotAction red_first{2.0, at_red, 0.0, 0.0, 0.0};
+  const TrackedShot shot = test::synthetic_shot(model, layout, red_first, 0.01, 7);
+  const PreparedShot p = prepare_shot(shot, model.table, "shot");
+  ASSERT_EQ(p.first_object_ball, 2);
+  const StrikeFit truth = evaluate_strike(p, model, red_first, 0.01 - p.origin);
+  EXPECT_EQ(truth.first_contact, 2);
+  EXPECT_FALSE(truth.contact_mismatch);
+  const StrikeFit other = evaluate_strike(p, model, {2.0, at_yellow, 0.0, 0.0, 0.0}, 0.01 - p.origin);
+  EXPECT_EQ(other.first_contact, 1);
+  EXPECT_TRUE(other.contact_mismatch);
+}
+
 TEST(StrikeFit, RejectsBadOptions) {
   const FitModel model = test::carom_model();
   const auto layout = test::carom_layout({0.7, 0.5}, {2.1, 0.35}, {1.9, 1.05});

@@ -4,6 +4,8 @@
 // cushion, touching balls).
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 #include "cueball/calibration/tracked_shot.hpp"
 #include "expect_invalid.hpp"
 #include "synthetic_tracks.hpp"
@@ -77,6 +79,32 @@ TEST(TrackedShot, PreparationPutsTheCueBallFirstAndKeepsBallsThatNeverMove) {
   EXPECT_LT(p.origin, 0.02);
   EXPECT_GT(p.speed_estimate, 2.5);
   EXPECT_NEAR(p.aim_estimate_deg, 0.0, 1e-9);
+}
+
+TEST(TrackedShot, TheFirstObjectBallToDepartIsTheCueBallsFirstContact) {
+  // White moves at 0.02 s; yellow departs at 0.30 s, red at `red_departs`.
+  const auto shot = [](double red_departs) {
+    TrackedShot s;
+    s.id = "1";
+    s.cue_ball = "white";
+    s.balls = {{"white", {0.0, 0.02, 0.04, 1.0}, {0.5, 0.56, 0.62, 1.4}, {0.5, 0.5, 0.5, 0.5}},
+               {"red", {0.0, red_departs, 2.0}, {2.0, 2.02, 2.3}, {0.7, 0.7, 0.7}},
+               {"yellow", {0.0, 0.30, 2.0}, {1.5, 1.52, 1.8}, {0.3, 0.3, 0.3}}};
+    return s;
+  };
+  const PreparedShot apart = prepare_shot(shot(0.30 + kContactOrderGap + 0.05), carom(), "shots[0]");
+  ASSERT_EQ(apart.names, (std::vector<std::string>{"white", "red", "yellow"}));
+  EXPECT_EQ(apart.first_object_ball, 2);  // yellow
+  EXPECT_NEAR(apart.departure[2] - apart.departure[1], -(kContactOrderGap + 0.05), 1e-12);
+  // Departures closer than kContactOrderGap: the record cannot tell.
+  EXPECT_EQ(prepare_shot(shot(0.30 + kContactOrderGap / 2), carom(), "shots[0]").first_object_ball, -1);
+  // A ball that never moves departs never; then the other one is the first.
+  const PreparedShot one = prepare_shot(simple_shot(), carom(), "shots[0]");
+  EXPECT_TRUE(std::isinf(one.departure[1]));
+  EXPECT_EQ(one.first_object_ball, -1);
+  TrackedShot red_only = shot(0.4);
+  red_only.balls.pop_back();
+  EXPECT_EQ(prepare_shot(red_only, carom(), "shots[0]").first_object_ball, 1);
 }
 
 TEST(TrackedShot, RecordStartingBeforeTheStrike) {

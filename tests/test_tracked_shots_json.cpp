@@ -11,6 +11,7 @@
 #include "cueball/io/tracked_shots_json.hpp"
 #include "cueball/simulation/scenario.hpp"
 #include "expect_invalid.hpp"
+#include "cueball/models/ball_collision/model.hpp"
 #include "synthetic_tracks.hpp"
 
 namespace cueball {
@@ -79,6 +80,14 @@ TEST(TrackedShotsJson, ConstantsFragmentIsAScenario) {
   const FitModel back = fit_model_from_json(text, shots);
   EXPECT_EQ(back.settings.parameters.cloth.rolling_resistance, 0.0081);
   EXPECT_EQ(back.settings.cushion.friction, 0.21);
+  EXPECT_EQ(back.settings.ball_collision_model, BallCollisionModel::coulomb_impulse);
+  EXPECT_EQ(back.settings.ball_collision, m.settings.ball_collision);
+  // The ball-ball model the strikes were fitted under comes back with the constants.
+  m.settings.ball_collision_model = BallCollisionModel::mathavan_2014;
+  m.settings.ball_collision = default_ball_collision(BallCollisionModel::mathavan_2014);
+  const FitModel mathavan = fit_model_from_json(constants_to_json(m, "carom_10ft"), shots);
+  EXPECT_EQ(mathavan.settings.ball_collision_model, BallCollisionModel::mathavan_2014);
+  EXPECT_EQ(mathavan.settings.ball_collision, m.settings.ball_collision);
   expect_invalid("scenario.parameters.mu_r",
                  [&] { fit_model_from_json(R"({"table": "carom_10ft", "parameters": {"mu_r": -1}})", shots); });
 }
@@ -100,6 +109,9 @@ TEST(TrackedShotsJson, ReportHasTheDocumentedKeys) {
   ASSERT_EQ(j["shots"].size(), 1u);
   EXPECT_LT(j["shots"][0]["cue_rmse"].get<double>(), 0.01);
   EXPECT_TRUE(j["shots"][0]["balls"].contains("red"));
+  const Json& first = j["shots"][0]["first_contact"];
+  EXPECT_TRUE(first.is_null() || first == "yellow" || first == "red") << first;
+  EXPECT_EQ(j["constants"]["ball_collision"]["model"], "coulomb_impulse");
 }
 
 TEST(TrackedShotsJson, TheSharedMatchReads) {

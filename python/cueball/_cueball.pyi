@@ -490,6 +490,7 @@ def calibrate(
     constants: str | None = None,
     evaluate: bool = False,
     cushion_model: str | None = None,
+    ball_collision_model: str | None = None,
     threads: int = 1,
     starts: int = 32,
     max_evaluations: int = 300,

@@ -46,6 +46,15 @@ class CalibrateTest(unittest.TestCase):
         self.assertLess(shot["cue_rmse"], 0.05)
         self.assertAlmostEqual(shot["strike"]["aim_deg"], 0.0, delta=1.0)
         self.assertFalse(shot["balls"]["red"]["moved_simulated"])
+        self.assertEqual(r["constants"]["ball_collision"]["model"], "coulomb_impulse")
+
+    def test_the_ball_collision_model_is_chosen(self) -> None:
+        r = cueball.calibrate(json.dumps(straight_shot()), constants='{"table": "carom_10ft"}', evaluate=True,
+                              ball_collision_model="mathavan_2014")
+        self.assertEqual(r["constants"]["ball_collision"]["model"], "mathavan_2014")
+        with self.assertRaises(cueball.InvalidArgument) as e:
+            cueball.calibrate(json.dumps(straight_shot()), ball_collision_model="glue")
+        self.assertIn("ball_collision_model", str(e.exception))
 
     def test_bootstrap_and_html(self) -> None:
         doc = straight_shot()

@@ -56,6 +56,24 @@ void residuals_of(const PreparedShot& shot, const Scenario& scenario, const Simu
   }
 }
 
+// The ball went kMoveThreshold or more from where it was laid (at the start
+// of a segment of its path, or at the end).
+bool moved_from_layout(const SimulationResult& r, std::size_t ball, Vec2 layout) {
+  const BallTrajectory& b = r.balls[ball];
+  if (norm(b.final_state.position - layout) >= kMoveThreshold) return true;
+  for (const TrajectorySegment& s : b.segments)
+    if (norm(s.state.position - layout) >= kMoveThreshold) return true;
+  return false;
+}
+
+// The other ball of the first ball-ball contact (the cue ball is the only
+// one moving before it), -1 when there is none.
+int first_ball_contact(const SimulationResult& r) {
+  for (const Event& e : r.events)
+    if (e.type == EventType::ball_ball) return e.ball == 0 ? e.other : e.ball;
+  return -1;
+}
+
 // ------------------------------------------------------------- fit_strike's steps
 
 struct FitContext {
@@ -184,9 +202,11 @@ StrikeFit evaluate_strike(const PreparedShot& shot, const FitModel& model, const
   f.cost = cost;
   for (std::size_t j = 0; j < nb; ++j) {
     if (shot.samples_per_ball[j] > 0) f.ball_rmse[j] = std::sqrt(sum[j] / shot.samples_per_ball[j]);
-    f.moved_simulated[j] = r->balls[j].segments.size() > 1 ? 1 : 0;
+    f.moved_simulated[j] = moved_from_layout(*r, j, shot.layout[j].state.position) ? 1 : 0;
     if (j > 0 && f.moved_simulated[j] != shot.moved[j]) f.contact_mismatch = true;
   }
+  f.first_contact = first_ball_contact(*r);
+  if (shot.first_object_ball >= 0 && f.first_contact != shot.first_object_ball) f.contact_mismatch = true;
   f.cue_rmse = f.ball_rmse[0];
   f.all_rmse = tracked == 0 ? 0.0 : std::sqrt(total / static_cast<double>(tracked));
   return f;

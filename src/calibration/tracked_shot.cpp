@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <set>
 
 #include "cueball/core/errors.hpp"
@@ -167,8 +168,22 @@ void collect_samples(Preparation& p) {
       ++n;
     }
     p.out.samples_per_ball.push_back(n);
-    p.out.moved.push_back(first_moving_sample(b) < b.t.size() ? 1 : 0);
+    const std::size_t k = first_moving_sample(b);
+    p.out.moved.push_back(k < b.t.size() ? 1 : 0);
+    p.out.departure.push_back(k < b.t.size() ? b.t[k] - p.out.origin : std::numeric_limits<double>::infinity());
   }
+}
+
+// The first object ball to depart, if the record tells it from the next one.
+void find_first_object_ball(Preparation& p) {
+  const std::vector<double>& d = p.out.departure;
+  int first = -1;
+  for (std::size_t j = 1; j < d.size(); ++j)
+    if (std::isfinite(d[j]) && (first < 0 || d[j] < d[static_cast<std::size_t>(first)])) first = static_cast<int>(j);
+  if (first < 0) return;
+  for (std::size_t j = 1; j < d.size(); ++j)
+    if (static_cast<int>(j) != first && d[j] - d[static_cast<std::size_t>(first)] < kContactOrderGap) return;
+  p.out.first_object_ball = first;
 }
 
 }  // namespace
@@ -202,6 +217,7 @@ PreparedShot prepare_shot(const TrackedShot& shot, const Table& table, const std
   estimate_strike(p);
   build_layout(p);
   collect_samples(p);
+  find_first_object_ball(p);
   return p.out;
 }
 

@@ -9,6 +9,7 @@
 
 #include "cueball/games/record.hpp"
 #include "cueball/io/report.hpp"
+#include "cueball/models/ball_collision/model.hpp"
 #include "cueball/simulation/scenario.hpp"
 #include "cueball/simulation/shot_facts.hpp"
 #include "cueball/table/table.hpp"
@@ -31,6 +32,21 @@ nlohmann::json cue_json(const Scenario& s);
 /// x exactly when there is one near x / unit (`given` first): what the
 /// scenario writer writes for angles and tip offsets (scenario_json.cpp).
 double in_units(double x, double unit, std::optional<double> given);
+/// The scenario's "ball_collision": the model's name and its constants (the
+/// speed-dependent friction's two only for coulomb_impulse); J is
+/// nlohmann::json or nlohmann::ordered_json. Also what a calibration's
+/// constants carry (tracked_shots_json.cpp).
+template <class J>
+J ball_collision_json(const SimulationSettings& s) {
+  J j = {{"model", to_string(s.ball_collision_model)},
+         {"restitution", s.ball_collision.restitution},
+         {"friction", s.ball_collision.friction}};
+  if (s.ball_collision_model == BallCollisionModel::coulomb_impulse) {
+    j["friction_excess"] = s.ball_collision.friction_excess;
+    j["friction_decay"] = s.ball_collision.friction_decay;
+  }
+  return j;
+}
 /// scenario_to_json() as a value.
 nlohmann::json scenario_json(const Scenario& s);
 /// An agent's reasoning (games/record.hpp) as a record's and the viewer's

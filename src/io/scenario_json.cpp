@@ -404,14 +404,7 @@ Json scenario_json(const Scenario& s) {
     }
   }
   if (cushion.model == CushionModel::stronge_compliant) j["cushion"]["frequency_ratio"] = cushion.frequency_ratio;
-  const BallCollisionParameters& b = s.settings.ball_collision;
-  j["ball_collision"] = {{"model", to_string(s.settings.ball_collision_model)},
-                         {"restitution", b.restitution},
-                         {"friction", b.friction}};
-  if (s.settings.ball_collision_model == BallCollisionModel::coulomb_impulse) {
-    j["ball_collision"]["friction_excess"] = b.friction_excess;
-    j["ball_collision"]["friction_decay"] = b.friction_decay;
-  }
+  j["ball_collision"] = ball_collision_json<Json>(s.settings);
   j["max_events"] = s.settings.max_events;
   Json balls = Json::array();
   for (const SimulationBall& ball : s.balls) {

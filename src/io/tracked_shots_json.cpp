@@ -10,6 +10,7 @@
 #include "cueball/models/cushion/model.hpp"
 #include "cueball/simulation/scenario.hpp"
 #include "io/json_input.hpp"
+#include "io/json_output.hpp"
 
 namespace cueball {
 
@@ -124,6 +125,9 @@ ordered_json constants_json(const FitModel& m, const std::string& table_name) {
   const CushionSettings& c = m.settings.cushion;
   j["cushion"] = {{"model", to_string(c.model)}, {"restitution", c.restitution}, {"friction", c.friction}};
   if (c.model == CushionModel::stronge_compliant) j["cushion"]["frequency_ratio"] = c.frequency_ratio;
+  // The ball-ball model the strikes were fitted under (not fitted itself),
+  // with its constants, in the scenario's form.
+  j["ball_collision"] = io::ball_collision_json<ordered_json>(m.settings);
   return j;
 }
 
@@ -159,6 +163,8 @@ ordered_json shot_json(const ShotReport& r) {
                          {"moved_simulated", have && f.moved_simulated[k] != 0}};
   }
   j["balls"] = std::move(balls);
+  const auto first = static_cast<std::size_t>(f.first_contact);
+  j["first_contact"] = f.first_contact >= 0 && first < r.balls.size() ? ordered_json(r.balls[first]) : ordered_json(nullptr);
   j["contact_mismatch"] = f.contact_mismatch;
   j["simulations"] = f.simulations;
   j["seconds"] = f.seconds;

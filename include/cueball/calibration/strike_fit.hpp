@@ -14,7 +14,14 @@
 //      3 s, then the whole record, each stage starting where the last ended
 //      (the early samples fix speed and aim while the cost is still smooth
 //      in them; later ones bring in spin, cushions and the object balls);
-//   3. the start with the lowest cost over the whole record wins.
+//   3. the start with the lowest cost over the whole record wins. (Taking
+//      the cheapest start whose contacts agree with the record's instead,
+//      when one does, was tried on the recorded match's 30 training shots
+//      under fixed constants: each of the 4 wrong-contact fits had an
+//      agreeing start, but at 1.1-17x the cost, and 3 of the 4 cue-ball
+//      RMSEs got worse, one from 6.3 to 45 cm; the wrong contacts there are
+//      late ones, the second object ball met or missed after several
+//      cushions, which a better start does not mend.)
 // The residual of a sample at time t (after the estimated strike) is the
 // simulated position at t - t_strike minus the tracked one, both axes, every
 // ball weighted alike, and RMSE = sqrt(mean of squared distances).
@@ -53,9 +60,14 @@ struct StrikeFit {
   std::vector<double> ball_rmse;     ///< per ball, layout order, m (NaN for a ball without samples after the strike)
   double cue_rmse = 0.0;             ///< the cue ball's RMSE, m
   double all_rmse = 0.0;             ///< over every sample of every ball, m
-  std::vector<char> moved_simulated; ///< the simulated ball moved kMoveThreshold or more
+  /// The simulated ball moved kMoveThreshold or more from the layout (a
+  /// graze that moves it less is not seen by a tracker either).
+  std::vector<char> moved_simulated;
+  int first_contact = -1;            ///< the object ball the simulated cue ball struck first (layout index), -1 none
   /// A ball moved in the simulation but not in the record, or the other way
-  /// round: the fit found (or missed) a contact the real balls did not make.
+  /// round, or the cue ball struck another ball first than the record's
+  /// PreparedShot::first_object_ball: the fit found (or missed) a contact
+  /// the real balls did not make.
   bool contact_mismatch = false;
   int simulations = 0;
   double seconds = 0.0;

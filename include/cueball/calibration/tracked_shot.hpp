@@ -94,6 +94,10 @@ struct FitSample {
 
 /// Spacing of the held samples, s.
 inline constexpr double kHoldStep = 0.1;
+/// Least gap (s) between the first two object balls' departures for the
+/// record to say which one the cue ball struck first (at 50 Hz and a 1.5-2 cm
+/// dead band a slow ball's first sample may come a few samples late).
+inline constexpr double kContactOrderGap = 0.1;
 
 /// A shot made ready for fitting (prepare_shot).
 struct PreparedShot {
@@ -108,6 +112,14 @@ struct PreparedShot {
   std::vector<FitSample> samples;       ///< after the strike, ordered by ball then time (held ones included)
   std::vector<int> samples_per_ball;    ///< tracked samples after the strike (held ones not counted)
   std::vector<char> moved;              ///< the ball moved kMoveThreshold or more in the record
+  /// Per ball: the time (samples' clock) of its first sample kMoveThreshold
+  /// from its first one; +infinity for a ball that never moves.
+  std::vector<double> departure;
+  /// The object ball (layout index) the cue ball struck first as the record
+  /// tells it: the first object ball to depart, when the next one departs
+  /// kContactOrderGap or more later (or never); -1 when no object ball
+  /// moved or two departed too close together to tell.
+  int first_object_ball = -1;
   double aim_estimate_deg = 0.0;        ///< direction of the cue ball's first movement
   double speed_estimate = 0.0;          ///< its speed over the first moving samples, m/s
   double duration = 0.0;                ///< last sample time (samples' clock)

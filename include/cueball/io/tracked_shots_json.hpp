@@ -32,7 +32,10 @@ TrackedShots tracked_shots_from_json(std::string_view json_text);
 /// The fitted constants as a scenario fragment that scenario_from_json
 /// accepts as it is and that a scenario may copy in:
 ///   { "table": name or table object, "parameters": { mass, radius, mu_s, mu_r, mu_sp, g },
-///     "cushion": { "model", "restitution", "friction" (+ "frequency_ratio") } }
+///     "cushion": { "model", "restitution", "friction" (+ "frequency_ratio") },
+///     "ball_collision": { "model", "restitution", "friction" (+ coulomb_impulse's
+///       "friction_excess", "friction_decay") } }: the ball-ball model the strikes
+/// were fitted under, not fitted itself, as a scenario writes it.
 std::string constants_to_json(const FitModel& model, const std::string& table_name, int indent = 1);
 
 /// The constants of a scenario (or of such a fragment) over the tracked
@@ -53,6 +56,7 @@ FitModel fit_model_from_json(std::string_view json_text, const TrackedShots& sho
 ///     "shots": [ { "id", "held_out", "strike": { "speed", "aim_deg", "elevation_deg", "side",
 ///                  "height", "strike_time" }, "cue_rmse", "all_rmse",
 ///                  "balls": { name: { "rmse", "moved", "moved_simulated" } },
+///                  "first_contact": the simulated cue ball's first object ball (null: none),
 ///                  "contact_mismatch", "simulations", "seconds", "notes": [..] } ] }
 /// An RMSE without samples is null.
 std::string calibration_report_to_json(const CalibrationReport& report, int indent = 1);

@@ -378,7 +378,7 @@ std::optional<SafetyPlan> plan_safety(const GameState& state, const LegalActions
 ///     least 1/2: the opponent would face the same table, so the player
 ///     plays what favours the shooter and passes what does not.
 /// Deterministic for a seed.
-inline constexpr double kSafetyThreshold = 0.7;
+inline constexpr double kSafetyThreshold = 0.5;
 inline constexpr double kSafetyMargin = 0.0;
 PlannerChoice safety_planner_choice(const AgentOptions& options, const GameState& state, std::uint64_t seed);
 

@@ -261,6 +261,29 @@ double shooter_value(const GameState& next, int shooter, double q) {
   return next.to_shoot == shooter ? v : 1.0 - v;
 }
 
+// The table the player to act in `state` shoots from, as both estimates of
+// their chance take it: decisions due taken as play, the cue ball in hand
+// at ghost_ball_in_hand_spot() (no spot: where it lies). None when the game
+// is over, no shot is open, no ball is on, or the cue ball is off the table.
+struct Reply {
+  Scenario table;
+  int cue_ball = 0;
+  std::vector<int> targets;
+};
+std::optional<Reply> reply_table(const GameState& state) {
+  if (state.over) return std::nullopt;
+  const GameState view = as_played(state);
+  const LegalActions legal = legal_actions(view);
+  if (!legal.shoot) return std::nullopt;
+  Reply r{view.table, legal.cue_ball, shot_targets(view, legal)};
+  if (r.targets.empty()) return std::nullopt;
+  if (legal.ball_in_hand)
+    if (const std::optional<Vec2> spot = ghost_ball_in_hand_spot(r.table, r.cue_ball, r.targets, *legal.ball_in_hand))
+      r.table = with_cue_ball_at(r.table, r.cue_ball, *spot);
+  if (!find_ball(r.table.balls, r.cue_ball)) return std::nullopt;
+  return r;
+}
+
 }  // namespace
 
 double value_after_shot(const GameState& next, int shooter, const CueStrikeNoise& noise) {
@@ -276,30 +299,21 @@ double planned_value_after_shot(const GameState& next, int shooter, const CueStr
 
 double planned_chance(const GameState& state, const CueStrikeNoise& noise, std::uint64_t seed,
                       long long& simulations) {
-  if (state.over) return 0.0;
-  const GameState view = as_played(state);
-  const LegalActions legal = legal_actions(view);
-  if (!legal.shoot) return 0.0;
-  const std::vector<int> targets = shot_targets(view, legal);
-  if (targets.empty()) return 0.0;
-  Scenario table = view.table;
-  if (legal.ball_in_hand)
-    if (const std::optional<Vec2> spot = ghost_ball_in_hand_spot(table, legal.cue_ball, targets, *legal.ball_in_hand))
-      table = with_cue_ball_at(table, legal.cue_ball, *spot);
-  if (!find_ball(table.balls, legal.cue_ball)) return 0.0;
+  const std::optional<Reply> reply = reply_table(state);
+  if (!reply) return 0.0;
   PlanRequest q;
-  q.cue_ball = legal.cue_ball;
-  if (targets.size() == 1)
-    q.target = targets.front();
+  q.cue_ball = reply->cue_ball;
+  if (reply->targets.size() == 1)
+    q.target = reply->targets.front();
   else
-    q.targets = targets;
+    q.targets = reply->targets;
   q.kinds = {ShotKind::direct, ShotKind::bank};
   q.noise = noise;
   q.seed = seed;
   q.simulations = kSafetyReplySimulations;
   double planned = 0.0;
   try {
-    const ShotPlanResult r = plan_shot(table, q);
+    const ShotPlanResult r = plan_shot(reply->table, q);
     simulations += r.simulations;
     planned = r.shot.success_probability;
   } catch (const NoFeasibleShot&) {
@@ -309,21 +323,12 @@ double planned_chance(const GameState& state, const CueStrikeNoise& noise, std::
 }
 
 double pot_chance(const GameState& state, const CueStrikeNoise& noise) {
-  if (state.over) return 0.0;
-  const GameState view = as_played(state);
-  const LegalActions legal = legal_actions(view);
-  if (!legal.shoot) return 0.0;
-  const std::vector<int> targets = shot_targets(view, legal);
-  if (targets.empty()) return 0.0;
-  Scenario table = view.table;
-  if (legal.ball_in_hand)
-    if (const std::optional<Vec2> spot = ghost_ball_in_hand_spot(table, legal.cue_ball, targets, *legal.ball_in_hand))
-      table = with_cue_ball_at(table, legal.cue_ball, *spot);
-  if (!find_ball(table.balls, legal.cue_ball)) return 0.0;
-  const std::optional<GhostBallShot> shot = ghost_ball_shot(table, legal.cue_ball, targets);
+  const std::optional<Reply> reply = reply_table(state);
+  if (!reply) return 0.0;
+  const std::optional<GhostBallShot> shot = ghost_ball_shot(reply->table, reply->cue_ball, reply->targets);
   if (!shot) return 0.0;
   if (noise.aim <= 0.0) return 1.0;
-  const double tolerance = 2.0 * table.settings.parameters.ball.radius * kPotTolerance * shot->score;
+  const double tolerance = 2.0 * reply->table.settings.parameters.ball.radius * kPotTolerance * shot->score;
   return std::erf(tolerance / (noise.aim * std::numbers::sqrt2));
 }
 

@@ -4,7 +4,9 @@
 // The search is a short driver over a SafetySearch and named steps:
 // propose the strikes, play them noise-free through the rules and keep the
 // legal ones, rank them by their noise-free value, play the best out under
-// noise, choose. Every strike is played by play() (games/game.hpp), so the
+// noise, score the few best again by the opponent's reply as the planner
+// searches it (plan_shot on the tables they leave), choose. Every strike is
+// played by play() (games/game.hpp), so the
 // rules themselves judge the contact, the rail, the scratch, the push-out
 // and who shoots next; the noisy repeats draw the game's noise model
 // (shot_normals, as simulate_many and simulate_batch do) from common seeds,
@@ -17,6 +19,7 @@
 #include "cueball/agents/agent.hpp"
 #include "cueball/core/errors.hpp"
 #include "cueball/core/random.hpp"
+#include "cueball/planning/shot_planner.hpp"
 
 namespace cueball {
 
@@ -57,6 +60,8 @@ struct Candidate {
   double cut = 0.0;    // the contact's offset, ball diameters (safe_hit: 0)
   double exact = -1.0; // value noise-free; -1: fouls or illegal
   double mean = 0.0;   // mean value over the noisy repeats
+  double replied = -1.0;  // value by the planned reply (finalists only)
+  std::vector<GameState> outcomes;  // the noise-free outcome, then the first noisy repeats'
 };
 
 // One safety search: filled by the steps below, in order.
@@ -71,6 +76,7 @@ struct SafetySearch {
   GameState noisy;     // the state with `noise`
   std::vector<Candidate> candidates;
   std::vector<std::size_t> ranked;  // indices of the legal candidates, best noise-free first
+  std::vector<std::size_t> finalists;  // of them, the best by mean value
   SafetyPlan plan;
 };
 
@@ -147,6 +153,7 @@ void screen_noise_free(SafetySearch& s) {
       ++s.plan.simulations;
       if (step.ruling.foul) continue;
       c.exact = value_after_shot(step.next, s.state.to_shoot, s.noise);
+      c.outcomes.push_back(step.next);
     } catch (const InvalidArgument&) {
       // an action the rules refuse (e.g. a spot that is not free): not a candidate
     }
@@ -174,26 +181,52 @@ void play_out_under_noise(SafetySearch& s) {
       const GameStep step = play(s.noisy, c.action, stream_seed(s.seed, static_cast<std::uint64_t>(r)));
       ++s.plan.simulations;
       sum += value_after_shot(step.next, s.state.to_shoot, s.noise);
+      if (r + 1 < kSafetyReplyOutcomes) c.outcomes.push_back(step.next);
     }
     c.mean = sum / kSafetyRepeats;
   }
 }
 
-// Step: the best mean value (the first of equal ones, in rank order).
+// Step: the kSafetyFinalists best by mean value (the first of equal ones,
+// in rank order), each scored again on its kSafetyReplyOutcomes outcomes by
+// the reply the planner would plan from them; the reply plans of every
+// finalist share the seeds, outcome by outcome.
+void search_replies(SafetySearch& s) {
+  s.finalists = s.ranked;
+  std::stable_sort(s.finalists.begin(), s.finalists.end(),
+                   [&](std::size_t a, std::size_t b) { return s.candidates[a].mean > s.candidates[b].mean; });
+  if (s.finalists.size() > static_cast<std::size_t>(kSafetyFinalists))
+    s.finalists.resize(static_cast<std::size_t>(kSafetyFinalists));
+  for (const std::size_t k : s.finalists) {
+    Candidate& c = s.candidates[k];
+    double sum = 0.0;
+    for (std::size_t j = 0; j < c.outcomes.size(); ++j) {
+      const std::uint64_t seed = stream_seed(s.seed, static_cast<std::uint64_t>(kSafetyRepeats) + j);
+      sum += planned_value_after_shot(c.outcomes[j], s.state.to_shoot, s.noise, seed, s.plan.simulations);
+      ++s.plan.replies;
+    }
+    c.replied = sum / static_cast<double>(c.outcomes.size());
+  }
+}
+
+// Step: the finalist with the best value by the planned reply (the first
+// of equal ones, in order of their mean value).
 void choose(SafetySearch& s) {
   const Candidate* best = nullptr;
-  for (const std::size_t k : s.ranked)
-    if (!best || s.candidates[k].mean > best->mean) best = &s.candidates[k];
+  for (const std::size_t k : s.finalists)
+    if (!best || s.candidates[k].replied > best->replied) best = &s.candidates[k];
   if (!best) return;
   s.plan.action = best->action;
-  s.plan.value = best->mean;
+  s.plan.value = best->replied;
+  s.plan.screen_value = best->mean;
   s.plan.noise_free_value = best->exact;
-  char b[240];
+  char b[300];
   std::snprintf(b, sizeof b,
-                "safety: hit the %d at %.2f ball, %.2f m/s%s: value %.3f under noise (%.3f noise-free); "
-                "%d legal of %d strikes, %d played out %d times",
+                "safety: hit the %d at %.2f ball, %.2f m/s%s: value %.3f by the planned reply (screen %.3f under "
+                "noise, %.3f noise-free); %d legal of %d strikes, %d played out %d times, %d replies planned",
                 best->target, best->cut, best->action.strike.speed, best->action.push_out ? ", pushed out" : "",
-                best->mean, best->exact, s.plan.legal, s.plan.candidates, s.plan.screened, kSafetyRepeats);
+                best->replied, best->mean, best->exact, s.plan.legal, s.plan.candidates, s.plan.screened,
+                kSafetyRepeats, s.plan.replies);
   s.plan.detail = b;
 }
 
@@ -221,37 +254,87 @@ PlannerChoice decide_by_value(PlannerChoice c, const GameState& state, const Leg
   return c;
 }
 
-}  // namespace
-
-double value_after_shot(const GameState& next, int shooter, const CueStrikeNoise& noise) {
-  if (next.over) return next.winner ? (*next.winner == shooter ? 1.0 : 0.0) : 0.5;
-  const double q = pot_chance(next, noise);
+// The shooter's value after a shot that led to `next` (not over), the
+// player to act potting with probability q.
+double shooter_value(const GameState& next, int shooter, double q) {
   const double v = next.phase == GamePhase::decision ? std::max(q, 1.0 - q) : q;  // play or pass
   return next.to_shoot == shooter ? v : 1.0 - v;
 }
 
-double pot_chance(const GameState& state, const CueStrikeNoise& noise) {
-  if (state.over) return 0.0;
+// The table the player to act in `state` shoots from, as both estimates of
+// their chance take it: decisions due taken as play, the cue ball in hand
+// at ghost_ball_in_hand_spot() (no spot: where it lies). None when the game
+// is over, no shot is open, no ball is on, or the cue ball is off the table.
+struct Reply {
+  Scenario table;
+  int cue_ball = 0;
+  std::vector<int> targets;
+};
+std::optional<Reply> reply_table(const GameState& state) {
+  if (state.over) return std::nullopt;
   const GameState view = as_played(state);
   const LegalActions legal = legal_actions(view);
-  if (!legal.shoot) return 0.0;
-  const std::vector<int> targets = shot_targets(view, legal);
-  if (targets.empty()) return 0.0;
-  Scenario table = view.table;
+  if (!legal.shoot) return std::nullopt;
+  Reply r{view.table, legal.cue_ball, shot_targets(view, legal)};
+  if (r.targets.empty()) return std::nullopt;
   if (legal.ball_in_hand)
-    if (const std::optional<Vec2> spot = ghost_ball_in_hand_spot(table, legal.cue_ball, targets, *legal.ball_in_hand))
-      table = with_cue_ball_at(table, legal.cue_ball, *spot);
-  if (!find_ball(table.balls, legal.cue_ball)) return 0.0;
-  const std::optional<GhostBallShot> shot = ghost_ball_shot(table, legal.cue_ball, targets);
+    if (const std::optional<Vec2> spot = ghost_ball_in_hand_spot(r.table, r.cue_ball, r.targets, *legal.ball_in_hand))
+      r.table = with_cue_ball_at(r.table, r.cue_ball, *spot);
+  if (!find_ball(r.table.balls, r.cue_ball)) return std::nullopt;
+  return r;
+}
+
+}  // namespace
+
+double value_after_shot(const GameState& next, int shooter, const CueStrikeNoise& noise) {
+  if (next.over) return next.winner ? (*next.winner == shooter ? 1.0 : 0.0) : 0.5;
+  return shooter_value(next, shooter, pot_chance(next, noise));
+}
+
+double planned_value_after_shot(const GameState& next, int shooter, const CueStrikeNoise& noise, std::uint64_t seed,
+                                long long& simulations) {
+  if (next.over) return next.winner ? (*next.winner == shooter ? 1.0 : 0.0) : 0.5;
+  return shooter_value(next, shooter, planned_chance(next, noise, seed, simulations));
+}
+
+double planned_chance(const GameState& state, const CueStrikeNoise& noise, std::uint64_t seed,
+                      long long& simulations) {
+  const std::optional<Reply> reply = reply_table(state);
+  if (!reply) return 0.0;
+  PlanRequest q;
+  q.cue_ball = reply->cue_ball;
+  if (reply->targets.size() == 1)
+    q.target = reply->targets.front();
+  else
+    q.targets = reply->targets;
+  q.kinds = {ShotKind::direct, ShotKind::bank};
+  q.noise = noise;
+  q.seed = seed;
+  q.simulations = kSafetyReplySimulations;
+  double planned = 0.0;
+  try {
+    const ShotPlanResult r = plan_shot(reply->table, q);
+    simulations += r.simulations;
+    planned = r.shot.success_probability;
+  } catch (const NoFeasibleShot&) {
+    simulations += kSafetyReplySimulations;  // the API does not report them: the budget is the upper bound
+  }
+  return std::max(planned, pot_chance(state, noise));
+}
+
+double pot_chance(const GameState& state, const CueStrikeNoise& noise) {
+  const std::optional<Reply> reply = reply_table(state);
+  if (!reply) return 0.0;
+  const std::optional<GhostBallShot> shot = ghost_ball_shot(reply->table, reply->cue_ball, reply->targets);
   if (!shot) return 0.0;
   if (noise.aim <= 0.0) return 1.0;
-  const double tolerance = 2.0 * table.settings.parameters.ball.radius * kPotTolerance * shot->score;
+  const double tolerance = 2.0 * reply->table.settings.parameters.ball.radius * kPotTolerance * shot->score;
   return std::erf(tolerance / (noise.aim * std::numbers::sqrt2));
 }
 
 std::optional<SafetyPlan> plan_safety(const GameState& state, const LegalActions& legal, std::optional<Vec2> place,
                                       const CueStrikeNoise& noise, std::uint64_t seed) {
-  SafetySearch s{state, legal, place, noise, seed, state.table, state, state, {}, {}, {}};
+  SafetySearch s{state, legal, place, noise, seed, state.table, state, state, {}, {}, {}, {}};
   if (place) s.table = with_cue_ball_at(state.table, legal.cue_ball, *place);
   s.exact.config.noise = CueStrikeNoise{};
   s.noisy.config.noise = noise;
@@ -260,6 +343,7 @@ std::optional<SafetyPlan> plan_safety(const GameState& state, const LegalActions
   rank(s);
   if (s.ranked.empty()) return std::nullopt;
   play_out_under_noise(s);
+  search_replies(s);
   choose(s);
   return s.plan;
 }
@@ -281,7 +365,7 @@ PlannerChoice safety_planner_choice(const AgentOptions& options, const GameState
     return c;
   }
   c.simulations += plan->simulations;
-  if (pot && c.success_probability >= plan->value) {
+  if (pot && plan->value <= c.success_probability + kSafetyMargin) {
     c.detail += "; the pot beats the " + plan->detail;
     return c;
   }

@@ -98,16 +98,13 @@ GameFigures figures(const PlayedGame& g) {
   const auto agent_of = [&](int player) { return player == 0 ? g.breaker : 1 - g.breaker; };
   const GameState* before = &r.start;
   int visitor = -1, in_visit = 0;
-  bool first_visit = true;
   for (const RecordedStep& s : r.steps) {
     const int agent = agent_of(before->to_shoot);
     if (agent != visitor) {
       if (visitor >= 0) f.visits[static_cast<std::size_t>(visitor)].push_back(in_visit);
-      first_visit = visitor < 0;
       visitor = agent;
       in_visit = 0;
     }
-    (void)first_visit;
     const std::size_t p = static_cast<std::size_t>(before->to_shoot);
     if (s.ruling.foul) ++f.fouls[static_cast<std::size_t>(agent)];
     if (r.start.config.kind == GameKind::snooker || r.start.config.kind == GameKind::three_cushion) {
@@ -212,8 +209,8 @@ Options parse(int argc, char** argv) {
 int run(const Options& o) {
   GameConfig config = default_config(o.game);
   config.noise = o.noise ? tournament_noise() : CueStrikeNoise{};
-  std::array<AgentOptions, 2> agents{*agent_named(o.names[0]), *agent_named(o.names[1])};
-  for (AgentOptions& a : agents) a.noise = config.noise.aim > 0.0 ? config.noise : tournament_noise();
+  // The agents plan under the game's noise, tournament noise when it has none (planning_noise()).
+  const std::array<AgentOptions, 2> agents{*agent_named(o.names[0]), *agent_named(o.names[1])};
   std::printf("cueball-agent-benchmark: %s, %s v %s, %d games from seed %llu, %s noise\n", to_string(o.game),
               o.names[0].c_str(), o.names[1].c_str(), o.games, static_cast<unsigned long long>(o.seed),
               o.noise ? "tournament" : "no");

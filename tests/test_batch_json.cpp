@@ -36,7 +36,7 @@ TEST(BatchJson, TheReportsKeysThenEachBall) {
   EXPECT_EQ(j["balls"][1]["name"], "one");
   EXPECT_EQ(j["balls"][1]["pocketed_probability"].get<double>(), r.balls[1].pocketed_probability);
   EXPECT_EQ(j["pocketed_probability"]["1"].get<double>(), r.balls[1].pocketed_probability);
-  EXPECT_EQ(j["balls"][0]["mean_position"], nlohmann::json::array({r.balls[0].mean_position.x, r.balls[0].mean_position.y}));
+  EXPECT_EQ(j["balls"][0]["mean_position"], nlohmann::ordered_json::array({r.balls[0].mean_position.x, r.balls[0].mean_position.y}));
 }
 
 TEST(BatchJson, ManyCountsEachBallsPotsAndNamesTheOutcomesFile) {

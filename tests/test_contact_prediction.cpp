@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <random>
 
 #include "test_support.hpp"
@@ -78,7 +79,7 @@ TEST(Events, TouchingPairsCollideOnlyWhenApproaching) {
   const BallState b_overlap{{-2 * r + 1e-15, 0}, {0, 0}, {}};
   EXPECT_FALSE(predict_ball_ball_contact(a, b_overlap, p, horizon_of(a, b_overlap, p)));
   // A frozen pair at rest never collides.
-  EXPECT_FALSE(predict_ball_ball_contact(BallState{{0, 0}, {}, {}}, b_ahead, p, INFINITY));
+  EXPECT_FALSE(predict_ball_ball_contact(BallState{{0, 0}, {}, {}}, b_ahead, p, std::numeric_limits<double>::infinity()));
 }
 
 TEST(Events, EqualAccelerationsDegenerateToLowerDegree) {

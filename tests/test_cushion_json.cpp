@@ -28,7 +28,7 @@ TEST(CushionJson, TheReportThenTheHistory) {
   EXPECT_EQ(keys, (std::vector<std::string>{"speed", "warnings", "history"}));
   EXPECT_EQ(j["history"][0]["P"], 0.25);
   EXPECT_NEAR(j["history"][0]["phi"].get<double>(), 30.0, 1e-12);
-  EXPECT_EQ(j["history"][0]["v"], nlohmann::json::array({1.0, -2.0, 0.0}));
+  EXPECT_EQ(j["history"][0]["v"], nlohmann::ordered_json::array({1.0, -2.0, 0.0}));
   EXPECT_EQ(cushion_report_to_json(report), report_to_json(report));
 }
 

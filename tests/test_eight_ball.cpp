@@ -4,7 +4,6 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <numbers>
 
 #include "cueball/core/random.hpp"
 #include "cueball/games/game.hpp"
@@ -20,7 +19,6 @@ using test::called;
 using test::diagonal_draw;
 using test::decide;
 
-constexpr double kDeg = std::numbers::pi / 180.0;
 constexpr int kBottomLeft = 0;  // pocket index of the bottom-left corner (pool_9ft)
 
 Group group_of(int id) { return id < 8 ? Group::solids : (id > 8 ? Group::stripes : Group::none); }

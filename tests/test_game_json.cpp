@@ -14,6 +14,7 @@
 #include "cueball/io/game_json.hpp"
 #include "cueball/planning/shot_planner.hpp"
 #include "expect_invalid.hpp"
+#include "test_scale.hpp"
 
 namespace cueball {
 namespace {
@@ -77,7 +78,9 @@ TEST(GameJson, EveryDisciplineRoundTripsAndReplays) {
     }
     SCOPED_TRACE(to_string(kind));
     std::vector<GameRecord> games;
-    for (std::uint64_t seed = 0; seed < 3; ++seed) {
+    // Three games a discipline; one under the sanitizers (test_scale.hpp).
+    const auto games_played = static_cast<std::uint64_t>(test::scaled(3, 1));
+    for (std::uint64_t seed = 0; seed < games_played; ++seed) {
       games.push_back(play_game(config, {random, random}, seed));
       expect_round_trip(games.back().start);
       // Every state of the first game, every 7th of the others (the record's

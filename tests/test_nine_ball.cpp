@@ -3,7 +3,6 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <numbers>
 
 #include "cueball/core/random.hpp"
 #include "cueball/games/game.hpp"
@@ -16,7 +15,6 @@ namespace {
 using test::aim_deg;
 using test::strike;
 
-constexpr double kDeg = std::numbers::pi / 180.0;
 
 // A 9-ball game in play (after the break) with exactly these balls.
 GameState in_play(const std::vector<std::pair<int, Vec2>>& balls) {

@@ -31,7 +31,7 @@ TEST(Report, JsonHasEveryEntryInOrderWithSectionsNested) {
   EXPECT_TRUE(j["shots"].is_number_integer());
   EXPECT_EQ(report_to_json(r, -1), j.dump());  // -1: one line
   r.warn("careful");
-  EXPECT_EQ(nlohmann::ordered_json::parse(report_to_json(r))["warnings"], nlohmann::json::array({"careful"}));
+  EXPECT_EQ(nlohmann::ordered_json::parse(report_to_json(r))["warnings"], nlohmann::ordered_json::array({"careful"}));
 }
 
 TEST(Report, PrintsTheJsonOrAnAlignedTable) {

@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <cstdlib>
 #include <numbers>
 #include <random>
@@ -40,7 +41,7 @@ double total_kinetic_energy(const SimulationResult& r, double t, const Parameter
 // energy never increases from one event to the next.
 void expect_physical_at_every_event(const Table& table, const SimulationResult& r, const Parameters& p) {
   ASSERT_LE(deepest_penetration(table, r, p, 1), 1e-9) << "an overlap, or a ball inside a cushion or jaw";
-  double previous_energy = INFINITY;
+  double previous_energy = std::numeric_limits<double>::infinity();
   for (const Event& e : r.events) {
     const double t = e.time;
     const double energy = total_kinetic_energy(r, t, p);

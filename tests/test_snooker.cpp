@@ -6,7 +6,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <numbers>
 
 #include "cueball/core/random.hpp"
 #include "cueball/games/game.hpp"
@@ -19,7 +18,6 @@ namespace {
 using test::aim_deg;
 using test::strike;
 
-constexpr double kDeg = std::numbers::pi / 180.0;
 constexpr int kYellow = 16, kGreen = 17, kBrown = 18, kBlue = 19, kPink = 20, kBlack = 21;
 
 std::string name_of(int id) {

@@ -3,7 +3,6 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <numbers>
 
 #include "cueball/core/random.hpp"
 #include "cueball/games/game.hpp"
@@ -19,7 +18,6 @@ using test::called;
 using test::diagonal_draw;
 using test::decide;
 
-constexpr double kDeg = std::numbers::pi / 180.0;
 constexpr int kBottomLeft = 0;  // pocket index of the bottom-left corner (pool_9ft)
 
 // A 10-ball game in play (after the break) with exactly these balls.

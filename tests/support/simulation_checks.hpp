@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <vector>
 
 #include "cueball/simulation/simulator.hpp"
@@ -47,7 +48,7 @@ inline double deepest_penetration(const Table& table, const SimulationResult& r,
 }
 
 inline double energy_rise(const SimulationResult& r, const Parameters& p) {
-  double previous = INFINITY, rise = 0.0;
+  double previous = std::numeric_limits<double>::infinity(), rise = 0.0;
   for (const Event& e : r.events) {
     double total = 0.0;
     for (std::size_t i = 0; i < r.balls.size(); ++i)

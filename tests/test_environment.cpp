@@ -6,6 +6,7 @@
 
 #include "cueball/core/errors.hpp"
 #include "cueball/rl/environment.hpp"
+#include "expect_invalid.hpp"
 #include "game_actions.hpp"
 
 namespace cueball {
@@ -57,6 +58,38 @@ TEST(Environment, TheOpponentRepliesUntilItIsTheLearnersTurn) {
     ++steps;
   }
   EXPECT_TRUE(t.state.over);
+}
+
+// An opponent given in full (EnvOpponent::agent, how "strongest" is given)
+// plays those options: the same as the kind and budget it names, step for
+// step; none of the two is self-play; a bad field is named as
+// validate(AgentOptions) names it, under "opponent.".
+TEST(Environment, AnOpponentGivenInFullPlaysThoseOptions) {
+  EnvOptions by_kind;
+  by_kind.opponent.kind = AgentKind::random;
+  by_kind.seat = 1;
+  EnvOptions in_full = by_kind;
+  in_full.opponent.kind = AgentKind::ghost_ball;  // not read when agent is set
+  AgentOptions random;
+  random.kind = AgentKind::random;
+  random.simulations = by_kind.opponent.simulations;
+  in_full.opponent.agent = random;
+  ASSERT_TRUE(opponent_agent(in_full.opponent));
+  EXPECT_EQ(opponent_agent(in_full.opponent)->kind, AgentKind::random);
+  EXPECT_EQ(opponent_agent(by_kind.opponent)->simulations, 300);
+  EXPECT_FALSE(opponent_agent(EnvOpponent{std::nullopt, 300, std::nullopt}));
+  EnvTable a, b;
+  env_reset(by_kind, a, 5);
+  env_reset(in_full, b, 5);
+  for (int step = 0; step < 12 && !a.state.over; ++step) {
+    const EnvStepResult ra = env_step(by_kind, a, aimed(0.0, 0.3 * step));
+    const EnvStepResult rb = env_step(in_full, b, aimed(0.0, 0.3 * step));
+    EXPECT_EQ(ra.players, rb.players);
+    EXPECT_EQ(a.state, b.state) << "step " << step;
+  }
+  EnvOptions bad = in_full;
+  bad.opponent.agent->simulations = 0;
+  test::expect_invalid("opponent.simulations", [&] { validate(bad); });
 }
 
 // An illegal action is a foul stroke: nothing moves, the opponent (self-play:

@@ -42,7 +42,7 @@ except ImportError:  # pragma: no cover - depends on the machine
     _gym_spaces = None
 
 GAMES = ("nine_ball", "eight_ball", "ten_ball", "snooker", "three_cushion")
-OPPONENTS = ("planner", "safety_planner", "ghost_ball", "random", "carom_search")
+OPPONENTS = ("planner", "safety_planner", "ghost_ball", "random", "carom_search", "strongest")
 REWARD_TERMS = ("win", "points", "pots", "fouls", "illegal")
 # The weight a term named alone gets (reward="pots" or reward=["win", "fouls"]).
 DEFAULT_WEIGHTS = {"win": 1.0, "points": 1.0, "pots": 1.0, "fouls": -1.0, "illegal": -1.0}
@@ -208,7 +208,7 @@ class _Options:
     """The environments' options, parsed once (names as the constructors take them)."""
 
     def __init__(self, game: str, opponent: Opponent, noise: Any, reward: Any, max_shots: int, action: str,
-                 break_shot: str, seat: int | None, max_speed: float, simulations: int):
+                 break_shot: str, seat: int | None, max_speed: float, simulations: int | None):
         if game not in GAMES:
             raise _cueball.InvalidArgument(f"game = {game!r} is not known; allowed: {', '.join(GAMES)}")
         self.game = game
@@ -224,7 +224,7 @@ class _Options:
         self.break_shot = break_shot
         self.seat = -1 if seat is None else int(seat)
         self.max_speed = float(max_speed)
-        self.simulations = int(simulations)
+        self.simulations = None if simulations is None else int(simulations)
 
     def native_args(self, opponent: str | None) -> tuple[Any, ...]:
         return (self.game, opponent, self.simulations, self.noise, self.noise_scale, self.reward, self.action,
@@ -294,15 +294,16 @@ _EnvBase: Any = _gym.Env if _gym is not None else object
 class CueballEnv(_EnvBase):  # type: ignore[misc]
     """One learner plays a whole game against ``opponent`` (python/README.md, "Reinforcement learning").
 
-    Options: ``game`` (GAMES), ``opponent`` ('ghost_ball' by default, 'planner', 'random',
-    'carom_search', a callable ``f(observation, info) -> action`` playing the other seat with
+    Options: ``game`` (GAMES), ``opponent`` ('ghost_ball' by default, 'planner', 'safety_planner',
+    'random', 'carom_search', 'strongest' (the strongest agent, issue 27), a callable ``f(observation, info) -> action`` playing the other seat with
     the same action space, or None for self-play: every step is the action of the player to
     act, the observation that player's), ``noise`` (None, 'tournament', a dict of sigmas in the
     scenario's units, or ``{'base': ..., 'scale': [lo, hi]}`` drawn per episode), ``reward``
     (a term, a list of terms or a dict of weights over REWARD_TERMS), ``max_shots``, ``action``
     ('raw' or 'target'), ``break_shot`` ('recommended': the engine breaks for whoever breaks;
     'agent'), ``seat`` (0 breaks, 1, or None drawn per episode), ``max_speed`` (m/s of
-    strike[0] = 1), ``simulations`` (the planner or carom_search opponent's runs a decision),
+    strike[0] = 1), ``simulations`` (the opponent's engine runs a decision; None: 300 for a
+    kind's name, the strongest agent's own budget for 'strongest'),
     ``render_mode`` (None or 'html': render() returns the episode's viewer page).
     """
 
@@ -310,7 +311,7 @@ class CueballEnv(_EnvBase):  # type: ignore[misc]
 
     def __init__(self, game: str = "nine_ball", opponent: Opponent = "ghost_ball", noise: Any = None,
                  reward: Any = "win", max_shots: int = 200, action: str = "raw", break_shot: str = "recommended",
-                 seat: int | None = 0, max_speed: float = 8.0, simulations: int = 300,
+                 seat: int | None = 0, max_speed: float = 8.0, simulations: int | None = None,
                  render_mode: str | None = None):
         if render_mode not in (None, "html"):
             raise _cueball.InvalidArgument(f"render_mode = {render_mode!r} is not known; allowed: None, 'html'")
@@ -559,7 +560,7 @@ class VectorEnv:
     def __init__(self, num_envs: int, game: str = "nine_ball", opponent: str | None = "ghost_ball",
                  noise: Any = None, reward: Any = "win", max_shots: int = 200, action: str = "raw",
                  break_shot: str = "recommended", seat: int | None = 0, max_speed: float = 8.0,
-                 simulations: int = 300, threads: int | None = None, seed: int = 0):
+                 simulations: int | None = None, threads: int | None = None, seed: int = 0):
         if callable(opponent):
             raise _cueball.InvalidArgument("opponent: a callable opponent is not supported by VectorEnv; use CueballEnv")
         self.options = _Options(game, opponent, noise, reward, max_shots, action, break_shot, seat, max_speed,

@@ -36,17 +36,24 @@ E named(std::optional<E> value, const std::string& field, const std::string& nam
 }
 
 // The options rl.py parsed (python/cueball/rl.py, _native_options()).
-EnvOptions make_options(const std::string& game, const std::optional<std::string>& opponent, int simulations,
+EnvOptions make_options(const std::string& game, const std::optional<std::string>& opponent,
+                        std::optional<int> simulations,
                         const py::object& noise, std::array<double, 2> noise_scale, const py::dict& reward,
                         const std::string& form, const std::string& break_policy, int seat, int max_shots,
                         double max_speed) {
   EnvOptions o;
   o.game = named(cueball::game_kind_from_string(game), "game", game, cueball::game_kind_names());
-  if (opponent)
-    o.opponent.kind = named(cueball::agent_kind_from_string(*opponent), "opponent", *opponent, cueball::agent_kind_names());
-  else
+  // An agent by name (agent_named(): a kind, at the environment's quick
+  // budget unless `simulations` is given, or "strongest" at its own).
+  if (opponent && *opponent == "strongest") {
+    o.opponent.agent = named(cueball::agent_named(*opponent), "opponent", *opponent, cueball::agent_names());
+    if (simulations) o.opponent.agent->simulations = *simulations;
+  } else if (opponent) {
+    o.opponent.kind = named(cueball::agent_kind_from_string(*opponent), "opponent", *opponent, cueball::agent_names());
+  } else {
     o.opponent.kind.reset();
-  o.opponent.simulations = simulations;
+  }
+  if (simulations) o.opponent.simulations = *simulations;
   const cueball::GameState probe = cueball::new_game(cueball::default_config(o.game), 0);
   if (const auto n = noise_argument(noise, probe.table.table.ball.radius)) o.noise.base = *n;
   o.noise.scale_min = noise_scale[0];
@@ -239,7 +246,7 @@ void bind_rl(py::module_& m) {
   rl.attr("decision_choices") = cueball::kEnvDecisionChoices;
 
   py::class_<NativeTable>(rl, "Table")
-      .def(py::init([](const std::string& game, const std::optional<std::string>& opponent, int simulations,
+      .def(py::init([](const std::string& game, const std::optional<std::string>& opponent, std::optional<int> simulations,
                        const py::object& noise, std::array<double, 2> noise_scale, const py::dict& reward,
                        const std::string& form, const std::string& break_policy, int seat, int max_shots,
                        double max_speed, bool record) {
@@ -324,7 +331,7 @@ void bind_rl(py::module_& m) {
       });
 
   py::class_<NativeVector>(rl, "VectorTables")
-      .def(py::init([](const std::string& game, const std::optional<std::string>& opponent, int simulations,
+      .def(py::init([](const std::string& game, const std::optional<std::string>& opponent, std::optional<int> simulations,
                        const py::object& noise, std::array<double, 2> noise_scale, const py::dict& reward,
                        const std::string& form, const std::string& break_policy, int seat, int max_shots,
                        double max_speed, int n, int threads, std::uint64_t seed) {

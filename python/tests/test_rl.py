@@ -146,6 +146,22 @@ class CueballEnvTest(unittest.TestCase):
         self.assertIn('"game"', page)
         self.assertIsNone(rl.CueballEnv().render())
 
+    def test_the_strongest_agent_by_name(self):
+        # Three-cushion's strongest is carom_search at its own budget (quick);
+        # the opponent breaks and replies until the learner is to act.
+        env = rl.CueballEnv(game="three_cushion", opponent="strongest", seat=1)
+        obs, info = env.reset(seed=2)
+        self.assertEqual(info["to_shoot"], 1)
+        obs, reward, terminated, truncated, info = env.step(env.action_space.sample())
+        self.assertTrue(terminated or truncated or info["to_shoot"] == 1)
+        self.assertIn("strongest", rl.OPPONENTS)
+        with self.assertRaises(cueball.InvalidArgument) as e:
+            rl.CueballEnv(opponent="strongest", simulations=0)
+        self.assertIn("opponent.simulations", str(e.exception))
+        with self.assertRaises(cueball.InvalidArgument) as e:
+            rl.CueballEnv(opponent="shark")
+        self.assertIn("strongest", str(e.exception))
+
     def test_bad_options_name_the_option(self):
         for kwargs, word in (({"game": "pool"}, "game"), ({"opponent": "shark"}, "opponent"),
                              ({"reward": "money"}, "reward"), ({"max_shots": 0}, "max_shots"),

@@ -16,6 +16,11 @@ namespace cueball {
 
 namespace {
 
+// An opponent plays (not self-play).
+bool has_opponent(const EnvOptions& options) {
+  return options.opponent.agent.has_value() || options.opponent.kind.has_value();
+}
+
 std::string num(double v) { return std::to_string(v); }
 
 // The stream of a game's seed that draws the episode's seat and noise
@@ -75,10 +80,7 @@ void play_automatic(StepRun& run) {
   if (t.state.phase == GamePhase::break_shot && run.options.break_policy == BreakPolicy::recommended) {
     action = break_action(t.state);
   } else {
-    AgentOptions agent;
-    agent.kind = *run.options.opponent.kind;
-    agent.simulations = run.options.opponent.simulations;
-    action = choose_action(agent, t.state, agent_seed(t.game_seed, t.steps));
+    action = choose_action(*opponent_agent(run.options.opponent), t.state, agent_seed(t.game_seed, t.steps));
   }
   apply(run, play(t.state, action, shot_seed(t.game_seed, t.steps)), false);
 }
@@ -123,13 +125,13 @@ void start_episode(const EnvOptions& options, EnvTable& table, const GameState* 
   table.game_seed = stream_seed(table.seed, table.episode);
   RandomStream rng(stream_seed(table.game_seed, kEpisodeStream));
   const int seat = options.seat >= 0 ? options.seat : (rng.chance(0.5) ? 1 : 0);
-  table.learner = options.opponent.kind ? seat : -1;
+  table.learner = has_opponent(options) ? seat : -1;
   table.noise = scaled(options.noise.base, rng.uniform(options.noise.scale_min, options.noise.scale_max));
   if (start) {
     table.state = *start;
     table.state.config.noise = table.noise;
     table.state.config.max_shots = start->shots + options.max_shots;
-    if (options.opponent.kind && options.seat < 0) table.learner = start->to_shoot;
+    if (has_opponent(options) && options.seat < 0) table.learner = start->to_shoot;
   } else {
     GameConfig config = env_game_config(options);
     config.noise = table.noise;
@@ -164,9 +166,17 @@ void validate(const EnvOptions& options) {
   if (!(n.scale_min >= 0.0 && n.scale_max >= n.scale_min && n.scale_max <= 100.0))
     throw InvalidArgument("noise.scale", "noise.scale = [" + num(n.scale_min) + ", " + num(n.scale_max) +
                                              "] is not a range within [0, 100]");
-  if (options.opponent.kind && (options.opponent.simulations < 1 || options.opponent.simulations > 1000000))
+  if (options.opponent.agent) {
+    try {
+      validate(*options.opponent.agent);
+    } catch (const InvalidArgument& e) {
+      const std::string field = "opponent." + e.field();
+      throw InvalidArgument(field, field + ": " + e.what());
+    }
+  } else if (options.opponent.kind && (options.opponent.simulations < 1 || options.opponent.simulations > 1000000)) {
     throw InvalidArgument("opponent.simulations", options.opponent.simulations, "[1, 1000000]",
                           "engine runs of an opponent's decision");
+  }
   const RewardTerms& w = options.reward;
   for (const double v : {w.win, w.points, w.pots, w.fouls, w.illegal})
     if (!std::isfinite(v)) throw InvalidArgument("reward", "reward: every weight must be finite");
@@ -178,8 +188,17 @@ GameConfig env_game_config(const EnvOptions& options) {
   return c;
 }
 
+std::optional<AgentOptions> opponent_agent(const EnvOpponent& opponent) {
+  if (opponent.agent) return opponent.agent;
+  if (!opponent.kind) return std::nullopt;
+  AgentOptions agent;
+  agent.kind = *opponent.kind;
+  agent.simulations = opponent.simulations;
+  return agent;
+}
+
 bool opponent_to_act(const EnvOptions& options, const EnvTable& table) {
-  return options.opponent.kind && !table.state.over && table.state.to_shoot != table.learner;
+  return has_opponent(options) && !table.state.over && table.state.to_shoot != table.learner;
 }
 
 void env_reset(const EnvOptions& options, EnvTable& table, std::optional<std::uint64_t> seed) {

@@ -92,12 +92,20 @@ struct NoiseRange {
   double scale_max = 1.0;
 };
 
-/// The opponent's kind, or none: self-play (each step is the action of the
-/// player to act).
+/// The opponent: an agent kind at a quick budget, or an agent's options in
+/// full (`agent`: agent_named("strongest"), or any AgentOptions); neither:
+/// self-play (each step is the action of the player to act).
 struct EnvOpponent {
   std::optional<AgentKind> kind = AgentKind::ghost_ball;
   int simulations = 300;  ///< engine runs of a planner or carom_search decision
+  /// When set, the opponent plays these options (kind and simulations are
+  /// not read).
+  std::optional<AgentOptions> agent;
 };
+
+/// The options the opponent plays: `agent` when set, else `kind` at
+/// `simulations` runs (AgentOptions' other defaults); none: self-play.
+std::optional<AgentOptions> opponent_agent(const EnvOpponent& opponent);
 
 struct EnvOptions {
   GameKind game = GameKind::nine_ball;
@@ -113,7 +121,8 @@ struct EnvOptions {
 };
 
 /// Throws InvalidArgument naming the field ("max_shots", "max_speed",
-/// "seat", "noise.scale", "opponent.simulations", ...).
+/// "seat", "noise.scale", "opponent.simulations", an `opponent.agent`'s
+/// field as validate(AgentOptions) names it, ...).
 void validate(const EnvOptions& options);
 
 /// The game a table plays: default_config(options.game) with max_shots.

@@ -653,6 +653,7 @@ struct Options {
   std::optional<int> agent_simulations;     // --planner-simulations
   std::optional<int> position_simulations;  // --position
   std::optional<int> noisy_leaves;          // --noisy-leaves
+  std::optional<int> depth;                 // --depth
   bool in_hand_planner = true;   // the run-outs' first cue ball placed by plan_ball_in_hand, not by the rule
   bool real_break = false;       // --break recommended: the game's own break, the run-out only after a made one
   std::optional<std::vector<ShotKind>> kinds;           // the run-outs' shot kinds
@@ -664,6 +665,7 @@ struct Options {
     if (agent_simulations) a.simulations = *agent_simulations;
     if (position_simulations) a.position_simulations = *position_simulations;
     if (noisy_leaves) a.position_noisy_leaves = *noisy_leaves;
+    if (depth) a.position_depth = *depth;
     if (kinds) a.kinds = *kinds;
     if (fallback_kinds) a.fallback_kinds = *fallback_kinds;
     return a;
@@ -679,6 +681,7 @@ void usage() {
       "                                 [--seed S] [--planner-simulations N] [--position N] [--threads T]\n"
       "                                 [--in-hand rule|planner] [--break rule|recommended] [--kinds LIST]\n"
       "                                 [--fallback-kinds LIST] [--agent NAME] [--noisy-leaves N]\n"
+      "                                 [--depth D]\n"
       "                                 [--json FILE] [--layouts-out DIR]\n"
       "The shot planner against a ghost-ball baseline and an exhaustive grid search (docs/planner-benchmark.md).\n"
       "  --suite S                single, runout or all (default all)\n"
@@ -694,6 +697,7 @@ void usage() {
       "                           next-shot plan, [%d, %d] (default: the agent's; strongest 1000)\n"
       "  --noisy-leaves N         position play: noisy outcomes of each finalist whose leaves are scored,\n"
       "                           [0, %d] (default %d; 0: the noise-free leave alone)\n"
+      "  --depth D                position play: shots looked ahead, [1, %d] (default: the agent's, 1)\n"
       "  --in-hand H              the run-outs' cue ball in hand after the break: planner (plan_ball_in_hand,\n"
       "                           with --position's budget, 1000 without it; the default) or rule (a straight-in\n"
       "                           on the lowest ball)\n"
@@ -711,7 +715,7 @@ void usage() {
       "                           cue: the balls at rest, tournament noise), for cueball plan-shot --ball 1\n"
       "Exit status: 0 done, 1 an engine error, 2 bad flags.\n",
       kMinPlanSimulations, kMaxPlanSimulations, kMinPlanSimulations, kMaxPlanSimulations, kMaxPositionNoisyLeaves,
-      kPositionNoisyLeaves);
+      kPositionNoisyLeaves, kMaxPositionDepth);
 }
 
 std::vector<ShotKind> kinds_flag(const std::string& flag, const std::string& value) {
@@ -737,12 +741,12 @@ Options parse(int argc, char** argv) {
     }
     static const char* const known[] = {"--suite",  "--layouts", "--racks", "--repeats", "--seed", "--planner-simulations",
                                         "--position", "--kinds", "--fallback-kinds", "--threads", "--json", "--layouts-out",
-                                        "--in-hand", "--break", "--agent", "--noisy-leaves"};
+                                        "--in-hand", "--break", "--agent", "--noisy-leaves", "--depth"};
     if (std::find_if(std::begin(known), std::end(known), [&](const char* k) { return flag == k; }) == std::end(known))
       kFlags.bad("flag", flag,
                "--suite, --layouts, --racks, --repeats, --seed, --planner-simulations, --position, --kinds, "
                "--fallback-kinds, --threads, "
-               "--json, --layouts-out, --in-hand, --break, --agent, --noisy-leaves, --help");
+               "--json, --layouts-out, --in-hand, --break, --agent, --noisy-leaves, --depth, --help");
     if (i + 1 >= argc) kFlags.bad(flag, "", "a value after the flag");
     const std::string value = argv[++i];
     if (flag == "--suite") {
@@ -760,6 +764,8 @@ Options parse(int argc, char** argv) {
       o.seed = static_cast<std::uint64_t>(kFlags.integer(flag, value, 0, 1000000000000000000LL));
     } else if (flag == "--noisy-leaves") {
       o.noisy_leaves = static_cast<int>(kFlags.integer(flag, value, 0, kMaxPositionNoisyLeaves));
+    } else if (flag == "--depth") {
+      o.depth = static_cast<int>(kFlags.integer(flag, value, 1, kMaxPositionDepth));
     } else if (flag == "--agent") {
       const std::optional<AgentOptions> a = agent_named(value);
       if (!a || (a->kind != AgentKind::planner && a->kind != AgentKind::safety_planner))
@@ -830,11 +836,11 @@ int run(const Options& o) {
   std::string json = "{\n \"tool\": \"cueball-planner-benchmark\",\n";
   const AgentOptions agent = o.runout_agent();
   json += fmt(" \"options\": {\"suite\": \"%s\", \"layouts\": %d, \"racks\": %d, \"repeats\": %d, \"seed\": %llu, "
-              "\"planner_simulations\": %d, \"agent\": \"%s\", \"agent_simulations\": %d, \"position_simulations\": %d, \"noisy_leaves\": %d, "
+              "\"planner_simulations\": %d, \"agent\": \"%s\", \"agent_simulations\": %d, \"position_simulations\": %d, \"noisy_leaves\": %d, \"depth\": %d, "
               "\"in_hand\": \"%s\", \"break\": \"%s\", \"kinds\": \"%s\", "
               "\"fallback_kinds\": \"%s\", \"threads\": %d},\n",
               o.suite.c_str(), o.layouts, o.racks, o.repeats, static_cast<unsigned long long>(o.seed), o.planner_simulations,
-              o.agent_name.c_str(), agent.simulations, agent.position_simulations, agent.position_noisy_leaves,
+              o.agent_name.c_str(), agent.simulations, agent.position_simulations, agent.position_noisy_leaves, agent.position_depth,
               o.in_hand_planner ? "planner" : "rule",
               o.real_break ? "recommended" : "rule", kinds_text(agent.kinds).c_str(), kinds_text(agent.fallback_kinds).c_str(),
               o.threads);

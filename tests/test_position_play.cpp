@@ -19,6 +19,7 @@
 #include "ball_layout.hpp"
 #include "cueball/core/errors.hpp"
 #include "cueball/simulation/scenario.hpp"
+#include "cueball/table/table.hpp"
 
 namespace cueball {
 namespace {
@@ -26,9 +27,10 @@ namespace {
 using test::layout;
 using test::Placed;
 
-// Cue ball 0, target 1 and the next ball 2 at random places on the 9-ft
-// table (at least 3 R from the cushions and 3 R apart), from `seed`.
-Scenario random_layout(unsigned seed) {
+// Cue ball 0, target 1 and the next ball 2 (and 3, ..., `count` balls in
+// all) at random places on the 9-ft table (at least 3 R from the cushions
+// and 3 R apart), from `seed`.
+Scenario random_layout(unsigned seed, std::size_t count = 3) {
   const Scenario empty = layout({});
   const double R = empty.settings.parameters.ball.radius;
   double xmin = 1e9, xmax = -1e9, ymin = 1e9, ymax = -1e9;
@@ -38,9 +40,9 @@ Scenario random_layout(unsigned seed) {
   std::mt19937_64 rng(seed);
   std::uniform_real_distribution<double> ux(xmin + 3 * R, xmax - 3 * R), uy(ymin + 3 * R, ymax - 3 * R);
   std::vector<Placed> balls;
-  while (balls.size() < 3) {
+  while (balls.size() < count) {
     const Vec2 p{ux(rng), uy(rng)};
-    bool apart = true;
+    bool apart = ball_on_table(empty.table, p);
     for (const Placed& b : balls) apart = apart && norm(b.p - p) > 3.0 * R;
     if (apart) balls.push_back({static_cast<int>(balls.size()), p});
   }
@@ -216,6 +218,69 @@ TEST(PositionPlay, WithNoBallLeftAfterTheTargetThereIsNoLookahead) {
   }
 }
 
+// The leave (plan.shot's or an alternative's) whose shot has this strike.
+const Leave* leave_of(const PositionPlanResult& r, const ShotAction& strike) {
+  if (r.plan.shot.strike == strike) return &r.leave;
+  for (std::size_t k = 0; k < r.plan.alternatives.size(); ++k)
+    if (r.plan.alternatives[k].strike == strike) return &r.alternative_leaves[k];
+  return nullptr;
+}
+
+// Depth 2 (PositionRequest::depth) values a leave by the next two shots:
+// with no ball after the next one it is depth 1 (the same plan, the same
+// leaves); with a third ball each finalist's value is at most depth 1's
+// (a product of windows, the next shot among the ones depth 1 maximises
+// over), and below it somewhere (the ball after the next one counts).
+TEST(PositionPlay, DepthTwoIsDepthOneWithNoBallAfterTheNextAndAtMostItWithOne) {
+  for (unsigned seed = 10; seed < 13; ++seed) {
+    SCOPED_TRACE(seed);
+    const Scenario s = random_layout(seed);
+    PositionRequest q = request_for(1);
+    try {
+      const PositionPlanResult one = plan_shot_for_position(s, q);
+      q.depth = 2;
+      const PositionPlanResult two = plan_shot_for_position(s, q);
+      EXPECT_EQ(two.plan.shot.strike, one.plan.shot.strike);
+      EXPECT_EQ(two.leave.score, one.leave.score);
+      EXPECT_EQ(two.leave.noisy_next_window, one.leave.noisy_next_window);
+    } catch (const NoFeasibleShot&) {
+    }
+  }
+  int lower = 0, finalists = 0;
+  for (unsigned seed = 20; seed < 26; ++seed) {
+    SCOPED_TRACE(seed);
+    const Scenario s = random_layout(seed, 4);
+    PositionRequest q = request_for(1);
+    PositionPlanResult one, two;
+    try {
+      one = plan_shot_for_position(s, q);
+    } catch (const NoFeasibleShot&) {
+      continue;
+    }
+    q.depth = 2;
+    two = plan_shot_for_position(s, q);
+    // The same finalists (steps 1-2 and the screen do not depend on the depth).
+    ASSERT_EQ(two.alternative_leaves.size(), one.alternative_leaves.size());
+    for (const PositionPlanResult* r : {&two}) {
+      std::vector<std::pair<const PlannedShot*, const Leave*>> all{{&r->plan.shot, &r->leave}};
+      for (std::size_t k = 0; k < r->plan.alternatives.size(); ++k)
+        all.push_back({&r->plan.alternatives[k], &r->alternative_leaves[k]});
+      for (const auto& [shot, leave] : all) {
+        const Leave* at_one = leave_of(one, shot->strike);
+        ASSERT_NE(at_one, nullptr);
+        EXPECT_EQ(leave->screened_probability, at_one->screened_probability);
+        EXPECT_EQ(leave->noisy_leaves, at_one->noisy_leaves);
+        if (leave->noisy_leaves == 0) continue;
+        ++finalists;
+        EXPECT_LE(leave->noisy_next_window, at_one->noisy_next_window + 1e-12);
+        lower += leave->noisy_next_window < at_one->noisy_next_window - 1e-3 ? 1 : 0;
+      }
+    }
+  }
+  EXPECT_GT(finalists, 0);
+  EXPECT_GE(lower, 1);
+}
+
 TEST(PositionPlay, BadInputNamesTheField) {
   const Scenario s = random_layout(3);
   const auto field = [&](PositionRequest q) -> std::string {
@@ -241,6 +306,11 @@ TEST(PositionPlay, BadInputNamesTheField) {
   EXPECT_EQ(field(q), "noisy_leaves");
   q.noisy_leaves = kMaxPositionNoisyLeaves + 1;
   EXPECT_EQ(field(q), "noisy_leaves");
+  q = request_for(1);
+  q.depth = 0;
+  EXPECT_EQ(field(q), "depth");
+  q.depth = kMaxPositionDepth + 1;
+  EXPECT_EQ(field(q), "depth");
   q = request_for(5);
   EXPECT_EQ(field(q), "target");
   q = request_for(1);

@@ -63,6 +63,9 @@ void validate(const AgentOptions& options) {
     throw InvalidArgument("position_noisy_leaves", std::to_string(options.position_noisy_leaves) +
                                                        " is out of range [0, " +
                                                        std::to_string(kMaxPositionNoisyLeaves) + "]");
+  if (options.position_depth < 1 || options.position_depth > kMaxPositionDepth)
+    throw InvalidArgument("position_depth", std::to_string(options.position_depth) + " is out of range [1, " +
+                                                std::to_string(kMaxPositionDepth) + "]");
   if (options.noise) validate(*options.noise);
   if (options.kinds.empty()) throw InvalidArgument("kinds", "is empty; allowed: one or more of " + shot_kind_names());
   const auto no_repeat = [](const std::vector<ShotKind>& kinds, const char* field) {

@@ -1,4 +1,4 @@
-// Position play: a one-shot lookahead over plan_shot(); see position_play.hpp.
+// Position play: a lookahead of one or two shots over plan_shot(); see position_play.hpp.
 #include "cueball/planning/position_play.hpp"
 
 #include <algorithm>
@@ -183,16 +183,55 @@ void score_leaves_by_windows(Lookahead& la, std::vector<Candidate>& candidates) 
   if (candidates.size() > kMaxPositionCandidates) candidates.resize(kMaxPositionCandidates);
 }
 
-// The mean over the tables some noisy successes leave of the best next
-// shot's window probability on each (1 where the shot left no next ball);
-// 0 for none.
+// Depth 2's value of a leave (PositionRequest::depth): the best over the
+// next shot's kPositionSecondShots best shots, ranked by window probability
+// without a noisy shot, of its window probability times the best window of
+// the shot after it on the table it leaves (1 where it leaves no ball to
+// play); 0 when the next shot has no feasible shot. The expectimax of
+// PickPocket (Smith 2007) two plies deep, each ply's chance node read from
+// the planner's window probability instead of sampled.
+double two_shot_window(Lookahead& la, const Scenario& left, const std::vector<int>& ids) {
+  const PlanRequest next = next_request(la, ids);
+  ShotSearch windows_only;
+  windows_only.noisy = false;
+  SearchedShots found;
+  try {
+    found = search_shots(left, next, windows_only);
+  } catch (const NoFeasibleShot&) {
+    la.simulations += next.simulations;
+    return 0.0;
+  }
+  la.simulations += found.plan.simulations;
+  std::vector<const PlannedShot*> best{&found.plan.shot};
+  for (const PlannedShot& alternative : found.plan.alternatives)
+    if (best.size() < kPositionSecondShots) best.push_back(&alternative);
+  double value = 0.0;
+  for (const PlannedShot* shot : best) {
+    const Scenario after = table_left_by(left, *shot);
+    const std::vector<int> after_ids = next_ids_on(after, la, {});
+    const double after_window =
+        after_ids.empty() ? 1.0 : best_window_probability(after, next_request(la, after_ids), la.simulations);
+    value = std::max(value, shot->window_probability * after_window);
+  }
+  return value;
+}
+
+// A leave's value for the next shots on table `left` (1 where it leaves no
+// ball to play): depth 1, the best next shot's window probability; depth 2,
+// two_shot_window().
+double leave_value(Lookahead& la, const Scenario& left) {
+  const std::vector<int> ids = next_ids_on(left, la, {});
+  if (ids.empty()) return 1.0;
+  if (la.q.depth >= 2) return two_shot_window(la, left, ids);
+  return best_window_probability(left, next_request(la, ids), la.simulations);
+}
+
+// The mean over the tables some noisy successes leave of leave_value(); 0
+// for none.
 double noisy_next_window(Lookahead& la, const std::vector<Scenario>& leaves) {
   if (leaves.empty()) return 0.0;
   double sum = 0.0;
-  for (const Scenario& left : leaves) {
-    const std::vector<int> ids = next_ids_on(left, la, {});
-    sum += ids.empty() ? 1.0 : best_window_probability(left, next_request(la, ids), la.simulations);
-  }
+  for (const Scenario& left : leaves) sum += leave_value(la, left);
   return sum / static_cast<double>(leaves.size());
 }
 
@@ -225,8 +264,13 @@ void screen_finalists(Lookahead& la, std::vector<Candidate>& candidates) {
     } catch (const NoFeasibleShot&) {
       la.simulations += q.next_simulations;
     }
-    c.leave.score = c.leave.screened_probability * (c.leave.noisy_leaves > 0 ? c.leave.noisy_next_window
-                                                                             : c.leave.next_success_probability);
+    // With no noisy leave, the noise-free one: at depth 1 by the next
+    // shot's full plan (the lookahead before issue 27), at depth 2 by
+    // leave_value().
+    if (c.leave.noisy_leaves == 0 && q.depth >= 2) c.leave.noisy_next_window = leave_value(la, c.left);
+    const bool by_windows = c.leave.noisy_leaves > 0 || q.depth >= 2;
+    c.leave.score = c.leave.screened_probability *
+                    (by_windows ? c.leave.noisy_next_window : c.leave.next_success_probability);
   }
   std::stable_sort(candidates.begin(), candidates.end(),
                    [](const Candidate& a, const Candidate& b) { return a.leave.score > b.leave.score; });
@@ -265,6 +309,9 @@ PositionPlanResult plan_shot_for_position(const Scenario& table_state, const Pos
   if (q.noisy_leaves < 0 || q.noisy_leaves > kMaxPositionNoisyLeaves)
     throw InvalidArgument("noisy_leaves", static_cast<double>(q.noisy_leaves),
                           "[0, " + std::to_string(kMaxPositionNoisyLeaves) + "]", "noisy leaves scored per finalist");
+  if (q.depth < 1 || q.depth > kMaxPositionDepth)
+    throw InvalidArgument("depth", static_cast<double>(q.depth), "[1, " + std::to_string(kMaxPositionDepth) + "]",
+                          "shots looked ahead");
   PositionPlanResult result;
   // The cue ball as plan_shot() takes it (which checks it, the target and the rest).
   Lookahead la{s, q, cue_ball_id(s, q.shot), {}, q.shot, 0};

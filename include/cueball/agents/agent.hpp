@@ -66,6 +66,8 @@ struct AgentOptions {
   /// Position play: the noisy outcomes of each finalist whose leaves are
   /// scored (PositionRequest::noisy_leaves; 0: the noise-free leave alone).
   int position_noisy_leaves = kPositionNoisyLeaves;
+  /// Position play: shots looked ahead (PositionRequest::depth), [1, kMaxPositionDepth].
+  int position_depth = 1;
   /// The execution noise the agent plans under (planner). None: the game's
   /// (GameConfig::noise), or tournament_noise() when the game has none (a
   /// plan under no noise cannot tell a safe pot from a thin one).

@@ -32,7 +32,11 @@
 //      scores 0. The leaves of the first PositionRequest::noisy_leaves
 //      successes of the screen (the balls where each noisy shot left them)
 //      are scored too: the next shot's best window probability on each
-//      (1 where the shot left no next ball), averaged. Under the tournament
+//      (1 where the shot left no next ball), averaged. At depth 2
+//      (PositionRequest::depth) each of these leaves is valued two shots
+//      deep instead: the best, over the next shot's kPositionSecondShots
+//      best shots, of its window probability times the best window of the
+//      shot after it on the table it leaves. Under the tournament
 //      noise a 0.075 m/s speed error moves the cue ball's stop by tens of
 //      centimetres, so a leave that is good only where the noise-free shot
 //      stops (a narrow window, a ball that blocks a few centimetres away)
@@ -86,6 +90,12 @@ inline constexpr std::size_t kMaxPositionCandidates = 3;
 /// most, by default (PositionRequest::noisy_leaves), and the most allowed.
 inline constexpr int kPositionNoisyLeaves = 4;
 inline constexpr int kMaxPositionNoisyLeaves = 64;
+/// Lookahead depths (PositionRequest::depth): 1, the next shot; 2, the next
+/// two. At depth 2 a leave's next shot is valued by its kPositionSecondShots
+/// best shots (noise-free, by window probability), each times the best
+/// window of the shot after it on the table it leaves.
+inline constexpr int kMaxPositionDepth = 2;
+inline constexpr std::size_t kPositionSecondShots = 3;
 /// The finalists' common screen takes the request's budget over this; the
 /// final estimate of the one played, the budget over kPositionEstimateFraction.
 inline constexpr int kPositionScreenFraction = 5;
@@ -115,6 +125,15 @@ struct PositionRequest {
   /// [0, kMaxPositionNoisyLeaves]; 0: the noise-free leave alone, the next
   /// shot's full plan from it (the one-shot lookahead before issue 27).
   int noisy_leaves = kPositionNoisyLeaves;
+  /// Shots looked ahead, [1, kMaxPositionDepth]: 1, the next shot's best
+  /// window on each leave (step 3); 2, the best over the next shot's
+  /// kPositionSecondShots best shots of its window times the best window of
+  /// the shot after it, on the table that next shot leaves (its noise-free
+  /// end): a leave that gives an easy next shot from which the one after is
+  /// hard scores less than one that gives two good shots. The same budget
+  /// (`next_simulations` runs a plan) for every plan; depth 2 makes about
+  /// kPositionSecondShots + 1 times as many next plans.
+  int depth = 1;
 };
 
 /// What a candidate leaves for the next shot.
@@ -128,14 +147,14 @@ struct Leave {
   std::string next_pocket;                 ///< the next shot's pocket name; empty when infeasible
   int next_ball = -1;                      ///< the ball the next shot's plan pots; -1 when none or infeasible
   /// screened_probability x noisy_next_window (x next_success_probability
-  /// when noisy_leaves is 0). When the noise-free shot pots the next target
+  /// when noisy_leaves is 0 at depth 1). When the noise-free shot pots the next target
   /// too, next_* are of the ball after it (the lowest id left); with no ball
   /// left, score = screened_probability.
   double score = 0.0;
   /// The noisy successes of the finalists' screen whose leaves were scored
   /// (at most PositionRequest::noisy_leaves; 0: the noise-free leave
   /// scores), and the mean over them of the best next shot's window
-  /// probability.
+  /// probability (at depth 2: of the next two shots' best product, above).
   int noisy_leaves = 0;
   double noisy_next_window = 0.0;
 };

@@ -777,6 +777,8 @@ double dopri5_step(const Rhs& sys, const SlipState& y0, const SlipState& k1, dou
 // sum one operation for two components.
 class FreeSlipStep {
  public:
+  // Made once per solve: the constants of `e` (its coefficients and zero
+  // slip); each step reads the reference directions that e has at the time.
   explicit FreeSlipStep(const Exact& e)
       : sys_(&e),
         s_(e.k.s),
@@ -784,16 +786,16 @@ class FreeSlipStep {
         c_n_(e.k.c * e.k.inv_1ps),
         zero2_(e.zero_slip2),
         mu_{e.k.mu_w, e.k.mu_s},
-        ref_x_{e.cushion_ref.x, e.bed_ref.x},
-        ref_y_{e.cushion_ref.y, e.bed_ref.y},
         f_x_{3.5, e.k.k1},
         g_x_{e.k.k1, 3.5},
         const_y_{e.k.s * e.k.c, -e.k.c},
         f_y_{e.k.kyy, e.k.k2},
         g_y_{e.k.k2, 3.5} {}
 
-  double operator()(const SlipState& y0, const SlipState& k1, double h, double atol, Step& st) const {
+  double operator()(const SlipState& y0, const SlipState& k1, double h, double atol, Step& st) {
     using namespace dp;
+    ref_x_ = Pair{sys_->cushion_ref.x, sys_->bed_ref.x};
+    ref_y_ = Pair{sys_->cushion_ref.y, sys_->bed_ref.y};
     const Slips z0 = load(y0);
     const Slips f1 = load(k1);  // k1's slips
     // Sums of the stages 3 to 6, of y1 and of the error estimate (W apart).
@@ -932,7 +934,7 @@ class FreeSlipStep {
   double s_, c_, c_n_;  // c_n = cos(theta) / (1 + sin(theta))
   double zero2_;
   Pair mu_;              // (mu_w, mu_s)
-  Pair ref_x_, ref_y_;   // the reference slip directions, x and y components
+  Pair ref_x_{}, ref_y_{};  // the reference slip directions at the step's start, x and y components
   Pair f_x_, g_x_;       // coefficients of the friction rates in the x rates
   Pair const_y_, f_y_, g_y_;  // and in the y rates
 };
@@ -1135,6 +1137,7 @@ Outcome solve_exact(const Coefficients& k, const State& y0, const Units& units,
   sys.set_references(y);
   SlipState k1 = sys.rhs(y);
   Step st;
+  FreeSlipStep free_step(sys);
   int segment_attempts = 0;
   // After an event: modes for the contacts whose slip reached zero, and a new segment.
   auto start_segment = [&](bool cushion_zero, bool bed_zero) {
@@ -1173,7 +1176,7 @@ Outcome solve_exact(const Coefficients& k, const State& y0, const Units& units,
       }
     }
     const double atol_step = atol * std::clamp(std::min(sys.cushion_r, sys.bed_r) * loosen_per_slip, 1.0, loosen_max);
-    const double err = sys.free_slip ? FreeSlipStep(sys)(y, k1, h, atol_step, st) : dopri5_step(sys, y, k1, h, atol_step, st);
+    const double err = sys.free_slip ? free_step(y, k1, h, atol_step, st) : dopri5_step(sys, y, k1, h, atol_step, st);
     const double root4 = std::sqrt(std::sqrt(std::max(err, 1e-5)));
     if (!(err <= 1.0)) {
       h /= std::min(10.0, root4 / 0.75);

@@ -189,6 +189,7 @@ std::array<double, N> clenshaw_all(const std::array<std::array<double, kOutputs>
   std::array<double, N> b1{};
   std::array<double, N> b2{};
   const double x2 = 2.0 * x;
+#pragma GCC unroll 16
   for (std::size_t m = kNodes - 1; m >= 1; --m) {
     for (std::size_t o = 0; o < N; ++o) {
       const double b0 = c[m][o] + x2 * b1[o] - b2[o];
@@ -426,7 +427,7 @@ bool solve_rolling(const Coefficients& k, const State& y0, Outcome& out, Rolling
   out.steps = 0;
   out.events = p.events;
   if (outputs == RollingOutputs::velocities) {
-    set_velocities(clenshaw_all<kUz + 1>(p.by_degree, x));
+    set_velocities(clenshaw_all<kUz + 2>(p.by_degree, x));
     return true;
   }
   const std::array<double, kOutputs> v = clenshaw_all<kOutputs>(p.by_degree, x);

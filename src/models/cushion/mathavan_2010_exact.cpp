@@ -157,14 +157,31 @@ bool slip_onset_direction(RateFor rate_for, Vec2& direction) {
     const double phi1 = samples.phi[static_cast<std::size_t>(i)];
     const double g1 = g_sample(i);
     if ((g0 > 0.0 && g1 < 0.0) || (g0 < 0.0 && g1 > 0.0)) {
+      // The root between the two samples, to 1e-15 rad: the Illinois
+      // variant of regula falsi (superlinear, and both ends of the bracket
+      // close), 6-10 evaluations of g where bisection took 46.
       double lo = phi0;
       double hi = phi1;
+      double g_lo = g0;
+      double g_hi = g1;
+      int side = 0;
       for (int it = 0; it < 60 && hi - lo > 1e-15; ++it) {
-        const double mid = 0.5 * (lo + hi);
-        if ((g(mid) > 0.0) == (g0 > 0.0)) {
+        double mid = (lo * g_hi - hi * g_lo) / (g_hi - g_lo);
+        if (!(mid > lo && mid < hi)) mid = 0.5 * (lo + hi);
+        const double g_mid = g(mid);
+        if (g_mid == 0.0) {
           lo = mid;
+          hi = mid;
+        } else if ((g_mid > 0.0) == (g_lo > 0.0)) {
+          lo = mid;
+          g_lo = g_mid;
+          if (side == -1) g_hi *= 0.5;
+          side = -1;
         } else {
           hi = mid;
+          g_hi = g_mid;
+          if (side == 1) g_lo *= 0.5;
+          side = 1;
         }
       }
       const double phi = 0.5 * (lo + hi);

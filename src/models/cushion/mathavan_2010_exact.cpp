@@ -196,6 +196,46 @@ bool slip_onset_direction(RateFor rate_for, Vec2& direction) {
   return found;
 }
 
+// The bed slipping while the cushion slips along w: the bed's friction is
+// isotropic, d s_C/dP = g0 - (7/2) mu_s n_C u with the drive
+// g0 = (0, -c) + diag(k1, k2) f independent of u (f = -mu_w w, (7a), (7b)).
+struct BedDrive {
+  Vec2 f;   // the cushion's friction rate
+  Vec2 g0;
+};
+BedDrive bed_drive(const Coefficients& k, Vec2 w) {
+  const Vec2 f = -k.mu_w * w;
+  return {f, {k.k1 * f.x, -k.c + k.k2 * f.y}};
+}
+
+// So the bed's only ray is the direction of g0 (attracting, F_phi = -|g0|),
+// growing at |g0| - (7/2) mu_s n_C: slip_onset_direction() of the bed in
+// closed form. Sets `direction` and returns true if that slip grows.
+bool bed_onset_direction(const Coefficients& k, Vec2 w, Vec2& direction) {
+  const BedDrive d = bed_drive(k, w);
+  const double g = length(d.g0);
+  if (!(g - 3.5 * k.mu_s * bed_normal_rate(k, {d.f, {}}) > 0.0)) return false;
+  direction = d.g0 / g;
+  return true;
+}
+
+// A slip rate affine in the slip direction u, r(u) = p + u_x r_x + u_y r_y:
+// the cushion's while the bed slips along a given direction or sticks
+// ((7a), (7b), (10a), (10b) and (3d) are linear in u). Made from three
+// evaluations of the rate, it costs slip_onset_direction()'s scan a few
+// multiply-adds a sample.
+struct AffineRate {
+  Vec2 p;
+  Vec2 r_x;
+  Vec2 r_y;
+  Vec2 operator()(Vec2 u) const { return p + u.x * r_x + u.y * r_y; }
+};
+template <class RateFor>
+AffineRate affine_rate(RateFor rate_for) {
+  const Vec2 p = rate_for(Vec2{0.0, 0.0});
+  return {p, rate_for(Vec2{1.0, 0.0}) - p, rate_for(Vec2{0.0, 1.0}) - p};
+}
+
 // Whether two vectors are equal to the bit (signed zeros told apart).
 bool same_bits(Vec2 a, Vec2 b) {
   return std::bit_cast<std::uint64_t>(a.x) == std::bit_cast<std::uint64_t>(b.x) &&
@@ -236,8 +276,10 @@ Modes select_modes(const Coefficients& k, Vec2 cushion_slip_now, Vec2 bed_slip_n
   if (bed_at_zero) {
     Vec2 cushion_dir = m.cushion_direction;
     const bool ok = !cushion_at_zero ||
-                    slip_onset_direction(
-                        [&](Vec2 u) { return cushion_slip_rate(k, friction_for(k, kSlip, u, kStick, {})); }, cushion_dir);
+                    slip_onset_direction(affine_rate([&](Vec2 u) {
+                                           return cushion_slip_rate(k, friction_for(k, kSlip, u, kStick, {}));
+                                         }),
+                                         cushion_dir);
     if (ok && bed_cone_excess(k, friction_for(k, kSlip, cushion_dir, kStick, {})) <= kConeTolerance) {
       m.cushion = kSlip;
       m.bed = kStick;
@@ -256,8 +298,9 @@ Modes select_modes(const Coefficients& k, Vec2 cushion_slip_now, Vec2 bed_slip_n
     for (int it = 0; it < 16; ++it) {
       const Vec2 cd_before = cd;
       const Vec2 bd_before = bd;
-      slip_onset_direction([&](Vec2 u) { return cushion_slip_rate(k, friction_for(k, kSlip, u, kSlip, bd)); }, cd);
-      slip_onset_direction([&](Vec2 u) { return bed_slip_rate(k, friction_for(k, kSlip, cd, kSlip, u)); }, bd);
+      slip_onset_direction(
+          affine_rate([&](Vec2 u) { return cushion_slip_rate(k, friction_for(k, kSlip, u, kSlip, bd)); }), cd);
+      bed_onset_direction(k, cd, bd);
       if (same_bits(cd, cd_before) && same_bits(bd, bd_before)) break;
     }
     m.cushion_direction = cd;
@@ -266,12 +309,11 @@ Modes select_modes(const Coefficients& k, Vec2 cushion_slip_now, Vec2 bed_slip_n
     // Fallback if no ray grows: opposite the friction that sticking would need.
     m.cushion_direction = -1.0 * unit(friction_for(k, kStick, {}, kSlip, m.bed_direction).cushion);
     slip_onset_direction(
-        [&](Vec2 u) { return cushion_slip_rate(k, friction_for(k, kSlip, u, kSlip, m.bed_direction)); },
+        affine_rate([&](Vec2 u) { return cushion_slip_rate(k, friction_for(k, kSlip, u, kSlip, m.bed_direction)); }),
         m.cushion_direction);
   } else if (bed_at_zero) {
     // Isotropic at C: the ray is the direction of the slip rate's u-independent part.
-    const Friction f = friction_for(k, kSlip, m.cushion_direction, kSlip, m.cushion_direction);
-    const Vec2 g0{k.k1 * f.cushion.x, -k.c + k.k2 * f.cushion.y};
+    const Vec2 g0 = bed_drive(k, m.cushion_direction).g0;
     if (length(g0) > 0.0) m.bed_direction = unit(g0);
   }
   return m;
@@ -430,8 +472,7 @@ Friction friction_when_slipping(const Coefficients& k, bool at_cushion, Vec2 u, 
 // independent of u, so the root of F is the direction of g0, F_phi = -|g0|,
 // and its motion follows from that of w (closed form of the general case below).
 SlavedDirection slaved_bed_direction(const Coefficients& k, double r, Vec2 w, double r_cushion) {
-  const Vec2 f = -k.mu_w * w;  // the cushion's friction (7a), (7b)
-  const Vec2 g0{k.k1 * f.x, -k.c + k.k2 * f.y};
+  const auto [f, g0] = bed_drive(k, w);
   const double g = length(g0);
   const double inv_g = 1.0 / g;
   const Vec2 u0 = inv_g * g0;

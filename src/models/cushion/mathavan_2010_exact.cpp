@@ -97,9 +97,10 @@ Vec2 unit(Vec2 v) { return v / length(v); }
 // stick: a unit u whose slip rate r(u) = lambda u with lambda > 0 (the slip
 // grows along a ray; for an isotropic contact, along the part of the rate
 // that sticking cannot cancel). Found by scanning the angle for sign changes
-// of cross(u, r(u)) and bisecting; of the rays, an attracting one (a slip
-// direction near it turns towards it, as the Euler scheme's does) with the
-// fastest growth is taken. `rate_for(u)` is the contact's slip rate.
+// of cross(u, r(u)) and refining each by regula falsi; of the rays, an
+// attracting one (a slip direction near it turns towards it, as the Euler
+// scheme's does) with the fastest growth is taken. `rate_for(u)` is the
+// contact's slip rate.
 constexpr int kOnsetSamples = 96;
 
 // The angles of the scan below and their unit vectors, computed once (the

@@ -7,7 +7,8 @@
 // the same noisy breaks against simulate_batch (their throughput ratio, the
 // two run alternately in one process). Counters report events and
 // microseconds per shot. BM_OneBallCushionsExactVsHan times the five-rail shot
-// under the exact cushion and under han_2005 alternately (their ratio).
+// under the exact cushion and under han_2005 alternately (their ratio),
+// BM_BreakExactVsHan the built-in and the frozen 9-ball breaks.
 #include <benchmark/benchmark.h>
 
 #include <algorithm>
@@ -130,34 +131,49 @@ BENCHMARK_CAPTURE(BM_OneBallCushions, han_2005, default_cushion_settings(Cushion
 BENCHMARK_CAPTURE(BM_OneBallCushions, stronge_compliant, default_cushion_settings(CushionModel::stronge_compliant))
     ->Unit(benchmark::kMicrosecond);
 
-// The same five-rail shot under the default cushion (mathavan_2010, exact)
-// and under han_2005, alternately in each iteration (issue 29: the exact
-// cushion at the price of a closed form; goal exact_over_han <= 1.5).
-// Counters: microseconds a shot under each, and their ratio.
-void BM_OneBallCushionsExactVsHan(benchmark::State& st) {
-  Scenario exact = scenario_from_json(R"({"table": "carom_10ft",
-      "balls": [{"id": 0, "position": [0.7, 0.4]}],
-      "cue": {"ball": 0, "aim_deg": 27, "speed": 3.0, "side": 0.3, "height": 0.2}})");
+// A shot under the default cushion (mathavan_2010, exact) and under
+// han_2005, alternately in each iteration, `shots` of each in a row (so that
+// the clock's reads do not count). Counters: microseconds a shot under each,
+// and their ratio.
+void exact_vs_han(benchmark::State& st, const Scenario& exact, int shots) {
   Scenario han = exact;
   han.settings.cushion = default_cushion_settings(CushionModel::han_2005);
   const std::vector<SimulationBall> balls = balls_after_strike(exact);
-  constexpr int kShots = 64;  // per engine and iteration, so that the clock's reads do not count
   double exact_s = 0.0, han_s = 0.0;
   for (auto _ : st) {
     const auto t0 = std::chrono::steady_clock::now();
-    for (int i = 0; i < kShots; ++i) benchmark::DoNotOptimize(simulate(exact.table, balls, exact.settings).end_time);
+    for (int i = 0; i < shots; ++i) benchmark::DoNotOptimize(simulate(exact.table, balls, exact.settings).end_time);
     const auto t1 = std::chrono::steady_clock::now();
-    for (int i = 0; i < kShots; ++i) benchmark::DoNotOptimize(simulate(han.table, balls, han.settings).end_time);
+    for (int i = 0; i < shots; ++i) benchmark::DoNotOptimize(simulate(han.table, balls, han.settings).end_time);
     const auto t2 = std::chrono::steady_clock::now();
     exact_s += std::chrono::duration<double>(t1 - t0).count();
     han_s += std::chrono::duration<double>(t2 - t1).count();
   }
-  const double n = static_cast<double>(st.iterations()) * kShots;
+  const double n = static_cast<double>(st.iterations()) * shots;
   st.counters["exact_us"] = 1e6 * exact_s / n;
   st.counters["han_us"] = 1e6 * han_s / n;
   st.counters["exact_over_han"] = exact_s / han_s;
 }
+
+// The five-rail shot (issue 29: the exact cushion at the price of a closed
+// form; goal exact_over_han <= 1.5).
+void BM_OneBallCushionsExactVsHan(benchmark::State& st) {
+  exact_vs_han(st, scenario_from_json(R"({"table": "carom_10ft",
+      "balls": [{"id": 0, "position": [0.7, 0.4]}],
+      "cue": {"ball": 0, "aim_deg": 27, "speed": 3.0, "side": 0.3, "height": 0.2}})"),
+               64);
+}
 BENCHMARK(BM_OneBallCushionsExactVsHan)->Unit(benchmark::kMillisecond);
+
+// The built-in 9-ball break (frozen:0, BM_NineBallBreakCushion's) and the
+// frozen 9-ball break of BM_Break (frozen:1), the same way.
+void BM_BreakExactVsHan(benchmark::State& st) {
+  exact_vs_han(st,
+               st.range(0) == 0 ? default_scenario() : scenario_from_json(R"({"table": "pool_9ft",
+      "rack": {"type": "nine_ball", "gap_sigma": 0, "seed": 3}, "cue": {"ball": 0, "target": 1, "speed": 9.0}})"),
+               2);
+}
+BENCHMARK(BM_BreakExactVsHan)->Arg(0)->Arg(1)->ArgNames({"frozen"})->Unit(benchmark::kMillisecond);
 
 // simulate() in a loop over one scenario against simulate_unchecked() of the
 // same shot, alternately in each iteration (issue 29: validation that costs

@@ -169,7 +169,8 @@ struct ScaledSolve {
 };
 
 ScaledSolve solve_scaled(const IncomingBall& ball, const CushionImpactModel& model, const CushionImpactOptions& options,
-                         std::vector<CushionImpactSample>* history) {
+                         std::vector<CushionImpactSample>* history,
+                         RollingOutputs outputs = RollingOutputs::all) {
   const Coefficients k = coefficients(model);
   const double v_normal = ball.velocity.y;
   ScaledSolve r{{}, {v_normal, model.radius, model.mass * v_normal, model.mass * v_normal * v_normal}};
@@ -177,7 +178,7 @@ ScaledSolve solve_scaled(const IncomingBall& ball, const CushionImpactModel& mod
   if (options.solver == CushionSolver::paper) {
     r.outcome = solve_paper(k, y0, options.paper_steps, r.units, history);
   } else if (history != nullptr || !options.rolling_table || !(options.exact_tolerance >= kExactTolerance) ||
-             !solve_rolling(k, y0, r.outcome)) {
+             !solve_rolling(k, y0, r.outcome, outputs)) {
     r.outcome = solve_exact(k, y0, r.units, history, options.exact_tolerance);
   }
   return r;
@@ -197,7 +198,7 @@ CushionRebound rebound(const IncomingBall& ball, const CushionImpactModel& model
     std::vector<CushionImpactSample> history;
     return outgoing(solve_scaled(ball, model, options, &history));
   }
-  return outgoing(solve_scaled(ball, model, options, nullptr));
+  return outgoing(solve_scaled(ball, model, options, nullptr, RollingOutputs::velocities));
 }
 
 }  // namespace mathavan_2010

@@ -234,7 +234,12 @@ Outcome solve_exact(const Coefficients& k, const State& y0, const Units& units,
 // k is built on the first rolling ball that needs it (allocates; 15-150 ms,
 // deterministic) and kept in a bounded cache (evicted tables are rebuilt
 // identically), so the answer depends on k and y0 alone. Thread-safe.
-bool solve_rolling(const Coefficients& k, const State& y0, Outcome& out);
+// With RollingOutputs::velocities only the final velocities are filled (the
+// simulator's rebound(): three of the eight Chebyshev sums fewer; the same
+// velocities to the bit).
+enum class RollingOutputs : unsigned char { all, velocities };
+bool solve_rolling(const Coefficients& k, const State& y0, Outcome& out,
+                   RollingOutputs outputs = RollingOutputs::all);
 
 // solve_cushion_impact_unchecked()'s velocity and spin alone, as the
 // simulator needs them (cushion_rebound(), model.cpp): the same solve and the

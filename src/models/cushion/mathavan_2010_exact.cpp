@@ -97,9 +97,10 @@ Vec2 unit(Vec2 v) { return v / length(v); }
 // stick: a unit u whose slip rate r(u) = lambda u with lambda > 0 (the slip
 // grows along a ray; for an isotropic contact, along the part of the rate
 // that sticking cannot cancel). Found by scanning the angle for sign changes
-// of cross(u, r(u)) and bisecting; of the rays, an attracting one (a slip
-// direction near it turns towards it, as the Euler scheme's does) with the
-// fastest growth is taken. `rate_for(u)` is the contact's slip rate.
+// of cross(u, r(u)) and refining each by regula falsi; of the rays, an
+// attracting one (a slip direction near it turns towards it, as the Euler
+// scheme's does) with the fastest growth is taken. `rate_for(u)` is the
+// contact's slip rate.
 constexpr int kOnsetSamples = 96;
 
 // The angles of the scan below and their unit vectors, computed once (the
@@ -157,14 +158,31 @@ bool slip_onset_direction(RateFor rate_for, Vec2& direction) {
     const double phi1 = samples.phi[static_cast<std::size_t>(i)];
     const double g1 = g_sample(i);
     if ((g0 > 0.0 && g1 < 0.0) || (g0 < 0.0 && g1 > 0.0)) {
+      // The root between the two samples, to 1e-15 rad: the Illinois
+      // variant of regula falsi (superlinear, and both ends of the bracket
+      // close), 6-10 evaluations of g where bisection took 46.
       double lo = phi0;
       double hi = phi1;
+      double g_lo = g0;
+      double g_hi = g1;
+      int side = 0;
       for (int it = 0; it < 60 && hi - lo > 1e-15; ++it) {
-        const double mid = 0.5 * (lo + hi);
-        if ((g(mid) > 0.0) == (g0 > 0.0)) {
+        double mid = (lo * g_hi - hi * g_lo) / (g_hi - g_lo);
+        if (!(mid > lo && mid < hi)) mid = 0.5 * (lo + hi);
+        const double g_mid = g(mid);
+        if (g_mid == 0.0) {
           lo = mid;
+          hi = mid;
+        } else if ((g_mid > 0.0) == (g_lo > 0.0)) {
+          lo = mid;
+          g_lo = g_mid;
+          if (side == -1) g_hi *= 0.5;
+          side = -1;
         } else {
           hi = mid;
+          g_hi = g_mid;
+          if (side == 1) g_lo *= 0.5;
+          side = 1;
         }
       }
       const double phi = 0.5 * (lo + hi);
@@ -177,6 +195,46 @@ bool slip_onset_direction(RateFor rate_for, Vec2& direction) {
     g0 = g1;
   }
   return found;
+}
+
+// The bed slipping while the cushion slips along w: the bed's friction is
+// isotropic, d s_C/dP = g0 - (7/2) mu_s n_C u with the drive
+// g0 = (0, -c) + diag(k1, k2) f independent of u (f = -mu_w w, (7a), (7b)).
+struct BedDrive {
+  Vec2 f;   // the cushion's friction rate
+  Vec2 g0;
+};
+BedDrive bed_drive(const Coefficients& k, Vec2 w) {
+  const Vec2 f = -k.mu_w * w;
+  return {f, {k.k1 * f.x, -k.c + k.k2 * f.y}};
+}
+
+// So the bed's only ray is the direction of g0 (attracting, F_phi = -|g0|),
+// growing at |g0| - (7/2) mu_s n_C: slip_onset_direction() of the bed in
+// closed form. Sets `direction` and returns true if that slip grows.
+bool bed_onset_direction(const Coefficients& k, Vec2 w, Vec2& direction) {
+  const BedDrive d = bed_drive(k, w);
+  const double g = length(d.g0);
+  if (!(g - 3.5 * k.mu_s * bed_normal_rate(k, {d.f, {}}) > 0.0)) return false;
+  direction = d.g0 / g;
+  return true;
+}
+
+// A slip rate affine in the slip direction u, r(u) = p + u_x r_x + u_y r_y:
+// the cushion's while the bed slips along a given direction or sticks
+// ((7a), (7b), (10a), (10b) and (3d) are linear in u). Made from three
+// evaluations of the rate, it costs slip_onset_direction()'s scan a few
+// multiply-adds a sample.
+struct AffineRate {
+  Vec2 p;
+  Vec2 r_x;
+  Vec2 r_y;
+  Vec2 operator()(Vec2 u) const { return p + u.x * r_x + u.y * r_y; }
+};
+template <class RateFor>
+AffineRate affine_rate(RateFor rate_for) {
+  const Vec2 p = rate_for(Vec2{0.0, 0.0});
+  return {p, rate_for(Vec2{1.0, 0.0}) - p, rate_for(Vec2{0.0, 1.0}) - p};
 }
 
 // Whether two vectors are equal to the bit (signed zeros told apart).
@@ -219,8 +277,10 @@ Modes select_modes(const Coefficients& k, Vec2 cushion_slip_now, Vec2 bed_slip_n
   if (bed_at_zero) {
     Vec2 cushion_dir = m.cushion_direction;
     const bool ok = !cushion_at_zero ||
-                    slip_onset_direction(
-                        [&](Vec2 u) { return cushion_slip_rate(k, friction_for(k, kSlip, u, kStick, {})); }, cushion_dir);
+                    slip_onset_direction(affine_rate([&](Vec2 u) {
+                                           return cushion_slip_rate(k, friction_for(k, kSlip, u, kStick, {}));
+                                         }),
+                                         cushion_dir);
     if (ok && bed_cone_excess(k, friction_for(k, kSlip, cushion_dir, kStick, {})) <= kConeTolerance) {
       m.cushion = kSlip;
       m.bed = kStick;
@@ -239,8 +299,9 @@ Modes select_modes(const Coefficients& k, Vec2 cushion_slip_now, Vec2 bed_slip_n
     for (int it = 0; it < 16; ++it) {
       const Vec2 cd_before = cd;
       const Vec2 bd_before = bd;
-      slip_onset_direction([&](Vec2 u) { return cushion_slip_rate(k, friction_for(k, kSlip, u, kSlip, bd)); }, cd);
-      slip_onset_direction([&](Vec2 u) { return bed_slip_rate(k, friction_for(k, kSlip, cd, kSlip, u)); }, bd);
+      slip_onset_direction(
+          affine_rate([&](Vec2 u) { return cushion_slip_rate(k, friction_for(k, kSlip, u, kSlip, bd)); }), cd);
+      bed_onset_direction(k, cd, bd);
       if (same_bits(cd, cd_before) && same_bits(bd, bd_before)) break;
     }
     m.cushion_direction = cd;
@@ -249,12 +310,11 @@ Modes select_modes(const Coefficients& k, Vec2 cushion_slip_now, Vec2 bed_slip_n
     // Fallback if no ray grows: opposite the friction that sticking would need.
     m.cushion_direction = -1.0 * unit(friction_for(k, kStick, {}, kSlip, m.bed_direction).cushion);
     slip_onset_direction(
-        [&](Vec2 u) { return cushion_slip_rate(k, friction_for(k, kSlip, u, kSlip, m.bed_direction)); },
+        affine_rate([&](Vec2 u) { return cushion_slip_rate(k, friction_for(k, kSlip, u, kSlip, m.bed_direction)); }),
         m.cushion_direction);
   } else if (bed_at_zero) {
     // Isotropic at C: the ray is the direction of the slip rate's u-independent part.
-    const Friction f = friction_for(k, kSlip, m.cushion_direction, kSlip, m.cushion_direction);
-    const Vec2 g0{k.k1 * f.cushion.x, -k.c + k.k2 * f.cushion.y};
+    const Vec2 g0 = bed_drive(k, m.cushion_direction).g0;
     if (length(g0) > 0.0) m.bed_direction = unit(g0);
   }
   return m;
@@ -413,8 +473,7 @@ Friction friction_when_slipping(const Coefficients& k, bool at_cushion, Vec2 u, 
 // independent of u, so the root of F is the direction of g0, F_phi = -|g0|,
 // and its motion follows from that of w (closed form of the general case below).
 SlavedDirection slaved_bed_direction(const Coefficients& k, double r, Vec2 w, double r_cushion) {
-  const Vec2 f = -k.mu_w * w;  // the cushion's friction (7a), (7b)
-  const Vec2 g0{k.k1 * f.x, -k.c + k.k2 * f.y};
+  const auto [f, g0] = bed_drive(k, w);
   const double g = length(g0);
   const double inv_g = 1.0 / g;
   const Vec2 u0 = inv_g * g0;
@@ -777,6 +836,8 @@ double dopri5_step(const Rhs& sys, const SlipState& y0, const SlipState& k1, dou
 // sum one operation for two components.
 class FreeSlipStep {
  public:
+  // Made once per solve: the constants of `e` (its coefficients and zero
+  // slip); each step reads the reference directions that e has at the time.
   explicit FreeSlipStep(const Exact& e)
       : sys_(&e),
         s_(e.k.s),
@@ -784,16 +845,16 @@ class FreeSlipStep {
         c_n_(e.k.c * e.k.inv_1ps),
         zero2_(e.zero_slip2),
         mu_{e.k.mu_w, e.k.mu_s},
-        ref_x_{e.cushion_ref.x, e.bed_ref.x},
-        ref_y_{e.cushion_ref.y, e.bed_ref.y},
         f_x_{3.5, e.k.k1},
         g_x_{e.k.k1, 3.5},
         const_y_{e.k.s * e.k.c, -e.k.c},
         f_y_{e.k.kyy, e.k.k2},
         g_y_{e.k.k2, 3.5} {}
 
-  double operator()(const SlipState& y0, const SlipState& k1, double h, double atol, Step& st) const {
+  double operator()(const SlipState& y0, const SlipState& k1, double h, double atol, Step& st) {
     using namespace dp;
+    ref_x_ = Pair{sys_->cushion_ref.x, sys_->bed_ref.x};
+    ref_y_ = Pair{sys_->cushion_ref.y, sys_->bed_ref.y};
     const Slips z0 = load(y0);
     const Slips f1 = load(k1);  // k1's slips
     // Sums of the stages 3 to 6, of y1 and of the error estimate (W apart).
@@ -932,7 +993,7 @@ class FreeSlipStep {
   double s_, c_, c_n_;  // c_n = cos(theta) / (1 + sin(theta))
   double zero2_;
   Pair mu_;              // (mu_w, mu_s)
-  Pair ref_x_, ref_y_;   // the reference slip directions, x and y components
+  Pair ref_x_{}, ref_y_{};  // the reference slip directions at the step's start, x and y components
   Pair f_x_, g_x_;       // coefficients of the friction rates in the x rates
   Pair const_y_, f_y_, g_y_;  // and in the y rates
 };
@@ -1135,6 +1196,7 @@ Outcome solve_exact(const Coefficients& k, const State& y0, const Units& units,
   sys.set_references(y);
   SlipState k1 = sys.rhs(y);
   Step st;
+  FreeSlipStep free_step(sys);
   int segment_attempts = 0;
   // After an event: modes for the contacts whose slip reached zero, and a new segment.
   auto start_segment = [&](bool cushion_zero, bool bed_zero) {
@@ -1173,7 +1235,7 @@ Outcome solve_exact(const Coefficients& k, const State& y0, const Units& units,
       }
     }
     const double atol_step = atol * std::clamp(std::min(sys.cushion_r, sys.bed_r) * loosen_per_slip, 1.0, loosen_max);
-    const double err = sys.free_slip ? FreeSlipStep(sys)(y, k1, h, atol_step, st) : dopri5_step(sys, y, k1, h, atol_step, st);
+    const double err = sys.free_slip ? free_step(y, k1, h, atol_step, st) : dopri5_step(sys, y, k1, h, atol_step, st);
     const double root4 = std::sqrt(std::sqrt(std::max(err, 1e-5)));
     if (!(err <= 1.0)) {
       h /= std::min(10.0, root4 / 0.75);

@@ -64,7 +64,8 @@
 // identically when needed, so an answer depends on the inputs and options
 // alone, not on what the process did before. A lookup is an arctangent, a
 // binary search and eight Chebyshev sums: ~730 instructions against ~19,800 for the Runge-Kutta solve
-// (callgrind, the rolling grid of bench_cushion_impact).
+// (callgrind, the rolling grid of bench_cushion_impact); the simulator's
+// (rebound(), the five velocities' sums alone) ~500.
 //
 // Sources: S. Mathavan, M. R. Jackson, R. M. Parkin, Proc. IMechE Part C 224
 // (2010), equations (12), (13), (16) as numbered there. Chebyshev
@@ -178,23 +179,27 @@ double clenshaw(const std::array<double, kNodes>& c, double x) {
   return c[0] + x * b1 - b2;
 }
 
-// clenshaw() of every output at once, from Piece::by_degree: the eight
+// clenshaw() of the first N outputs at once, from Piece::by_degree: the
 // recurrences side by side (each a chain of dependent operations; together
 // they fill the SIMD lanes and overlap), the same operations per output in
-// the same order as clenshaw(), so the same values.
-std::array<double, kOutputs> clenshaw_all(const std::array<std::array<double, kOutputs>, kNodes>& c, double x) {
-  std::array<double, kOutputs> b1{};
-  std::array<double, kOutputs> b2{};
+// the same order as clenshaw(), so the same values. N = 5 is the outgoing
+// velocities alone (the simulator's rebound()), N = kOutputs everything.
+template <std::size_t N>
+std::array<double, N> clenshaw_all(const std::array<std::array<double, kOutputs>, kNodes>& c, double x) {
+  static_assert(N <= kOutputs);
+  std::array<double, N> b1{};
+  std::array<double, N> b2{};
   const double x2 = 2.0 * x;
+#pragma GCC unroll 16
   for (std::size_t m = kNodes - 1; m >= 1; --m) {
-    for (std::size_t o = 0; o < kOutputs; ++o) {
+    for (std::size_t o = 0; o < N; ++o) {
       const double b0 = c[m][o] + x2 * b1[o] - b2[o];
       b2[o] = b1[o];
       b1[o] = b0;
     }
   }
-  std::array<double, kOutputs> out;
-  for (std::size_t o = 0; o < kOutputs; ++o) out[o] = c[0][o] + x * b1[o] - b2[o];
+  std::array<double, N> out;
+  for (std::size_t o = 0; o < N; ++o) out[o] = c[0][o] + x * b1[o] - b2[o];
   return out;
 }
 
@@ -394,7 +399,7 @@ RollingTableStats rolling_table_stats(const Coefficients& k) {
   return st;
 }
 
-bool solve_rolling(const Coefficients& k, const State& y0, Outcome& out) {
+bool solve_rolling(const Coefficients& k, const State& y0, Outcome& out, RollingOutputs outputs) {
   const double scale = std::max(velocity_scale(y0), 1.0);
   const Vec2 sc = bed_slip(y0);
   const double limit = kRollingSlip * scale;
@@ -413,18 +418,25 @@ bool solve_rolling(const Coefficients& k, const State& y0, Outcome& out) {
   // The mirror image X -> -X of an impact (xi -> -xi) turns xG', u_y, u_z
   // and keeps yG', u_x, the impulses and the work.
   const double mirror = xi < 0.0 ? -1.0 : 1.0;
-  const std::array<double, kOutputs> v = clenshaw_all(p.by_degree, x);
-  out.final_state[kVx] = y0[kVx] + mirror * v[kVx];
-  out.final_state[kVy] = y0[kVy] + v[kVy];
-  out.final_state[kUx] = y0[kUx] + v[kUx];
-  out.final_state[kUy] = y0[kUy] + mirror * v[kUy];
-  out.final_state[kUz] = y0[kUz] + mirror * v[kUz];
+  auto set_velocities = [&](const auto& v) {
+    out.final_state[kVx] = y0[kVx] + mirror * v[kVx];
+    out.final_state[kVy] = y0[kVy] + v[kVy];
+    out.final_state[kUx] = y0[kUx] + v[kUx];
+    out.final_state[kUy] = y0[kUy] + mirror * v[kUy];
+    out.final_state[kUz] = y0[kUz] + mirror * v[kUz];
+  };
+  out.steps = 0;
+  out.events = p.events;
+  if (outputs == RollingOutputs::velocities) {
+    set_velocities(clenshaw_all<kUz + 2>(p.by_degree, x));
+    return true;
+  }
+  const std::array<double, kOutputs> v = clenshaw_all<kOutputs>(p.by_degree, x);
+  set_velocities(v);
   out.compression_impulse = v[5];
   out.total_impulse = v[6];
   out.compression_work = v[7];
   out.final_state[kWork] = (1.0 - k.e * k.e) * out.compression_work;  // (16b)
-  out.steps = 0;
-  out.events = p.events;
   return true;
 }
 

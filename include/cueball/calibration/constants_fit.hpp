@@ -50,6 +50,12 @@ struct ConstantsFitOptions {
   int threads = 1;            ///< shots refitted in parallel, [1, 256]
   /// Restarts of the simplex stage from other points (see fit_constants), [0, 16].
   int restarts = 2;
+  /// Points of the profile over mu_sp after the first simplex (see
+  /// fit_constants), [0, 16]; 0: none.
+  int spin_profile = 7;
+  /// Of the strikes fitted afresh (the restarts, the profile); calibrate
+  /// passes its own.
+  StrikeFitOptions strike;
 };
 
 /// The bootstrap over shots (Efron and Tibshirani 1993, ch. 6): each

@@ -82,9 +82,11 @@ TEST(ConstantsFit, RecoversTheCushionAndRollingConstants) {
 // (e 0.90, friction 0.10, the pool cloth's mu_r 0.014), one simplex stops
 // at friction 0.105, e 0.979, a cue RMSE median of 20 mm (measured with
 // restarts = 0); the restarts, their strikes fitted afresh, reach friction
-// 0.193, e 0.938, mu_r 0.0079, 5.2 mm (0.191, 0.943, 2.6 mm with the exact
-// cushion's steps loosened at most 3x, not 10x). (From the carom cloth's mu_r 0.0077 with the same
-// cushion start they do not: e 0.903, 15 mm; README.)
+// 0.185, e 0.939, mu_r 0.0081, 4.1 mm after the profile over mu_sp (0.193,
+// 0.938, 0.0079, 5.2 mm before it; 0.191, 0.943, 2.6 mm with the exact
+// cushion's steps loosened at most 3x, not 10x). (From the carom cloth's
+// mu_r 0.0077 with the same cushion start they did not before the profile,
+// e 0.903, 15 mm; with it they do: e 0.950, friction 0.200, 0.5 mm.)
 TEST(ConstantsFit, RestartsRecoverFromTheFarSideOfTheValley) {
   const FitModel truth = truth_model();
   const TrackedShots shots = synthetic_match(truth);

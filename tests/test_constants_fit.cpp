@@ -34,25 +34,32 @@ FitModel truth_model() {
   return m;
 }
 
-TrackedShots synthetic_match(const FitModel& truth) {
+// One synthetic shot: the layout (white the cue ball) and the strike.
+struct SyntheticCase {
+  Vec2 white, yellow, red;
+  ShotAction action;
+};
+
+TrackedShots synthetic_shots(const FitModel& truth, const std::vector<SyntheticCase>& cases, std::uint64_t seed) {
   TrackedShots shots;
   shots.table_name = "carom_10ft";
   shots.table = truth.table;
-  const struct {
-    Vec2 white, yellow, red;
-    ShotAction action;
-  } cases[] = {
-      {{0.7, 0.5}, {2.1, 0.35}, {1.9, 1.05}, {3.2, 25.0, 4.0, 0.2, 0.15}},
-      {{0.7, 0.5}, {2.1, 0.35}, {1.9, 1.05}, {2.6, 4.0, 6.0, -0.25, -0.2}},
-      {{1.4, 0.7}, {0.4, 0.3}, {2.5, 1.1}, {3.5, 100.0, 3.0, 0.3, 0.1}},
-      {{2.0, 0.3}, {0.6, 1.0}, {1.2, 0.5}, {2.8, 160.0, 5.0, -0.3, 0.2}},
-      {{0.5, 1.0}, {2.4, 0.8}, {1.5, 0.2}, {3.0, -15.0, 2.0, 0.25, 0.25}},
-      {{1.0, 0.4}, {1.8, 1.2}, {2.6, 0.3}, {2.4, 60.0, 4.0, -0.2, 0.0}},
-  };
-  std::uint64_t seed = 11;
-  for (const auto& c : cases)
+  for (const SyntheticCase& c : cases)
     shots.shots.push_back(test::synthetic_shot(truth, test::carom_layout(c.white, c.yellow, c.red), c.action, 0.011, seed++));
   return shots;
+}
+
+TrackedShots synthetic_match(const FitModel& truth) {
+  return synthetic_shots(truth,
+                         {
+                             {{0.7, 0.5}, {2.1, 0.35}, {1.9, 1.05}, {3.2, 25.0, 4.0, 0.2, 0.15}},
+                             {{0.7, 0.5}, {2.1, 0.35}, {1.9, 1.05}, {2.6, 4.0, 6.0, -0.25, -0.2}},
+                             {{1.4, 0.7}, {0.4, 0.3}, {2.5, 1.1}, {3.5, 100.0, 3.0, 0.3, 0.1}},
+                             {{2.0, 0.3}, {0.6, 1.0}, {1.2, 0.5}, {2.8, 160.0, 5.0, -0.3, 0.2}},
+                             {{0.5, 1.0}, {2.4, 0.8}, {1.5, 0.2}, {3.0, -15.0, 2.0, 0.25, 0.25}},
+                             {{1.0, 0.4}, {1.8, 1.2}, {2.6, 0.3}, {2.4, 60.0, 4.0, -0.2, 0.0}},
+                         },
+                         11);
 }
 
 TEST(ConstantsFit, RecoversTheCushionAndRollingConstants) {
@@ -127,21 +134,13 @@ FitModel spin_truth() {
 }
 
 TrackedShots spin_shots(const FitModel& truth) {
-  TrackedShots shots;
-  shots.table_name = "carom_10ft";
-  shots.table = truth.table;
-  const struct {
-    Vec2 white, yellow, red;
-    ShotAction action;
-  } cases[] = {
-      {{0.6, 0.4}, {2.5, 1.2}, {2.7, 0.3}, {2.8, 40.0, 3.0, 0.4, 0.1}},
-      {{2.2, 0.5}, {0.4, 1.1}, {0.3, 0.3}, {3.0, 150.0, 3.0, -0.4, 0.2}},
-      {{1.4, 1.1}, {0.3, 0.2}, {2.6, 0.2}, {2.6, -80.0, 4.0, 0.35, -0.1}},
-  };
-  std::uint64_t seed = 31;
-  for (const auto& c : cases)
-    shots.shots.push_back(test::synthetic_shot(truth, test::carom_layout(c.white, c.yellow, c.red), c.action, 0.011, seed++));
-  return shots;
+  return synthetic_shots(truth,
+                         {
+                             {{0.6, 0.4}, {2.5, 1.2}, {2.7, 0.3}, {2.8, 40.0, 3.0, 0.4, 0.1}},
+                             {{2.2, 0.5}, {0.4, 1.1}, {0.3, 0.3}, {3.0, 150.0, 3.0, -0.4, 0.2}},
+                             {{1.4, 1.1}, {0.3, 0.2}, {2.6, 0.2}, {2.6, -80.0, 4.0, 0.35, -0.1}},
+                         },
+                         31);
 }
 
 CalibrationReport spin_fit_from(const TrackedShots& shots, double start_spin_friction) {

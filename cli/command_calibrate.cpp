@@ -28,6 +28,7 @@ struct CalibrateFlags {
   int max_iterations = ConstantsFitOptions{}.max_iterations;
   int starts = StrikeFitOptions{}.starts;
   int restarts = ConstantsFitOptions{}.restarts;
+  int spin_profile = ConstantsFitOptions{}.spin_profile;
   int bootstrap = 0;
   int bootstrap_evaluations = BootstrapOptions{}.max_evaluations;
   std::optional<std::string> html;
@@ -94,6 +95,7 @@ void run_calibrate(const CalibrateFlags& f, std::ostream& out, std::ostream& err
   check_flag("--max-iterations", f.max_iterations, 0, 10000, "iterations of the joint fit of constants and strikes");
   check_flag("--starts", f.starts, 1, 64, "refined starts per strike fit");
   check_flag("--restarts", f.restarts, 0, 16, "restarts of the constants fit's simplex");
+  check_flag("--spin-profile", f.spin_profile, 0, 16, "points of the constants fit's profile over mu_sp");
   check_flag("--bootstrap", f.bootstrap, 0, 1000, "bootstrap replicates for the constants' uncertainties");
   check_flag("--bootstrap-evaluations", f.bootstrap_evaluations, 1, 100000, "simplex evaluations of a bootstrap replicate");
   if (f.seed < 0) check_flag("--seed", static_cast<double>(f.seed), 0, 9.007199254740992e15, "random seed");
@@ -124,6 +126,7 @@ void run_calibrate(const CalibrateFlags& f, std::ostream& out, std::ostream& err
   options.constants.max_evaluations = f.max_evaluations;
   options.constants.max_iterations = f.max_iterations;
   options.constants.restarts = f.restarts;
+  options.constants.spin_profile = f.spin_profile;
   options.bootstrap.replicates = f.bootstrap;
   options.bootstrap.seed = options.seed;
   options.bootstrap.max_evaluations = f.bootstrap_evaluations;
@@ -155,7 +158,7 @@ void run_calibrate(const CalibrateFlags& f, std::ostream& out, std::ostream& err
   add_constant("cushion_friction", r.model.settings.cushion.friction, "");
   report.add_text("ball_collision_model", to_string(r.model.settings.ball_collision_model), "not fitted");
   report.add_count("evaluations", r.constant_evaluations, "of the simplex (stage 1, restarts included)");
-  report.add_count("restart_won", r.constant_restarts, "1: a restart of the simplex found the better point");
+  report.add_count("restart_won", r.constant_restarts, "1: the mu_sp profile or a restart found the better point");
   report.add_count("iterations", r.constant_iterations, "of the joint fit (stage 2)");
   if (r.bootstrap_replicates > 0) report.add_count("bootstrap", r.bootstrap_replicates, "replicates behind the +- (std. dev.)");
   report.end_section();
@@ -189,6 +192,9 @@ Command add_calibrate_command(CLI::App& app) {
       ->capture_default_str();
   sub->add_option("--starts", flags->starts, "Refined starts per strike fit, [1, 64]")->capture_default_str();
   sub->add_option("--restarts", flags->restarts, "Restarts of the constants fit's simplex from other points, [0, 16]")
+      ->capture_default_str();
+  sub->add_option("--spin-profile", flags->spin_profile,
+                  "Points of the profile over mu_sp after the first simplex (0: none), [0, 16]")
       ->capture_default_str();
   sub->add_option("--bootstrap", flags->bootstrap,
                   "Bootstrap replicates over the training shots for the constants' uncertainties (0: none), [0, 1000]")

@@ -79,8 +79,9 @@ TEST(CalibrateOnTheRecordedMatch, FittedConstantsBeatTheDefaults) {
 
 // The ball-ball contact with the cloth's friction at the table (mathavan_2014)
 // against coulomb_impulse, each with the constants fitted under it on the 30
-// training shots of README's split (held-out cue-ball RMSE median 5.7 cm
-// against 7.9): on the first 12 shots the former fits better too.
+// training shots of README's split before the mu_sp profile (held-out
+// cue-ball RMSE median 5.7 cm against 7.9): on the first 12 shots the
+// former fits better too.
 TEST(CalibrateOnTheRecordedMatch, MathavanBallBallContactFitsBetter) {
   const auto shots = match_shots(12);
   if (!shots) GTEST_SKIP() << "the recorded match (../shared/data/measured-three-cushion/shots.json) is not here";

@@ -142,6 +142,7 @@ TEST(CliCalibrate, BadCsvInputIsOneLineNamingFileRowAndColumn) {
   expect_usage_error({"calibrate", csv[0]}, "--table is needed with CSV shots");
   expect_usage_error({"calibrate", csv[0], "--table", "carom_10ft", "--bootstrap", "-1"}, "--bootstrap = -1");
   expect_usage_error({"calibrate", csv[0], "--table", "carom_10ft", "--restarts", "20"}, "--restarts = 20");
+  expect_usage_error({"calibrate", csv[0], "--table", "carom_10ft", "--spin-profile", "17"}, "--spin-profile = 17");
   const std::string bad = dir.write("bad.csv", "ball,t,x,y\nwhite,0,0.7,0.5\nwhite,0.02,0.7q,0.5\n");
   expect_usage_error({"calibrate", csv[0], bad, "--table", "carom_10ft"}, "bad.csv\": row 3, column x: \"0.7q\" is not a finite number");
   const std::string json = dir.write("shots.json", synthetic_file());

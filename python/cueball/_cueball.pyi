@@ -496,6 +496,7 @@ def calibrate(
     max_evaluations: int = 300,
     max_iterations: int = 20,
     restarts: int = 2,
+    spin_profile: int = 7,
     bootstrap: int = 0,
     html: bool = False,
 ) -> dict[str, Any]:

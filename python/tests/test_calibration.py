@@ -71,6 +71,9 @@ class CalibrateTest(unittest.TestCase):
         self.assertNotIn("<script", r["html"])
         with self.assertRaises(cueball.InvalidArgument):
             cueball.calibrate(json.dumps(doc), bootstrap=-1)
+        with self.assertRaises(cueball.InvalidArgument) as e:
+            cueball.calibrate(json.dumps(doc), spin_profile=17)
+        self.assertIn("spin_profile", str(e.exception))
 
     def test_errors_name_the_json_path(self) -> None:
         doc = straight_shot()

@@ -70,6 +70,7 @@ void fit_training(CalibrationContext& c) {
   for (int i : c.training) shots.push_back(c.prepared[static_cast<std::size_t>(i)]);
   ConstantsFitOptions o = c.options.constants;
   o.threads = c.options.threads;
+  o.strike = c.options.strike;
   const ConstantsFit fit = fit_constants(shots, c.report.start, strikes, o);
   c.report.model = fit.model;
   c.report.constant_evaluations = fit.evaluations;

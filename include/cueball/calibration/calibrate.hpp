@@ -38,7 +38,7 @@ struct CalibrationReport {
   FitSummary training, held_out;
   int constant_evaluations = 0;   ///< the constants fit's stage 1 (simplex)
   int constant_iterations = 0;    ///< its stage 2 (joint LM)
-  int constant_restarts = 0;      ///< 1 when a restart of stage 1 won (ConstantsFit::restarts_taken)
+  int constant_restarts = 0;      ///< 1 when the mu_sp profile or a restart of stage 1 won (ConstantsFit::restarts_taken)
   /// The constants' spread over bootstrap replicates of the training shots
   /// (empty when not asked for, or when only evaluating).
   std::vector<ConstantSpread> spread;

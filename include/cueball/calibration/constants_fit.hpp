@@ -11,8 +11,11 @@
 //     by 5 Levenberg-Marquardt iterations WARM-STARTED from the strikes of
 //     the best constants so far (the incumbent: so a trial's value depends
 //     on the constants and the incumbent, not on the simplex's path),
-//     restarted with a fresh simplex while a restart gains; then
-//     `restarts` more simplexes from points along the valley where the
+//     restarted with a fresh simplex while a restart gains; then a profile
+//     over mu_sp (`spin_profile` values spanning a spin deceleration of 2
+//     to 16 rad/s^2, the other constants held, every strike fitted afresh
+//     at each) and, when another mu_sp wins, a simplex refining from it;
+//     then `restarts` more simplexes from points along the valley where the
 //     cushion's friction and restitution trade, each with its strikes
 //     fitted afresh there, and the end points judged alike (each shot
 //     under each point given the best of every run's strike for it). The simplex
@@ -50,6 +53,12 @@ struct ConstantsFitOptions {
   int threads = 1;            ///< shots refitted in parallel, [1, 256]
   /// Restarts of the simplex stage from other points (see fit_constants), [0, 16].
   int restarts = 2;
+  /// Points of the profile over mu_sp after the first simplex (see
+  /// fit_constants), [0, 16]; 0: none.
+  int spin_profile = 7;
+  /// Of the strikes fitted afresh (the restarts, the profile); calibrate
+  /// passes its own.
+  StrikeFitOptions strike;
 };
 
 /// The bootstrap over shots (Efron and Tibshirani 1993, ch. 6): each
@@ -81,7 +90,7 @@ struct ConstantsFit {
   double cost = 0.0;               ///< total over the training shots, m^2
   int evaluations = 0;             ///< stage 1's evaluations
   int iterations = 0;              ///< stage 2's iterations
-  int restarts_taken = 0;          ///< 1 when a restart's point won over the first run's, else 0
+  int restarts_taken = 0;          ///< 1 when the mu_sp profile's or a restart's point won over the first run's, else 0
 };
 
 /// Fits from `start` (its constants are the simplex's first vertex) and the

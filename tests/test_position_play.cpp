@@ -20,6 +20,7 @@
 #include "cueball/core/errors.hpp"
 #include "cueball/simulation/scenario.hpp"
 #include "cueball/table/table.hpp"
+#include "test_scale.hpp"
 
 namespace cueball {
 namespace {
@@ -232,7 +233,8 @@ const Leave* leave_of(const PositionPlanResult& r, const ShotAction& strike) {
 // (a product of windows, the next shot among the ones depth 1 maximises
 // over), and below it somewhere (the ball after the next one counts).
 TEST(PositionPlay, DepthTwoIsDepthOneWithNoBallAfterTheNextAndAtMostItWithOne) {
-  for (unsigned seed = 10; seed < 13; ++seed) {
+  // Three layouts of three balls (one under the sanitizers, test_scale.hpp).
+  for (unsigned seed = 10; seed < 10 + static_cast<unsigned>(test::scaled(3, 1)); ++seed) {
     SCOPED_TRACE(seed);
     const Scenario s = random_layout(seed);
     PositionRequest q = request_for(1);

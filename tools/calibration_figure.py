@@ -69,27 +69,33 @@ def p90(values: list[float]) -> float:
     return values[lo] + (pos - lo) * (values[hi] - values[lo])
 
 
+def summary(values: list[float]) -> str:
+    """The curve's median and p90, for its title and the log."""
+    return f"median {statistics.median(values):.1f} cm, p90 {p90(values):.1f} cm"
+
+
 def write_cdf(path: pathlib.Path, values: list[float]) -> None:
     """The empirical CDF as gnuplot data: value, fraction of shots at or below it."""
     n = len(values)
     path.write_text("".join(f"{v:.4f} {(i + 1) / n:.5f}\n" for i, v in enumerate(values)))
 
 
-def gnuplot_script(curves: list[tuple[str, str]]) -> str:
-    """The plot of the data files `curves` (file name, title), all names fixed by this script."""
-    plots = [f"'{name}' using 1:2 with steps lw 2 title '{title}'" for name, title in curves]
+def gnuplot_script(curves: list[tuple[str, str]], shots: int) -> str:
+    """The plot of the data files `curves` (file name, title) over `shots` shots; file names fixed here."""
+    plots = [f"'{name}' using 1:2 with steps lw 2 title \"{title}\"" for name, title in curves]
     return "\n".join([
-        "set terminal svg size 760,460 font 'sans,13' background rgb 'white'",
+        "set terminal svg size 800,560 font 'sans,13' background rgb 'white'",
         "set output 'figure.svg'",
+        "set termoption noenhanced",
         "set logscale x",
-        "set xrange [0.5:200]",
+        "set xrange [0.5:100]",
         "set yrange [0:1]",
-        "set xtics (0.5, 1, 2, 5, 10, 20, 50, 100, 200)",
+        "set xtics (0.5, 1, 2, 5, 10, 20, 50, 100)",
         "set ytics 0.1",
         "set grid xtics ytics lc rgb '#dddddd'",
         "set xlabel 'cue-ball RMSE of a held-out shot (cm)'",
-        "set ylabel 'fraction of the 91 held-out shots'",
-        "set key bottom right box opaque",
+        f"set ylabel 'fraction of the {shots} held-out shots'",
+        "set key outside below left Left reverse maxcols 1",
         f"set arrow from {GOAL_MEDIAN_CM},0 to {GOAL_MEDIAN_CM},0.5 nohead dt 2 lw 1.5 lc rgb '#cc0000'",
         f"set arrow from 0.5,0.5 to {GOAL_MEDIAN_CM},0.5 nohead dt 2 lw 1.5 lc rgb '#cc0000'",
         f"set arrow from {GOAL_P90_CM},0 to {GOAL_P90_CM},0.9 nohead dt 2 lw 1.5 lc rgb '#cc0000'",
@@ -131,18 +137,16 @@ def main() -> int:
             if not first_ids:
                 first_ids = {str(s["id"]) for s in report["shots"] if s["held_out"]}
             write_cdf(work / f"seed{seed}.dat", values)
-            curves.append((f"seed{seed}.dat", f"fitted, --seed {seed}"))
-            print(f"seed {seed}: held-out cue RMSE median {statistics.median(values):.1f} cm, "
-                  f"p90 {p90(values):.1f} cm over {len(values)} shots")
+            curves.append((f"seed{seed}.dat", f"fitted on 30 shots, --seed {seed}: {summary(values)}"))
+            print(f"seed {seed}: {summary(values)} over {len(values)} shots")
         (work / "defaults.scenario.json").write_text('{"table": "carom_10ft"}\n')
         defaults = run_report(cli + ["--evaluate", "--constants", str(work / "defaults.scenario.json")],
                               work / "defaults.json")
         values = held_out_cue_rmse_cm(defaults, first_ids)
         write_cdf(work / "defaults.dat", values)
-        curves.append(("defaults.dat", f"defaults, --seed {args.seeds[0]}'s shots"))
-        print(f"defaults: held-out cue RMSE median {statistics.median(values):.1f} cm, "
-              f"p90 {p90(values):.1f} cm over {len(values)} shots")
-        (work / "figure.gp").write_text(gnuplot_script(curves))
+        curves.append(("defaults.dat", f"defaults, not fitted: {summary(values)}"))
+        print(f"defaults, --seed {args.seeds[0]}'s held-out shots: {summary(values)} over {len(values)} shots")
+        (work / "figure.gp").write_text(gnuplot_script(curves, len(values)))
         subprocess.run(["gnuplot", "figure.gp"], check=True, cwd=work)
         shutil.copyfile(work / "figure.svg", args.out)
         print(f"wrote {args.out}")

@@ -75,19 +75,13 @@ Parameters carom_parameters() {
   Parameters p;
   p.ball.mass = 0.210;         // kg: UMB, 205-220 g
   p.ball.radius = 0.0615 / 2;  // m: UMB, 61-61.5 mm
-  // Fitted by `cueball calibrate` (mathavan_2010 cushion, coulomb_impulse:
-  // the defaults) to 30 shots of a recorded three-cushion match on a heated
-  // cloth (121 shots of one match, 2022-12-25, a camera tracker at ~50 Hz
-  // with a 1.5-2 cm dead band), tested on 91 others (README "Validated
-  // against a real match", --seed 1): a heated carom cloth rolls about twice
-  // as far as a pool cloth (mu_r 0.014). mu_s and mu_r from the fit before
-  // the restarts; mu_sp from the fit with the profile over mu_sp (0.0054, a
-  // vertical-spin deceleration of 4.3 rad/s^2; 0.0038-0.0052 under han_2005
-  // and mathavan_2014 on three splits), where the simplex alone stayed near
-  // its start (the 0.012 this preset had before, 9.6 rad/s^2).
+  // Fitted by `cueball calibrate` (mathavan_2010 cushion) to 30 shots of a
+  // recorded three-cushion match on a heated cloth, tested on 91 others
+  // (README "Calibrating from tracked shots"): a heated carom cloth rolls
+  // about twice as far as a pool cloth (mu_r 0.014).
   p.cloth.sliding_friction = 0.216;
   p.cloth.rolling_resistance = 0.0077;
-  p.cloth.spin_friction = 0.0054;
+  p.cloth.spin_friction = 0.012;
   p.cloth.gravity = kStandardGravity;
   return p;
 }

@@ -84,8 +84,7 @@ Parameters snooker_parameters();
 Parameters pool_parameters();
 /// UMB carom ball on a heated carom cloth: the cloth fitted by `cueball
 /// calibrate` to a recorded three-cushion match (README "Validated against
-/// a real match"; mu_s 0.216, mu_r 0.0077, mu_sp 0.0054); the carom_10ft
-/// table's default.
+/// a recorded match"); the carom_10ft table's default.
 Parameters carom_parameters();
 /// A preset by name: "snooker", "pool" or "carom". Throws InvalidArgument otherwise.
 Parameters preset_parameters(std::string_view name);

@@ -26,4 +26,8 @@ set(CUEBALL_LONG_NUMERICS
   # strike and constants fits: Calibrate.*, StrikeFit.*, CliCalibrate.*).
   ConstantsFit.RecoversTheCushionAndRollingConstants
   # The same from a start on the far side of the valley, with restarts.
-  ConstantsFit.RestartsRecoverFromTheFarSideOfTheValley)
+  ConstantsFit.RestartsRecoverFromTheFarSideOfTheValley
+  # The recorded match's 91 held-out shots, every strike fitted under the
+  # fitted constants (the issue's goal; skipped without ../shared): 91 strike
+  # fits (the other CalibrateOnTheRecordedMatch tests fit 12 shots each).
+  CalibrateOnTheRecordedMatch.FittedConstantsMeetTheGoalOnTheHeldOutShots)

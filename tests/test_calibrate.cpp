@@ -6,6 +6,7 @@
 // tests of the fits are in test_strike_fit.cpp and test_constants_fit.cpp.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -99,6 +100,52 @@ TEST(CalibrateOnTheRecordedMatch, MathavanBallBallContactFitsBetter) {
   RecordProperty("mathavan_cue_median_cm", std::to_string(100 * b.training.cue_rmse_median));
   EXPECT_LT(b.training.cue_rmse_median, a.training.cue_rmse_median);
   EXPECT_LT(b.training.all_rmse_median, a.training.all_rmse_median);
+}
+
+// The held-out draw: round(F n) shots, at least one kept for training, the
+// same for the same seed and another for another.
+TEST(Calibrate, HeldOutShotsAreASeededFraction) {
+  const auto count = [](const std::vector<bool>& v) { return std::count(v.begin(), v.end(), true); };
+  EXPECT_EQ(count(held_out_shots(121, 0.75, 1)), 91);
+  EXPECT_EQ(count(held_out_shots(10, 0.3, 4)), 3);
+  EXPECT_EQ(count(held_out_shots(1, 0.9, 0)), 0);
+  EXPECT_EQ(count(held_out_shots(2, 0.9, 0)), 1);
+  EXPECT_EQ(held_out_shots(121, 0.75, 1), held_out_shots(121, 0.75, 1));
+  EXPECT_NE(held_out_shots(121, 0.75, 1), held_out_shots(121, 0.75, 2));
+}
+
+// The goal (README "Validated against a real match"): the constants
+// that `cueball calibrate match.json --cushion-model han_2005
+// --ball-collision-model mathavan_2014 --held-out 0.75 --seed 1` fits on its
+// 30 training shots reproduce the 91 shots it holds out to a cue-ball RMSE
+// median <= 6 cm and a p90 <= 20 cm, every strike fitted afresh (32 starts,
+// as calibrate fits the held-out shots); the constants to 5 digits, from
+// that run's --json. README: 4.9 / 13.2 cm. The whole calibration takes
+// 70-80 s of CPU (300 s on two loaded cores), too long for the suite; the
+// figure's script (tools/calibration_figure.py) runs it on seeds 1-3.
+TEST(CalibrateOnTheRecordedMatch, FittedConstantsMeetTheGoalOnTheHeldOutShots) {
+  auto shots = match_shots(121);
+  if (!shots) GTEST_SKIP() << "the recorded match (../shared/data/measured-three-cushion/shots.json) is not here";
+  ASSERT_EQ(shots->shots.size(), 121u);
+  const std::vector<bool> held = held_out_shots(121, 0.75, 1);
+  std::vector<TrackedShot> held_shots;
+  for (std::size_t i = 0; i < held.size(); ++i)
+    if (held[i]) held_shots.push_back(shots->shots[i]);
+  shots->shots = held_shots;
+  FitModel m = han_model(*shots);
+  m.settings.parameters.cloth = {0.22949, 0.0059220, 0.0052096, m.settings.parameters.cloth.gravity};
+  m.settings.cushion.restitution = 0.84707, m.settings.cushion.friction = 0.27074;
+  m.settings.ball_collision_model = BallCollisionModel::mathavan_2014;
+  m.settings.ball_collision = default_ball_collision(BallCollisionModel::mathavan_2014);
+  CalibrationOptions o;
+  o.evaluate_only = true;
+  o.threads = 2;
+  const CalibrationReport r = calibrate(*shots, m, o);
+  RecordProperty("held_out_cue_median_cm", std::to_string(100 * r.training.cue_rmse_median));
+  RecordProperty("held_out_cue_p90_cm", std::to_string(100 * r.training.cue_rmse_p90));
+  ASSERT_EQ(r.training.shots, 91);
+  EXPECT_LE(r.training.cue_rmse_median, 0.06);
+  EXPECT_LE(r.training.cue_rmse_p90, 0.20);
 }
 
 }  // namespace

@@ -1,5 +1,6 @@
 #include "cueball/calibration/calibrate.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <numeric>
@@ -33,22 +34,13 @@ void prepare_shots(CalibrationContext& c) {
   }
 }
 
-// A seeded Fisher-Yates shuffle; the first round(F N) shots of it are held out.
 void draw_held_out(CalibrationContext& c) {
   const int n = static_cast<int>(c.prepared.size());
-  std::vector<int> order(static_cast<std::size_t>(n));
-  std::iota(order.begin(), order.end(), 0);
-  RandomStream random(stream_seed(c.options.seed, 0x68656c64));
-  for (int i = n - 1; i > 0; --i) std::swap(order[static_cast<std::size_t>(i)], order[static_cast<std::size_t>(random.integer(0, i))]);
-  int held = static_cast<int>(std::lround(c.options.held_out * n));
-  if (c.options.evaluate_only) held = 0;
-  held = std::min(held, n - 1);
-  for (int k = 0; k < n; ++k) {
-    const int i = order[static_cast<std::size_t>(k)];
-    c.report.shots[static_cast<std::size_t>(i)].held_out = k < held;
+  const std::vector<bool> held = held_out_shots(n, c.options.evaluate_only ? 0.0 : c.options.held_out, c.options.seed);
+  for (int i = 0; i < n; ++i) {
+    c.report.shots[static_cast<std::size_t>(i)].held_out = held[static_cast<std::size_t>(i)];
+    if (!held[static_cast<std::size_t>(i)]) c.training.push_back(i);
   }
-  for (int i = 0; i < n; ++i)
-    if (!c.report.shots[static_cast<std::size_t>(i)].held_out) c.training.push_back(i);
 }
 
 std::vector<StrikeFit> fit_strikes(CalibrationContext& c, const std::vector<int>& which, const FitModel& model) {
@@ -99,6 +91,19 @@ void fit_held_out(CalibrationContext& c) {
 }
 
 }  // namespace
+
+// A seeded Fisher-Yates shuffle; the first round(F N) shots of it are held out.
+std::vector<bool> held_out_shots(int n, double held_out, std::uint64_t seed) {
+  std::vector<int> order(static_cast<std::size_t>(std::max(n, 0)));
+  std::iota(order.begin(), order.end(), 0);
+  RandomStream random(stream_seed(seed, 0x68656c64));
+  for (int i = n - 1; i > 0; --i) std::swap(order[static_cast<std::size_t>(i)], order[static_cast<std::size_t>(random.integer(0, i))]);
+  int held = static_cast<int>(std::lround(held_out * n));
+  held = std::min(held, n - 1);
+  std::vector<bool> result(order.size(), false);
+  for (int k = 0; k < held; ++k) result[static_cast<std::size_t>(order[static_cast<std::size_t>(k)])] = true;
+  return result;
+}
 
 FitModel default_fit_model(const TrackedShots& shots) {
   FitModel m;

@@ -46,6 +46,13 @@ struct CalibrationReport {
   double seconds = 0.0;
 };
 
+/// Which of `n` shots calibrate() holds out for `held_out` and `seed`: a
+/// seeded Fisher-Yates shuffle, the first round(held_out n) of it, at least
+/// one shot kept for training; true for a held-out shot. A function of these
+/// three only, so the held-out shots of a calibration can be evaluated again
+/// under given constants (evaluate_only holds none out).
+std::vector<bool> held_out_shots(int n, double held_out, std::uint64_t seed);
+
 /// Calibrates `start` (table, settings, cue) on the shots. Throws
 /// InvalidArgument naming "shots[i]..." for a shot that cannot be prepared,
 /// "held_out" or "threads" for bad options.

@@ -147,9 +147,10 @@ class CueballEnvTest(unittest.TestCase):
         self.assertIsNone(rl.CueballEnv().render())
 
     def test_the_strongest_agent_by_name(self):
-        # Three-cushion's strongest is carom_search at its own budget (quick);
-        # the opponent breaks and replies until the learner is to act.
-        env = rl.CueballEnv(game="three_cushion", opponent="strongest", seat=1)
+        # Three-cushion's strongest is carom_search, here at 30 runs a
+        # decision (its own budget takes minutes under the sanitizers); the
+        # opponent breaks and replies until the learner is to act.
+        env = rl.CueballEnv(game="three_cushion", opponent="strongest", seat=1, simulations=30)
         obs, info = env.reset(seed=2)
         self.assertEqual(info["to_shoot"], 1)
         obs, reward, terminated, truncated, info = env.step(env.action_space.sample())

@@ -9,6 +9,8 @@
 //   planner     plan_shot (shot_planner.hpp) with its defaults (direct and
 //               bank, tournament noise, centre ball then draw/follow) and
 //               --planner-simulations engine runs, seeded with the layout's seed;
+//               with --fallback-kinds, where none of its kinds is feasible,
+//               a plan of those (the agents' fallback) with that budget again;
 //   ghost_ball  the ghost-ball agent's aim, ghost_ball_shot() (agents/agent.hpp;
 //               D. G. Alciatore, "The Illustrated Principles of Pool and
 //               Billiards", 2004): the cue ball aimed at the ghost ball
@@ -218,8 +220,11 @@ struct Choice {
   double next_success_probability = -1.0;  // position play: the leave's next-shot estimate; -1: none
 };
 
-// The single-pot suite's planner: plan_shot with its defaults and the budget.
-Choice single_planner_choice(const Scenario& s, int target, std::uint64_t seed, int simulations) {
+// The single-pot suite's planner: plan_shot with its defaults and the budget;
+// where none of its kinds is feasible, a plan of `fallback` (when given: the
+// agents' fallback, --fallback-kinds) with the same budget again.
+Choice single_planner_choice(const Scenario& s, int target, std::uint64_t seed, int simulations,
+                             const std::vector<ShotKind>& fallback) {
   Choice c;
   const auto start = std::chrono::steady_clock::now();
   const double cpu_start = thread_cpu_seconds();
@@ -228,10 +233,17 @@ Choice single_planner_choice(const Scenario& s, int target, std::uint64_t seed, 
   q.seed = seed;
   q.simulations = simulations;
   try {
-    const ShotPlanResult r = plan_shot(s, q);
+    std::optional<ShotPlanResult> first;
+    try {
+      first = plan_shot(s, q);
+    } catch (const NoFeasibleShot&) {
+      if (fallback.empty()) throw;
+      q.kinds = fallback;
+    }
+    const ShotPlanResult r = first ? *first : plan_shot(s, q);
     c.found = true;
     c.action = r.shot.strike;
-    c.simulations = r.simulations;
+    c.simulations = r.simulations + (first ? 0 : simulations);  // a fallback plan: both budgets
     c.success_probability = r.shot.success_probability;
     c.what = fmt("%s %s%s%s (window %.3f, screen %.3f)", to_string(r.shot.kind), r.shot.pocket_name.c_str(),
                  r.shot.cushion.empty() ? "" : " off ", r.shot.cushion.c_str(), r.shot.window_probability,
@@ -390,12 +402,13 @@ MethodResult measured(const Scenario& s, const Choice& c, int repeats, std::uint
   return r;
 }
 
-SingleRecord run_single(const Setup& st, std::uint64_t seed, int repeats, int planner_simulations) {
+SingleRecord run_single(const Setup& st, std::uint64_t seed, int repeats, int planner_simulations,
+                        const std::vector<ShotKind>& fallback) {
   SingleRecord rec;
   rec.seed = seed;
   const Scenario s = single_layout(st, seed, rec.others);
   const std::uint64_t measure = stream_seed(seed, kMeasureStream);
-  rec.m[0] = measured(s, single_planner_choice(s, 1, seed, planner_simulations), repeats, measure);
+  rec.m[0] = measured(s, single_planner_choice(s, 1, seed, planner_simulations, fallback), repeats, measure);
   rec.m[1] = measured(s, ghost_choice(s, 1), repeats, measure);
   rec.m[2] = measured(s, exhaustive_choice(st, s, 1, stream_seed(seed, kScreenStream), rec.grid), repeats, measure);
   return rec;
@@ -708,6 +721,8 @@ void usage() {
       "  --kinds LIST             the run-outs' shot kinds, comma-separated: direct, bank, kick, combination\n"
       "                           (default direct,bank, the agent's)\n"
       "  --fallback-kinds LIST    the kinds asked for when no shot of --kinds pots the run-outs' ball, e.g. kick\n"
+      "                           (single pots: none unless given; given, a plan of them where plan_shot's\n"
+      "                           defaults find none, as the agents play)\n"
       "                           (default: the agent's, kick)\n"
       "  --threads T              layouts in parallel, [1, 256] (default 1); results do not depend on it, timings do\n"
       "  --json FILE              also write the results as JSON\n"
@@ -865,7 +880,8 @@ int run(const Options& o) {
       }
     std::vector<SingleRecord> recs(static_cast<std::size_t>(o.layouts));
     parallel_for(o.layouts, o.threads, [&](int k) {
-      recs[static_cast<std::size_t>(k)] = run_single(st, o.seed + static_cast<std::uint64_t>(k), o.repeats, o.planner_simulations);
+      recs[static_cast<std::size_t>(k)] = run_single(st, o.seed + static_cast<std::uint64_t>(k), o.repeats, o.planner_simulations,
+                                                       o.fallback_kinds.value_or(std::vector<ShotKind>{}));
     });
     const double wall = seconds_since(start);
     std::printf("\nsingle pots: %d layouts (seeds %llu..%llu), %.1f s\n", o.layouts, static_cast<unsigned long long>(o.seed),

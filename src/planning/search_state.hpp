@@ -49,12 +49,15 @@ inline constexpr std::size_t kMaxScreened = 12;
 // best feasible shots by window probability, each tip height of
 // ShotSearch::variant_heights (ball radii: draw, centre, follow) at each
 // cue-speed factor of its variant_speeds on the shot's own speed, one more step along the speed
-// where the best was at an end, and side kVariantSide either way at the best;
-// a variant's search may take kVariantRuns runs or so. A shot whose window
-// probability is kNothingToGain or more is not varied.
-// (ShotSearch's defaults: shot_search.hpp).
+// where the best was at an end, a firm stroke (kVariantFirmFactor x the best's
+// speed, kept inside its speed window) at the best, and side kVariantSide
+// either way at the best and at the best of each tip height (there with
+// the speed chosen for it); a variant's search may take kVariantRuns runs
+// or so. A shot whose window probability is kNothingToGain or more is not
+// varied. (ShotSearch's defaults: shot_search.hpp).
 inline constexpr std::size_t kVariantCandidates = 3;
 inline constexpr double kVariantSide = 0.2;
+inline constexpr double kVariantFirmFactor = 4.0;
 inline constexpr double kNothingToGain = 0.999;
 // Window probabilities in one step of this rank by the brief noisy screen.
 inline constexpr double kWindowStep = 0.02;

@@ -14,7 +14,8 @@ namespace {
 
 // One variant of feasible[base]: its index in st.feasible, nullopt when it
 // does not pot or the variants' budget is spent (st.variants_spent).
-std::optional<std::size_t> vary(SearchState& st, std::size_t base, double side, double height, double speed) {
+std::optional<std::size_t> vary(SearchState& st, std::size_t base, double side, double height,
+                                std::optional<double> speed) {
   if (st.variants_spent) return std::nullopt;
   if (st.trials.runs() + kVariantRuns > st.variant_cap) {
     st.variants_spent = true;
@@ -26,8 +27,9 @@ std::optional<std::size_t> vary(SearchState& st, std::size_t base, double side, 
   std::string why;
   std::optional<PlannedShot> v;
   try {
-    v = search_candidate(st, st.candidates[ci], side, height, why,
-                         std::pair<double, double>{speed, st.feasible[base].strike.aim_deg});
+    v = speed ? search_candidate(st, st.candidates[ci], side, height, why,
+                                 std::pair<double, double>{*speed, st.feasible[base].strike.aim_deg})
+              : search_candidate(st, st.candidates[ci], side, height, why);
   } catch (const BudgetSpent&) {
     st.variants_spent = true;
   }
@@ -60,22 +62,29 @@ bool improves(const SearchState& st, std::optional<std::size_t> v, std::size_t b
 }
 
 // The variants of one base shot: tip heights x speeds about it, one more
-// speed step along the best's when it was at an end, side either way at the
-// best (unless the request gives the side).
+// speed step along the best's when it was at an end, a firm stroke at the
+// best's tip height (kVariantFirmFactor x its speed, kept inside its speed
+// window), and side either way at the best of each tip height, at its speed
+// and at the speed chosen for it (unless the request gives the side).
 void vary_shot(SearchState& st, std::size_t base) {
   const ShotSearch& o = st.o;
   const CueStrikeNoise& noise = st.q.noise;
   std::size_t best = base;
   double best_factor = 1.0;
-  for (double height : o.variant_heights)
+  std::vector<std::size_t> best_of_height;  // the best variant of each tip height
+  for (double height : o.variant_heights) {
+    std::optional<std::size_t> best_here;
+    if (height == st.feasible[base].strike.height) best_here = base;
     for (double factor : o.variant_speeds) {
       if (height == st.feasible[base].strike.height && factor == 1.0) continue;
       const std::optional<double> speed = variant_speed(st.feasible[base], factor, noise);
       if (!speed) continue;
-      if (const std::optional<std::size_t> v = vary(st, base, st.feasible[base].strike.side, height, *speed);
-          improves(st, v, best))
-        best = *v, best_factor = factor;
+      const std::optional<std::size_t> v = vary(st, base, st.feasible[base].strike.side, height, *speed);
+      if (v && (!best_here || improves(st, v, *best_here))) best_here = *v;
+      if (improves(st, v, best)) best = *v, best_factor = factor;
     }
+    if (best_here) best_of_height.push_back(*best_here);
+  }
   // Further along the speed of the best, when it was at an end.
   if (best_factor != 1.0) {
     const double factor = best_factor < 1.0 ? o.variant_speeds.front() : o.variant_speeds.back();
@@ -85,11 +94,17 @@ void vary_shot(SearchState& st, std::size_t base) {
           improves(st, v, best))
         best = *v;
   }
-  // Side spin at the best, unless the request gives the side.
-  if (st.q.side == 0.0)
-    for (double side : {-kVariantSide, kVariantSide})
-      if (std::hypot(side, st.feasible[best].strike.height) <= kMiscueOffsetFraction)
-        vary(st, best, side, st.feasible[best].strike.height, st.feasible[best].strike.speed);
+  if (const std::optional<double> firm = variant_speed(st.feasible[best], kVariantFirmFactor, noise))
+    vary(st, best, st.feasible[best].strike.side, st.feasible[best].strike.height, *firm);
+  // Side spin, unless the request gives the side.
+  if (st.q.side != 0.0) return;
+  for (const double side : {-kVariantSide, kVariantSide}) {
+    if (std::hypot(side, st.feasible[best].strike.height) <= kMiscueOffsetFraction)
+      vary(st, best, side, st.feasible[best].strike.height, st.feasible[best].strike.speed);
+    for (const std::size_t b : best_of_height)
+      if (std::hypot(side, st.feasible[b].strike.height) <= kMiscueOffsetFraction)
+        vary(st, b, side, st.feasible[b].strike.height, std::nullopt);  // the speed chosen for it
+  }
 }
 
 }  // namespace

@@ -56,6 +56,29 @@ if(NOT position EQUAL 500 OR NOT racks EQUAL 1 OR NOT in_hand STREQUAL "planner"
   message(FATAL_ERROR "--position 500 --racks 1 --in-hand planner --fallback-kinds kick gave options.position_simulations "
                       "${position}, runout.racks ${racks}, options.in_hand ${in_hand}, options.fallback_kinds ${fallback}")
 endif()
+# The single pots with the agents' kick (--fallback-kinds): seed 100's layout has no direct or bank
+# pot, and a kick, planned with the budget again.
+foreach(fallback "" "kick")
+  set(flag "")
+  if(fallback)
+    set(flag --fallback-kinds ${fallback})
+  endif()
+  execute_process(
+    COMMAND ${TOOL} --suite single --layouts 1 --seed 100 --repeats 50 --planner-simulations 500 --threads 1 ${flag}
+            --json ${JSON}
+    RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+  if(NOT rc EQUAL 0)
+    message(FATAL_ERROR "cueball-planner-benchmark --suite single ${flag} exited ${rc}:\n${out}\n${err}")
+  endif()
+  file(READ ${JSON} text)
+  string(JSON shot GET "${text}" single per_layout 0 planner shot)
+  string(JSON runs GET "${text}" single per_layout 0 planner simulations)
+  if(fallback AND (NOT shot MATCHES "^kick " OR NOT runs GREATER 500))
+    message(FATAL_ERROR "--fallback-kinds kick on seed 100: the planner's shot is '${shot}' in ${runs} runs, not a kick in over 500")
+  elseif(NOT fallback AND NOT shot MATCHES "^no feasible shot")
+    message(FATAL_ERROR "seed 100 without --fallback-kinds: the planner's shot is '${shot}', not none")
+  endif()
+endforeach()
 # A bad kind exits 2 naming the flag.
 execute_process(COMMAND ${TOOL} --suite runout --racks 1 --fallback-kinds kik
   RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)

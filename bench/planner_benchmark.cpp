@@ -249,7 +249,8 @@ Choice single_planner_choice(const Scenario& s, int target, std::uint64_t seed, 
                  r.shot.cushion.empty() ? "" : " off ", r.shot.cushion.c_str(), r.shot.window_probability,
                  r.shot.success_probability);
   } catch (const NoFeasibleShot& e) {
-    c.simulations = simulations;  // the API does not report them: its budget is the upper bound
+    // The API does not report them: the budget (of both plans with a fallback) is the upper bound.
+    c.simulations = fallback.empty() ? simulations : 2 * simulations;
     c.what = std::string(e.what()).substr(0, 2000);
   }
   c.seconds = seconds_since(start);

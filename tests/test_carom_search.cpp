@@ -1,7 +1,12 @@
 // The carom_search agent (src/agents/carom_search.cpp): on fixed
 // three-cushion tables it finds a strike that scores noise-free, the same
-// one for the same seed, within its budget of engine runs.
+// one for the same seed, within its budget of engine runs; with position
+// play it weighs the next point on the table each finalist leaves, within
+// its budget, and a point that wins the game leaves nothing to weigh.
 #include <gtest/gtest.h>
+
+#include <algorithm>
+#include <vector>
 
 #include "cueball/agents/agent.hpp"
 #include "cueball/games/game.hpp"
@@ -71,6 +76,55 @@ TEST(CaromSearch, RespectsTheBudget) {
     EXPECT_LE(r.simulations, budget) << "budget " << budget;
     EXPECT_NO_THROW((void)play(s, r.action, 0)) << "budget " << budget;  // always a legal action
   }
+}
+
+AgentOptions with_position(int simulations, int position_simulations) {
+  AgentOptions o = options(simulations);
+  o.position_simulations = position_simulations;
+  return o;
+}
+
+// Position play (AgentOptions::position_simulations): the strike played
+// scores noise-free, the next point's rate on the table it leaves is a
+// share in [0, 1] (-1 without position play), the runs stay within the
+// budget it states (each leave's search capped at `simulations`), the same
+// for the same seed, and what choose_action plays.
+TEST(CaromSearch, PositionPlayWeighsTheNextPointWithinItsBudget) {
+  const std::vector<GameState> tables{
+      in_play({0.5, 0.4}, {1.5, 0.7}, {2.2, 1.0}),
+      in_play({1.0, 1.1}, {2.4, 0.3}, {1.8, 0.9}),
+  };
+  for (std::size_t k = 0; k < tables.size(); ++k) {
+    SCOPED_TRACE(k);
+    EXPECT_EQ(carom_search(options(300), tables[k], 5).next_point_rate, -1.0);
+    for (const int position : {100, 1000}) {
+      const CaromSearchResult r = carom_search(with_position(300, position), tables[k], 5);
+      EXPECT_TRUE(r.point);
+      EXPECT_TRUE(scores(tables[k], r.action));
+      EXPECT_GE(r.next_point_rate, 0.0);
+      EXPECT_LE(r.next_point_rate, 1.0);
+      const int per_leave = std::min(position, 300);
+      EXPECT_GT(r.simulations, 300);  // some leave was searched
+      EXPECT_LE(r.simulations, 300 + static_cast<int>(kCaromPositionFinalists) * (per_leave + 1));
+      const CaromSearchResult again = carom_search(with_position(300, position), tables[k], 5);
+      EXPECT_EQ(again.action.strike, r.action.strike);
+      EXPECT_EQ(again.simulations, r.simulations);
+      EXPECT_EQ(again.next_point_rate, r.next_point_rate);
+      EXPECT_EQ(choose_action(with_position(300, position), tables[k], 5).strike, r.action.strike);
+    }
+  }
+}
+
+// A point that wins the game (the shooter one short of race_to) leaves no
+// next point to search: every finalist's next counts as certain, and
+// nothing is spent on a leave.
+TEST(CaromSearch, AWinningPointCountsTheNextAsCertain) {
+  GameState s = in_play({0.5, 0.4}, {1.5, 0.7}, {2.2, 1.0});
+  s.scores = {s.config.race_to - 1, 0};
+  const CaromSearchResult r = carom_search(with_position(300, 200), s, 5);
+  EXPECT_TRUE(r.point);
+  EXPECT_EQ(r.next_point_rate, 1.0);
+  EXPECT_LE(r.simulations, 300 + static_cast<int>(kCaromPositionFinalists));
 }
 
 TEST(CaromSearch, RefusesOtherGamesAndBadOptions) {

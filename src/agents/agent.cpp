@@ -97,7 +97,7 @@ Reasoning reasoning_of(const CaromSearchResult& c) {
   r.summary = std::string("carom_search: the strike found ") + (c.point ? "scores" : "does not score") +
               " noise-free; " + std::to_string(c.noisy_points) + " of " + std::to_string(c.noisy_tries) +
               " noisy repeats score (" + std::to_string(c.simulations) + " engine runs)";
-  r.considered.push_back({"the strike found", share, -1.0});
+  r.considered.push_back({"the strike found", share, c.next_point_rate});
   return r;
 }
 

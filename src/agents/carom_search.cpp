@@ -22,6 +22,18 @@
 //              its noise-free aim window, kept when it scores at least as
 //              often on the same noisy seeds.
 //
+// Position (AgentOptions::position_simulations > 0), between 3 and 4: the
+// screen halves down to kCaromPositionFinalists points instead of one; each is
+// played noise-free and the next point searched on the table it leaves
+// (this search again, min(position_simulations, simulations) runs, no
+// position of its own); the one played maximises the points expected from
+// this shot and the next, rate x (1 + next rate), rate the share of its
+// noisy repeats that scored (a point that wins the game counts the next as
+// certain). The one-shot lookahead of the pool agents' position play
+// (planning/position_play.hpp) for a game in which the shooter plays on
+// after a point. The decision then spends at most simulations +
+// kCaromPositionFinalists x (min(position_simulations, simulations) + 1) runs.
+//
 // When nothing scores, the best near miss is played: both balls touched with
 // the most cushions before the second, else one ball touched after the most
 // cushions. The planning noise is options.noise, else the game's, else
@@ -206,12 +218,13 @@ void repeat_noisy(Search& s, Candidate& c, int to) {
   }
 }
 
-// Step 3: returns the index into the pool of the point to play (pool.size() when none).
-std::size_t screen(Search& s) {
+// Step 3: the points left in the screen, best first (empty when none): one,
+// or with position play up to kCaromPositionFinalists.
+std::vector<std::size_t> screen(Search& s, std::size_t finalists) {
   std::vector<std::pair<double, std::size_t>> ranked;
   for (std::size_t i = 0; i < s.pool.size(); ++i)
     if (s.pool[i].point) ranked.push_back({support(s, s.pool[i]), i});
-  if (ranked.empty()) return s.pool.size();
+  if (ranked.empty()) return {};
   std::stable_sort(ranked.begin(), ranked.end(), [](const auto& x, const auto& y) { return x.first > y.first; });
   std::vector<std::size_t> alive;
   for (std::size_t k = 0; k < ranked.size() && k < kScreenedPoints; ++k) alive.push_back(ranked[k].second);
@@ -221,9 +234,41 @@ std::size_t screen(Search& s) {
     for (const std::size_t i : alive) repeat_noisy(s, s.pool[i], s.pool[i].noisy_tries + kRepeatsPerRound);
     std::stable_sort(alive.begin(), alive.end(),
                      [&](std::size_t x, std::size_t y) { return noisy_rate(s.pool[x]) > noisy_rate(s.pool[y]); });
-    if (alive.size() > 1) alive.resize((alive.size() + 1) / 2);
+    if (alive.size() > finalists) alive.resize(std::max(finalists, (alive.size() + 1) / 2));
   }
-  return alive.front();
+  if (alive.size() > finalists) alive.resize(finalists);
+  return alive;
+}
+
+// Position: of the finalists, the one with the most points expected from
+// this shot and the next (header comment); `next_rate` gets its next rate.
+std::size_t play_for_position(Search& s, const AgentOptions& options, const std::vector<std::size_t>& finalists,
+                              double& next_rate) {
+  AgentOptions next = options;
+  next.simulations = std::min(options.position_simulations, options.simulations);
+  next.position_simulations = 0;
+  std::size_t best = finalists.front();
+  double best_value = -1.0;
+  for (std::size_t k = 0; k < finalists.size(); ++k) {
+    Candidate& c = s.pool[finalists[k]];
+    Action a;
+    a.strike = c.strike;
+    const GameStep step = play(s.quiet, a, 0);
+    s.used += 1;
+    double rate = 0.0;  // the next point's, on the table this one leaves
+    if (step.ruling.points[static_cast<std::size_t>(s.state.to_shoot)] > 0) {
+      if (step.next.over) {
+        rate = 1.0;
+      } else if (step.next.to_shoot == s.state.to_shoot) {
+        const CaromSearchResult n = carom_search(next, step.next, stream_seed(s.seed, 5000 + k));
+        s.used += n.simulations;
+        rate = n.point && n.noisy_tries > 0 ? static_cast<double>(n.noisy_points) / n.noisy_tries : 0.0;
+      }
+    }
+    const double value = noisy_rate(c) * (1.0 + rate);
+    if (value > best_value) best_value = value, best = finalists[k], next_rate = rate;
+  }
+  return best;
 }
 
 // One noise-free run: does the strike score?
@@ -280,11 +325,20 @@ CaromSearchResult carom_search(const AgentOptions& options, const GameState& sta
 
   scan(s, std::max(1, s.budget / 2));
   refine(s, std::max(s.used, s.budget - s.budget / 4));
-  std::size_t chosen = screen(s);
+  const bool position = options.position_simulations > 0;
+  const std::vector<std::size_t> finalists = screen(s, position ? kCaromPositionFinalists : 1);
+  std::size_t chosen = s.pool.size();
+  double next_rate = -1.0;
+  if (finalists.size() > 1) {
+    chosen = play_for_position(s, options, finalists, next_rate);
+  } else if (!finalists.empty()) {
+    chosen = finalists.front();
+  }
   if (chosen < s.pool.size()) chosen = centre(s, chosen);
 
   CaromSearchResult r;
   r.simulations = s.used;
+  r.next_point_rate = next_rate;
   if (chosen < s.pool.size()) {
     r.action.strike = s.pool[chosen].strike;
     r.point = true;

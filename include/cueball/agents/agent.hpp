@@ -61,7 +61,9 @@ struct AgentOptions {
   /// for position or in hand spends more, position_play.hpp and
   /// ball_in_hand.hpp say how much), or of a decision (carom_search).
   int simulations = 2000;
-  /// Engine runs of each next-shot plan in position play (planner; 0: no position play).
+  /// Engine runs of each next-shot plan in position play (planner; 0: no
+  /// position play); carom_search: of the next point's search on each
+  /// finalist's leave, at most `simulations` (src/agents/carom_search.cpp).
   int position_simulations = 0;
   /// Position play: the noisy outcomes of each finalist whose leaves are
   /// scored (PositionRequest::noisy_leaves; 0: the noise-free leave alone).
@@ -88,7 +90,8 @@ void validate(const AgentOptions& options);
 /// planner benchmark's run-out suite measures by default: the safety
 /// planner with each pot planned at kStrongestSimulations runs, played for
 /// position (kStrongestPositionSimulations runs of each next-shot plan), a
-/// kick when nothing else pots; three-cushion: carom_search at its default.
+/// kick when nothing else pots; three-cushion: carom_search with the same
+/// budgets, so playing position for the next point.
 inline constexpr int kStrongestSimulations = 4000;
 inline constexpr int kStrongestPositionSimulations = 1000;
 AgentOptions strongest_agent();
@@ -124,14 +127,21 @@ Action carom_search_action(const AgentOptions& options, const GameState& state, 
 Action safety_planner_action(const AgentOptions& options, const GameState& state, std::uint64_t seed);
 
 /// What carom_search found, for tests and benchmarks: its action, the
-/// engine runs it spent (never more than options.simulations), whether the
-/// action scores noise-free, and the share of its noisy repeats that scored.
+/// engine runs it spent (never more than options.simulations without
+/// position play; with it, options.position_simulations > 0, at most
+/// kCaromPositionFinalists x (min(position_simulations, simulations) + 1) more:
+/// src/agents/carom_search.cpp), whether the action scores noise-free, the
+/// share of its noisy repeats that scored, and with position play the next
+/// point's rate on the table it leaves (-1: not looked at).
+/// carom_search's position play: the points whose leaves are searched.
+inline constexpr std::size_t kCaromPositionFinalists = 3;
 struct CaromSearchResult {
   Action action;
   int simulations = 0;
   bool point = false;
   int noisy_points = 0;
   int noisy_tries = 0;
+  double next_point_rate = -1.0;
 };
 CaromSearchResult carom_search(const AgentOptions& options, const GameState& state, std::uint64_t seed);
 

@@ -347,8 +347,12 @@ PlannerChoice planner_choice(const AgentOptions& options, const GameState& state
   if (state.over) throw InvalidArgument("state", "the game is over (" + state.end_reason + ")");
   Turn t{options, state, seed, legal, planning_noise(options, state), {}, {}};
   if (state.config.kind == GameKind::three_cushion) {
+    // carom_search at the planner's budget, without its position play
+    // (measured at equal runs, it did not gain: docs/planner-benchmark.md).
+    AgentOptions carom = options;
+    carom.position_simulations = 0;
     t.choice.kind = PlannerChoice::Kind::safety;
-    t.choice.action = carom_search_action(options, state, seed);
+    t.choice.action = carom_search_action(carom, state, seed);
     t.choice.detail = "three-cushion: carom_search";
     return t.choice;
   }

@@ -90,8 +90,8 @@ void validate(const AgentOptions& options);
 /// planner benchmark's run-out suite measures by default: the safety
 /// planner with each pot planned at kStrongestSimulations runs, played for
 /// position (kStrongestPositionSimulations runs of each next-shot plan), a
-/// kick when nothing else pots; three-cushion: carom_search with the same
-/// budgets, so playing position for the next point.
+/// kick when nothing else pots; three-cushion: carom_search at the same
+/// budget, without position play (which did not gain at equal runs).
 inline constexpr int kStrongestSimulations = 4000;
 inline constexpr int kStrongestPositionSimulations = 1000;
 AgentOptions strongest_agent();

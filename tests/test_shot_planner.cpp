@@ -236,6 +236,32 @@ TEST(ShotPlanner, AnObstructedCueIsNeverReturned) {
   expect_pots(s, plan, q);
 }
 
+// The cue ball near the bottom rail, the 1 a cut into the bottom-right
+// corner: at the geometric aim a low cue clears everything, at the aim the
+// throw correction gives it does not (the table left by test_safety's plain
+// hit on its first hidden layout). The shot is planned with the cue raised
+// to clear, at a small budget too, where it used to be rejected ("the cue
+// is obstructed at the corrected aim") and nothing was found below 2,000
+// runs.
+TEST(ShotPlanner, ACueTheCorrectedAimObstructsIsRaisedToClear) {
+  const Scenario s = layout({{0, {2.186, 0.220}},
+                             {1, {2.407, 0.200}},
+                             {2, {0.448, 0.064}},
+                             {3, {0.513, 0.972}},
+                             {4, {1.138, 0.953}},
+                             {9, {1.692, 0.080}}});
+  PlanRequest q;
+  q.target = 1;
+  q.simulations = 500;
+  const ShotPlanResult plan = plan_shot(s, q);
+  EXPECT_EQ(plan.shot.kind, ShotKind::direct);
+  EXPECT_EQ(plan.shot.pocket_name, "bottom-right");
+  EXPECT_FALSE(cue_obstructed(s.table, s.balls, 0, to_strike(plan.shot.strike, s.settings.parameters.ball.radius),
+                              s.settings.parameters.ball));
+  EXPECT_GT(plan.shot.success_probability, 0.5);
+  expect_pots(s, plan, q);
+}
+
 TEST(ShotPlanner, SuccessProbabilityAgreesWithAnIndependentNoisyBatch) {
   const Scenario s = corner_shot(35.0);
   PlanRequest q;

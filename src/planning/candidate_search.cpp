@@ -145,6 +145,31 @@ bool finish_shot(SearchState& st, const ShotAction& a, const Candidate& c, Plann
   return true;
 }
 
+// Where the aim correction turned the cue into a ball or the rail (the
+// elevation was chosen at the first aim): the lowest elevation that clears
+// the cue at the corrected aim, the aim solved again there and the windows
+// found anew. False and `why` when none clears it or no aim pots there.
+bool clear_the_cue(SearchState& st, ShotAction& a, const Candidate& c, PlannedShot& shot, std::string& why) {
+  const Scenario& s = st.s;
+  const BallParameters& ball = s.settings.parameters.ball;
+  if (!cue_obstructed(s.table, s.balls, s.balls[st.cue].id, to_strike(a, ball.radius), ball)) return true;
+  const std::optional<double> elevation = clearing_elevation(s, st.cue, a.aim_deg, a.side, a.height);
+  if (!elevation || *elevation <= a.elevation_deg) {
+    why = "the cue is obstructed at the corrected aim";
+    return false;
+  }
+  a.elevation_deg = *elevation;
+  bool short_of_pocket = false;
+  const std::optional<double> aim = st.trials.solve_aim(a, c, short_of_pocket, 8);
+  if (!aim) {
+    why = "the cue is obstructed at the corrected aim, and no aim pots at the elevation that clears it";
+    return false;
+  }
+  a.aim_deg = *aim;
+  find_windows(st.trials, a, c, shot);
+  return true;
+}
+
 // Whether a new candidate's search would take the search past its budget.
 bool search_budget_spent(const SearchState& st) {
   return st.trials.runs() > 0 && st.trials.runs() + kCandidateRuns > st.search_budget();
@@ -174,6 +199,7 @@ std::optional<PlannedShot> search_candidate(SearchState& st, const Candidate& c,
   if (!choose_speed(st, a, c, fixed.has_value(), why)) return std::nullopt;
   PlannedShot shot = shot_of(s, c);
   find_windows(st.trials, a, c, shot);
+  if (!clear_the_cue(st, a, c, shot, why)) return std::nullopt;
   if (!finish_shot(st, a, c, shot, why)) return std::nullopt;
   return shot;
 }

@@ -107,7 +107,10 @@
 // the tip height; a centre-ball strike that misses or scratches (a
 // straight-in's cue ball following the object ball in) is tried again with
 // draw, then follow; the spin, speed and side variants of step 4 follow. It is
-// level unless the cue must be raised to clear a ball or the rail; the butt
+// level unless the cue must be raised to clear a ball or the rail (at the
+// first aim, and again at the corrected one where the correction turns the
+// cue into a ball or the rail: the aim is then solved and the windows found
+// anew at the elevation that clears it); the butt
 // of a level cue is below the rail, so most strikes come out at 2 degrees.
 // Deterministic: the same scenario, request and seed give the same plan bit
 // for bit, and the engine runs never exceed `simulations`. In the library

@@ -1099,12 +1099,16 @@ TEST(CushionImpact, DefaultToleranceKeepsTheGoalWhereASlipNearlyVanishes) {
   const CushionImpactResult limit = richardson_limit(b);
   EXPECT_LT(gap(r, ref), 0.1 * goal);
   EXPECT_LT(gap(r, limit), goal);
-  // What this test is about: the old default is beyond the goal from both.
+  // The old default (1e-7) was beyond the goal from both here (7.4e-6 of
+  // the largest velocity from the reference). Since the smooth middle
+  // (mathavan_2010_exact.cpp, issue 29) it restarts its step-size control
+  // where the slip comes close to zero, and is within the goal of the
+  // reference here too; it stays a planner's setting, not the default
+  // (BM_CushionTolerance).
   CushionImpactOptions old_default;
   old_default.exact_tolerance = 1e-7;
   const CushionImpactResult old = solve_cushion_impact(b, m, old_default);
-  EXPECT_GT(gap(old, ref), 5.0 * goal);
-  EXPECT_GT(gap(old, limit), 5.0 * goal);
+  EXPECT_LT(gap(old, ref), goal);
 }
 
 // The accuracy goal of the default (within 1e-6 of the largest incoming

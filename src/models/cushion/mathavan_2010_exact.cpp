@@ -1138,6 +1138,221 @@ struct ExactLimits {
   static constexpr double loosening = 10.0;
 };
 
+
+// ------------------------------------------------------------------ the smooth middle
+
+// While both contacts slip and both slips stay well clear of zero, none of
+// the events above can happen (no slip reaches zero or passes close to it,
+// no contact sticks or is slaved, the directions need no reference), and the
+// integration is the smooth system alone, with the ends of compression (16c)
+// and restitution (16b) on the way: the smooth middle of a sliding impact,
+// where most of its steps are. run_smooth_middle() integrates it with the
+// same DOPRI5 steps, tolerance and step-size control as the general loop
+// below, without its event machinery (the general loop's per-step overhead
+// is as large as the step itself), and hands the state back at the start of
+// the first step that could bring a slip within `clearance` of zero.
+struct SmoothMiddle {
+  double mu_w, mu_s, s, c, k1, k2, kyy, sc, c_n;
+  double rate_bound;  // |d s/dP| of either contact, for any slip directions
+  double clearance;   // slips stay above this (scaled units)
+  double atol;        // the solver's local tolerance, loosened by the slips as in the general loop:
+  double loosen_per_slip;  // x clamp(smaller slip x loosen_per_slip, 1, loosen_max)
+  double loosen_max;
+
+  SmoothMiddle(const Coefficients& k, double clearance_in, double atol_in, double loosen_per_slip_in,
+               double loosen_max_in)
+      : mu_w(k.mu_w), mu_s(k.mu_s), s(k.s), c(k.c), k1(k.k1), k2(k.k2), kyy(k.kyy), sc(k.s * k.c),
+        c_n(k.c * k.inv_1ps), rate_bound(0.0), clearance(clearance_in), atol(atol_in),
+        loosen_per_slip(loosen_per_slip_in), loosen_max(loosen_max_in) {
+    // |friction rates|: mu_w at I, mu_s n_C <= mu_s (s + c mu_w) at C (3d), (8);
+    // the slip rates (mathavan_2010_equations.hpp) bounded entry by entry.
+    const double g = mu_s * (s + c * mu_w);
+    const double kmax = std::max(std::abs(k1), std::abs(k2));
+    rate_bound = std::max(sc + std::max(3.5, kyy) * mu_w + kmax * g, c + kmax * mu_w + 3.5 * g);
+  }
+  // d SlipState / dP while both contacts slip along their slips: (7a), (7b),
+  // (8), (10a), (10b) in the slip rates (mathavan_2010_equations.hpp), (16a).
+  SlipState rhs(const SlipState& z) const {
+    const double six = z[kSix], siy = z[kSiy], scx = z[kScx], scy = z[kScy];
+    const double wi = -mu_w / std::sqrt(six * six + siy * siy);
+    const double wc = -mu_s / std::sqrt(scx * scx + scy * scy);
+    const double ax = wi * six, ay = wi * siy;
+    const double q = wc * (s - c * ay);  // -mu_s n_C / |s_C|
+    const double gx = q * scx, gy = q * scy;
+    SlipState d;
+    d[kSix] = 3.5 * ax + k1 * gx;
+    d[kSiy] = sc + kyy * ay + k2 * gy;
+    d[kScx] = k1 * ax + 3.5 * gx;
+    d[kScy] = -c + k2 * ay + 3.5 * gy;
+    d[kW] = -c_n * (scy - siy);
+    return d;
+  }
+  static double smaller_slip2(const SlipState& y) {
+    return std::min(dot(slip_i(y), slip_i(y)), dot(slip_c(y), slip_c(y)));
+  }
+  double smaller_slip(const SlipState& y) const { return std::sqrt(smaller_slip2(y)); }
+  // The local tolerance of a step from the smaller slip r0 at its start.
+  double step_tolerance(double r0) const { return atol * std::clamp(r0 * loosen_per_slip, 1.0, loosen_max); }
+  // Whether the general loop at y may hand over: both contacts slip freely,
+  // by more than `entry` (and twice the clearance).
+  bool enters(const Exact& sys, const SlipState& y, double entry) const {
+    return sys.free_slip && smaller_slip(y) > std::max(entry, 2.0 * clearance);
+  }
+  // Whether both slips stay above `clearance` within a step. A slip of sizes
+  // r0 and r1 at the ends of a step h stays above (r0 + r1 - h rate_bound) / 2
+  // (`r0` is the smaller slip at the start, r1 at the end); where that
+  // bound is too coarse, the sizes at its quarters on the cubic Hermite
+  // interpolant of its ends, less h rate_bound / 8 (the most a slip can
+  // fall between two such points), decide.
+  bool clear(const SlipState& y0, const SlipState& f0, double r0, const SlipState& y1, const SlipState& f1,
+             double r1, double h) const {
+    if (r0 + r1 > h * rate_bound + 2.0 * clearance) return true;
+    const double margin = clearance + 0.125 * h * rate_bound;
+    const double margin2 = margin * margin;
+    if (!(smaller_slip2(y1) > margin2)) return false;
+    std::array<double, kSlips> a, b, d;
+    for (std::size_t i = 0; i < kSlips; ++i) {
+      a[i] = y1[i] - y0[i];
+      b[i] = h * f0[i] - a[i];
+      d[i] = a[i] - h * f1[i] - b[i];
+    }
+    for (const double t : {0.25, 0.5, 0.75}) {
+      const double u = 1.0 - t;
+      SlipState z{};
+      for (std::size_t i = 0; i < kSlips; ++i) z[i] = y0[i] + t * (a[i] + u * (b[i] + t * d[i]));
+      if (!(smaller_slip2(z) > margin2)) return false;
+    }
+    return true;
+  }
+};
+
+// Where the impact stands, shared by the smooth middle and the general loop.
+struct Progress {
+  SlipState y{};
+  SlipState k1{};  // d y / dP at y
+  double p = 0.0;
+  double h = 0.0;
+  bool compressing = true;
+  double work_target = 0.0;
+  bool over = false;  // restitution has ended (y is the final state)
+};
+
+// Records a state of the impact into its history (CushionImpactOptions::record_history).
+struct Recorder {
+  std::vector<CushionImpactSample>* history;
+  const Coefficients* k;
+  const Units* units;
+  double j;  // the invariant line momentum (velocity_state)
+  void operator()(double p, const SlipState& z) const { history->push_back(sample(*k, *units, p, velocity_state(*k, z, j))); }
+};
+
+// Runs the smooth middle from g (both contacts slipping, clear of zero) until
+// the impact ends or a step would leave it; records into `history` if given.
+void run_smooth_middle(const SmoothMiddle& m, double e, Progress& g, Outcome& out,
+                       const Recorder* record) {
+  double err_previous_root = 0.7;
+  double err_previous_3_16 = 0.0;
+  double h_previous = 0.0;
+  bool rejected = false;
+  Step st;
+  double r0 = m.smaller_slip(g.y);  // at the step's start
+  for (int attempts = 0; attempts < ExactLimits::max_attempts && g.p <= kMaxScaledImpulse; ++attempts) {
+    const double atol_step = m.step_tolerance(r0);
+    const double err = dopri5_step(m, g.y, g.k1, g.h, atol_step, st);
+    const double root4 = std::sqrt(std::sqrt(std::max(err, 1e-5)));
+    if (!(err <= 1.0)) {
+      g.h /= std::min(10.0, root4 / 0.75);
+      rejected = true;
+      continue;
+    }
+    const double r1 = m.smaller_slip(st.y1);
+    if (!m.clear(g.y, g.k1, r0, st.y1, st.k7, r1, g.h)) return;
+    ++out.steps;
+    const double root8 = std::sqrt(root4);
+    const double root16 = std::sqrt(root8);
+    const double root_3_16 = root8 * root16;
+    double factor = 0.85 * err_previous_root / root4;
+    if (!rejected && h_previous > 0.0) factor *= (g.h / h_previous) * (err_previous_3_16 / root_3_16);
+    double h_next = g.h * std::clamp(factor, 0.1, 5.0);
+    if (rejected) h_next = std::min(h_next, g.h);
+    err_previous_root = std::sqrt(root16);
+    err_previous_3_16 = root_3_16;
+    h_previous = g.h;
+    rejected = false;
+
+    bool dense_ready = false;
+    auto at = [&](double t, std::size_t i) {
+      if (t == 0.0) return g.y[i];
+      if (t == 1.0) return st.y1[i];
+      if (!dense_ready) make_dense(g.y, g.k1, g.h, st);
+      dense_ready = true;
+      return interpolate(g.y, st, t, i);
+    };
+    double t_from = 0.0;
+    if (g.compressing) {
+      auto normal = [&](double t) { return at(t, kSiy) - at(t, kScy); };  // -(1 + s) yG'
+      const double n1 = normal(1.0);
+      if (n1 > 0.0) {
+        const double n0 = normal(0.0);
+        const double tc = n0 <= 0.0 ? locate(normal, n0, n1) : 0.0;
+        g.compressing = false;
+        out.compression_impulse = g.p + g.h * tc;
+        out.compression_work = at(tc, kW);
+        g.work_target = (1.0 - e * e) * out.compression_work;  // (16b)
+        ++out.events;
+        out.note(32);
+        if (record && tc > 0.0) (*record)(out.compression_impulse, interpolate(g.y, st, tc));
+        t_from = tc;
+      }
+    }
+    if (!g.compressing) {
+      auto work = [&](double t) { return at(t, kW) - g.work_target; };
+      const double w1 = work(1.0);
+      if (w1 > 0.0) {
+        const double w0 = work(t_from);
+        const double span = 1.0 - t_from;
+        const double tr = w0 <= 0.0 ? t_from + span * locate([&](double tt) { return work(t_from + span * tt); }, w0, w1)
+                                    : t_from;
+        if (tr >= 0.9) {
+          if (!dense_ready) make_dense(g.y, g.k1, g.h, st);
+          g.y = interpolate(g.y, st, tr);
+        } else if (tr > 0.0) {
+          Step last;
+          dopri5_step(m, g.y, g.k1, g.h * tr, m.atol, last);
+          g.y = last.y1;
+          ++out.steps;
+        }
+        g.p += g.h * tr;
+        ++out.events;
+        out.note(33);
+        g.over = true;
+        return;
+      }
+    }
+    g.y = st.y1;
+    g.p += g.h;
+    g.k1 = st.k7;
+    r0 = r1;
+    if (record) (*record)(g.p, g.y);
+    g.h = h_next;
+    if (!g.compressing) {
+      // Aim the step in which restitution ends to end just past it (as the general loop does).
+      const double gap = g.work_target - g.y[kW];
+      const double w1 = g.k1[kW];
+      const double w2 = -m.c_n * (g.k1[kScy] - g.k1[kSiy]);
+      const double disc = w1 * w1 + 2.0 * w2 * gap;
+      if (w1 > 0.0 && disc > 0.0) {
+        const double rest = 2.0 * gap / (w1 + std::sqrt(disc));
+        if (rest <= g.h) {
+          g.h = std::min(1.02 * rest, h_next * 1.02);
+        } else if (rest <= 2.0 * g.h) {
+          g.h = 0.51 * rest;
+        }
+      }
+    }
+  }
+}
+
 }  // namespace
 
 Outcome solve_exact(const Coefficients& k, const State& y0, const Units& units,
@@ -1198,6 +1413,8 @@ Outcome solve_exact(const Coefficients& k, const State& y0, const Units& units,
   Step st;
   FreeSlipStep free_step(sys);
   int segment_attempts = 0;
+  const SmoothMiddle middle(k, ExactLimits::loose_slip * scale, atol, loosen_per_slip, loosen_max);
+  double reentry_slip = 0.0;  // the general loop hands over again only once the slips exceed this
   // After an event: modes for the contacts whose slip reached zero, and a new segment.
   auto start_segment = [&](bool cushion_zero, bool bed_zero) {
     if (cushion_zero || bed_zero) {
@@ -1212,10 +1429,43 @@ Outcome solve_exact(const Coefficients& k, const State& y0, const Units& units,
     k1 = sys.rhs(y);
     // A new segment: the step that closed in on the event says nothing about it.
     h = std::max(h, h_start);
+    reentry_slip = 0.0;
     err_previous_root = 0.7;
     h_previous = 0.0;
     segment_attempts = 0;
   };
+  // The smooth middle (SmoothMiddle): from the start, and again after an
+  // accepted step of the general loop wherever both slips are free and clear.
+  const Recorder record_state{history, &k, &units, j};
+  auto smooth_middle = [&] {
+    Progress g{y, k1, p, h, compressing, work_target, false};
+    run_smooth_middle(middle, k.e, g, out, history ? &record_state : nullptr);
+    y = g.y;
+    p = g.p;
+    compressing = g.compressing;
+    work_target = g.work_target;
+    if (g.over) return true;
+    // Back in the general loop: a new segment from the step that left the
+    // middle, and the middle again only once the slips have doubled.
+    reentry_slip = 2.0 * middle.smaller_slip(y);
+    h = g.h;
+    sys.set_references(y);
+    k1 = sys.rhs(y);
+    err_previous_root = 0.7;
+    h_previous = 0.0;
+    rejected = false;
+    segment_attempts = 0;
+    return false;
+  };
+  auto finish = [&] {
+    out.total_impulse = p;
+    out.final_state = velocity_state(k, y, j);
+    if (history) record(p);
+  };
+  if (middle.enters(sys, y, 0.0) && smooth_middle()) {
+    finish();
+    return out;
+  }
   for (int attempts = 1;; ++attempts) {
     if (attempts > ExactLimits::max_attempts || p > kMaxScaledImpulse) wedged();
     if (++segment_attempts > ExactLimits::hover_attempts) {
@@ -1478,6 +1728,13 @@ Outcome solve_exact(const Coefficients& k, const State& y0, const Units& units,
       k1 = st.k7;
       if (history) record(p);
       h = h_next;
+      if (middle.enters(sys, y, reentry_slip)) {
+        if (smooth_middle()) {
+          finish();
+          return out;
+        }
+        continue;
+      }
       if (!compressing) {
         // Aim the step in which restitution ends to end just past that point
         // (W to second order: W' = -c yG', W'' = -c yG''), so that the point

@@ -29,7 +29,9 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <initializer_list>
 #include <tuple>
+#include <utility>
 #include <vector>
 
 #include "core/dormand_prince.hpp"
@@ -1258,6 +1260,50 @@ struct Progress {
   bool over = false;  // restitution has ended (y is the final state)
 };
 
+// A combination sum_i w_i y_i of a step's dense output (make_dense()) as the
+// quartic it is in the fraction t of the step,
+//   y(t) = y0 + t (d0 + u (d1 + t (d2 + u d3))), u = 1 - t
+//        = y0 + (d0 + d1) t + (d2 + d3 - d1) t^2 - (d2 + 2 d3) t^3 + d3 t^4,
+// so that its root is found by Newton's method on the polynomial (three or
+// four iterations where regula falsi on interpolate() took ten).
+struct DenseQuartic {
+  std::array<double, 5> c{};  // coefficients of t^0 .. t^4
+  double value(double t) const { return c[0] + t * (c[1] + t * (c[2] + t * (c[3] + t * c[4]))); }
+  double slope(double t) const { return c[1] + t * (2.0 * c[2] + t * (3.0 * c[3] + t * 4.0 * c[4])); }
+};
+DenseQuartic dense_quartic(const SlipState& y0, const Step& st, std::initializer_list<std::pair<std::size_t, double>> terms) {
+  DenseQuartic q;
+  for (const auto& [i, w] : terms) {
+    const double d0 = st.dense[0][i], d1 = st.dense[1][i], d2 = st.dense[2][i], d3 = st.dense[3][i];
+    q.c[0] += w * y0[i];
+    q.c[1] += w * (d0 + d1);
+    q.c[2] += w * (d2 + d3 - d1);
+    q.c[3] -= w * (d2 + 2.0 * d3);
+    q.c[4] += w * d3;
+  }
+  return q;
+}
+// The root of q in [lo, hi], given q(lo) <= 0 < q(hi): Newton's method from
+// the secant's point, kept inside the bracket (bisection where a step would
+// leave it), to 1e-13 of the step (as locate()).
+double dense_root(const DenseQuartic& q, double lo, double hi) {
+  const double q_lo = q.value(lo);
+  const double q_hi = q.value(hi);
+  double t = q_hi > q_lo ? lo - q_lo * (hi - lo) / (q_hi - q_lo) : 0.5 * (lo + hi);
+  for (int it = 0; it < 50; ++it) {
+    const double v = q.value(t);
+    if (v == 0.0) break;
+    (v > 0.0 ? hi : lo) = t;
+    const double d = q.slope(t);
+    double next = t - v / d;
+    if (!(next > lo && next < hi)) next = 0.5 * (lo + hi);
+    const double moved = std::abs(next - t);
+    t = next;
+    if (moved <= 1e-13 || hi - lo <= 1e-13) break;
+  }
+  return t;
+}
+
 // Records a state of the impact into its history (CushionImpactOptions::record_history).
 struct Recorder {
   std::vector<CushionImpactSample>* history;
@@ -1301,54 +1347,52 @@ void run_smooth_middle(const SmoothMiddle& m, double e, Progress& g, Outcome& ou
     h_previous = g.h;
     rejected = false;
 
+    // The ends of compression, -(1 + s) yG' = s_I,y' - s_C,y rising through
+    // zero (16c), and of restitution, W reaching its target (16b), on the
+    // step's dense output.
     bool dense_ready = false;
-    auto at = [&](double t, std::size_t i) {
-      if (t == 0.0) return g.y[i];
-      if (t == 1.0) return st.y1[i];
+    auto dense = [&] {
       if (!dense_ready) make_dense(g.y, g.k1, g.h, st);
       dense_ready = true;
-      return interpolate(g.y, st, t, i);
     };
     double t_from = 0.0;
-    if (g.compressing) {
-      auto normal = [&](double t) { return at(t, kSiy) - at(t, kScy); };  // -(1 + s) yG'
-      const double n1 = normal(1.0);
-      if (n1 > 0.0) {
-        const double n0 = normal(0.0);
-        const double tc = n0 <= 0.0 ? locate(normal, n0, n1) : 0.0;
-        g.compressing = false;
-        out.compression_impulse = g.p + g.h * tc;
-        out.compression_work = at(tc, kW);
-        g.work_target = (1.0 - e * e) * out.compression_work;  // (16b)
-        ++out.events;
-        out.note(32);
-        if (record && tc > 0.0) (*record)(out.compression_impulse, interpolate(g.y, st, tc));
-        t_from = tc;
+    if (g.compressing && st.y1[kSiy] - st.y1[kScy] > 0.0) {
+      double tc = 0.0;
+      if (g.y[kSiy] - g.y[kScy] <= 0.0) {
+        dense();
+        tc = dense_root(dense_quartic(g.y, st, {{kSiy, 1.0}, {kScy, -1.0}}), 0.0, 1.0);
       }
+      g.compressing = false;
+      out.compression_impulse = g.p + g.h * tc;
+      out.compression_work = tc == 0.0 ? g.y[kW] : interpolate(g.y, st, tc, kW);
+      g.work_target = (1.0 - e * e) * out.compression_work;  // (16b)
+      ++out.events;
+      out.note(32);
+      if (record && tc > 0.0) (*record)(out.compression_impulse, interpolate(g.y, st, tc));
+      t_from = tc;
     }
-    if (!g.compressing) {
-      auto work = [&](double t) { return at(t, kW) - g.work_target; };
-      const double w1 = work(1.0);
-      if (w1 > 0.0) {
-        const double w0 = work(t_from);
-        const double span = 1.0 - t_from;
-        const double tr = w0 <= 0.0 ? t_from + span * locate([&](double tt) { return work(t_from + span * tt); }, w0, w1)
-                                    : t_from;
-        if (tr >= 0.9) {
-          if (!dense_ready) make_dense(g.y, g.k1, g.h, st);
-          g.y = interpolate(g.y, st, tr);
-        } else if (tr > 0.0) {
-          Step last;
-          dopri5_step(m, g.y, g.k1, g.h * tr, m.atol, last);
-          g.y = last.y1;
-          ++out.steps;
-        }
-        g.p += g.h * tr;
-        ++out.events;
-        out.note(33);
-        g.over = true;
-        return;
+    if (!g.compressing && st.y1[kW] > g.work_target) {
+      double tr = t_from;
+      if ((t_from == 0.0 ? g.y[kW] : interpolate(g.y, st, t_from, kW)) <= g.work_target) {
+        dense();
+        DenseQuartic w = dense_quartic(g.y, st, {{kW, 1.0}});
+        w.c[0] -= g.work_target;
+        tr = dense_root(w, t_from, 1.0);
       }
+      if (tr >= 0.9) {
+        dense();
+        g.y = interpolate(g.y, st, tr);
+      } else if (tr > 0.0) {
+        Step last;
+        dopri5_step(m, g.y, g.k1, g.h * tr, m.atol, last);
+        g.y = last.y1;
+        ++out.steps;
+      }
+      g.p += g.h * tr;
+      ++out.events;
+      out.note(33);
+      g.over = true;
+      return;
     }
     g.y = st.y1;
     g.p += g.h;

@@ -1169,14 +1169,14 @@ struct ExactLimits {
 // same loosened tolerance, loosened further by ExactLimits::middle_loosening),
 // without its event machinery (whose per-step overhead was as large as the
 // step itself: on the five-rail shot's sliding impact solve_exact took
-// 18,700 instructions, 10,600 of them 11 steps; now 11,700, 7,300 of them
-// 10 steps, one rejected; callgrind), and hands the
+// 18,700 instructions, 10,600 of them its 11 steps; now 12,800, 9,600 of
+// them 10 steps, one rejected; callgrind), and hands the
 // state back at the start of the first step that could bring a slip within
 // `clearance` of zero. The general loop hands over again after an accepted
 // step wherever both slips are free and clear (after a slip reversal, for
 // instance), at most once per segment unless the slips have doubled.
 struct SmoothMiddle {
-  double mu_w, mu_s, s, c, k1, k2, kyy, sc, c_n;
+  double c_n;         // cos(theta) / (1 + sin(theta)): dW/dP = -c_n (s_C,y - s_I,y') (16a)
   double rate_bound;  // |d s/dP| of either contact, for any slip directions
   double clearance;   // slips stay above this (scaled units)
   double atol;        // the solver's local tolerance, loosened by the slips as in the general loop:
@@ -1185,31 +1185,13 @@ struct SmoothMiddle {
 
   SmoothMiddle(const Coefficients& k, double clearance_in, double atol_in, double loosen_per_slip_in,
                double loosen_max_in)
-      : mu_w(k.mu_w), mu_s(k.mu_s), s(k.s), c(k.c), k1(k.k1), k2(k.k2), kyy(k.kyy), sc(k.s * k.c),
-        c_n(k.c * k.inv_1ps), rate_bound(0.0), clearance(clearance_in), atol(atol_in),
+      : c_n(k.c * k.inv_1ps), rate_bound(0.0), clearance(clearance_in), atol(atol_in),
         loosen_per_slip(loosen_per_slip_in), loosen_max(loosen_max_in) {
     // |friction rates|: mu_w at I, mu_s n_C <= mu_s (s + c mu_w) at C (3d), (8);
     // the slip rates (mathavan_2010_equations.hpp) bounded entry by entry.
-    const double g = mu_s * (s + c * mu_w);
-    const double kmax = std::max(std::abs(k1), std::abs(k2));
-    rate_bound = std::max(sc + std::max(3.5, kyy) * mu_w + kmax * g, c + kmax * mu_w + 3.5 * g);
-  }
-  // d SlipState / dP while both contacts slip along their slips: (7a), (7b),
-  // (8), (10a), (10b) in the slip rates (mathavan_2010_equations.hpp), (16a).
-  SlipState rhs(const SlipState& z) const {
-    const double six = z[kSix], siy = z[kSiy], scx = z[kScx], scy = z[kScy];
-    const double wi = -mu_w / std::sqrt(six * six + siy * siy);
-    const double wc = -mu_s / std::sqrt(scx * scx + scy * scy);
-    const double ax = wi * six, ay = wi * siy;
-    const double q = wc * (s - c * ay);  // -mu_s n_C / |s_C|
-    const double gx = q * scx, gy = q * scy;
-    SlipState d;
-    d[kSix] = 3.5 * ax + k1 * gx;
-    d[kSiy] = sc + kyy * ay + k2 * gy;
-    d[kScx] = k1 * ax + 3.5 * gx;
-    d[kScy] = -c + k2 * ay + 3.5 * gy;
-    d[kW] = -c_n * (scy - siy);
-    return d;
+    const double g = k.mu_s * (k.s + k.c * k.mu_w);
+    const double kmax = std::max(std::abs(k.k1), std::abs(k.k2));
+    rate_bound = std::max(k.s * k.c + std::max(3.5, k.kyy) * k.mu_w + kmax * g, k.c + kmax * k.mu_w + 3.5 * g);
   }
   static double smaller_slip2(const SlipState& y) {
     return std::min(dot(slip_i(y), slip_i(y)), dot(slip_c(y), slip_c(y)));
@@ -1316,7 +1298,8 @@ struct Recorder {
 
 // Runs the smooth middle from g (both contacts slipping, clear of zero) until
 // the impact ends or a step would leave it; records into `history` if given.
-void run_smooth_middle(const SmoothMiddle& m, double e, Progress& g, Outcome& out,
+template <class Stepper>
+void run_smooth_middle(const SmoothMiddle& m, Stepper& step, double e, Progress& g, Outcome& out,
                        const Recorder* record) {
   double err_previous_root = 0.7;
   double err_previous_3_16 = 0.0;
@@ -1326,7 +1309,7 @@ void run_smooth_middle(const SmoothMiddle& m, double e, Progress& g, Outcome& ou
   double r0 = m.smaller_slip(g.y);  // at the step's start
   for (int attempts = 0; attempts < ExactLimits::max_attempts && g.p <= kMaxScaledImpulse; ++attempts) {
     const double atol_step = m.step_tolerance(r0);
-    const double err = dopri5_step(m, g.y, g.k1, g.h, atol_step, st);
+    const double err = step(g.y, g.k1, g.h, atol_step, st);
     const double root4 = std::sqrt(std::sqrt(std::max(err, 1e-5)));
     if (!(err <= 1.0)) {
       g.h /= std::min(10.0, root4 / 0.75);
@@ -1385,7 +1368,7 @@ void run_smooth_middle(const SmoothMiddle& m, double e, Progress& g, Outcome& ou
         g.y = interpolate(g.y, st, tr);
       } else if (tr > 0.0) {
         Step last;
-        dopri5_step(m, g.y, g.k1, g.h * tr, m.atol, last);
+        step(g.y, g.k1, g.h * tr, m.atol, last);
         g.y = last.y1;
         ++out.steps;
       }
@@ -1482,6 +1465,18 @@ Outcome solve_exact(const Coefficients& k, const State& y0, const Units& units,
   const SmoothMiddle middle(k, ExactLimits::loose_slip * scale, atol, loosen_per_slip,
                             tolerance >= kExactTolerance ? ExactLimits::middle_loosening * loosen_max : 1.0);
   double reentry_slip = 0.0;  // the general loop hands over again only once the slips exceed this
+  // The middle's step: FreeSlipStep, with the slips at the step's start as
+  // the reference directions (only their sign matters there, and no slip
+  // comes near zero within a step of the middle). A plain scalar step took
+  // 23 % fewer instructions but 8 % more time on the five rails (the stages'
+  // chains of square roots and divisions set the pace; FreeSlipStep runs
+  // them side by side).
+  auto middle_step = [&](const SlipState& y_start, const SlipState& k_start, double h_step, double atol_step,
+                         Step& out_step) {
+    sys.cushion_ref = slip_i(y_start);
+    sys.bed_ref = slip_c(y_start);
+    return free_step(y_start, k_start, h_step, atol_step, out_step);
+  };
   // After an event: modes for the contacts whose slip reached zero, and a new segment.
   auto start_segment = [&](bool cushion_zero, bool bed_zero) {
     if (cushion_zero || bed_zero) {
@@ -1506,7 +1501,7 @@ Outcome solve_exact(const Coefficients& k, const State& y0, const Units& units,
   const Recorder record_state{history, &k, &units, j};
   auto smooth_middle = [&] {
     Progress g{y, k1, p, h, compressing, work_target, false};
-    run_smooth_middle(middle, k.e, g, out, history ? &record_state : nullptr);
+    run_smooth_middle(middle, middle_step, k.e, g, out, history ? &record_state : nullptr);
     y = g.y;
     p = g.p;
     compressing = g.compressing;

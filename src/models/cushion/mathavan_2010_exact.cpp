@@ -1254,7 +1254,8 @@ struct DenseQuartic {
   double value(double t) const { return c[0] + t * (c[1] + t * (c[2] + t * (c[3] + t * c[4]))); }
   double slope(double t) const { return c[1] + t * (2.0 * c[2] + t * (3.0 * c[3] + t * 4.0 * c[4])); }
 };
-DenseQuartic dense_quartic(const SlipState& y0, const Step& st, std::initializer_list<std::pair<std::size_t, double>> terms) {
+DenseQuartic dense_quartic(const SlipState& y0, const Step& st,
+                           std::initializer_list<std::pair<std::size_t, double>> terms) {
   DenseQuartic q;
   for (const auto& [i, w] : terms) {
     const double d0 = st.dense[0][i], d1 = st.dense[1][i], d2 = st.dense[2][i], d3 = st.dense[3][i];
@@ -1293,7 +1294,9 @@ struct Recorder {
   const Coefficients* k;
   const Units* units;
   double j;  // the invariant line momentum (velocity_state)
-  void operator()(double p, const SlipState& z) const { history->push_back(sample(*k, *units, p, velocity_state(*k, z, j))); }
+  void operator()(double p, const SlipState& z) const {
+    history->push_back(sample(*k, *units, p, velocity_state(*k, z, j)));
+  }
 };
 
 // Runs the smooth middle from g (both contacts slipping, clear of zero) until

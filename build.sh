@@ -58,8 +58,9 @@ case "$mode" in
     # The sanitizer run checks memory and undefined behaviour, not numbers:
     # it leaves out the tests labelled long_numerics (tests/long_numerics.cmake:
     # long accuracy and convergence checks, which the Release suite above has
-    # run in full) and runs a tenth of the cases of the long random scans
-    # (tests/support/test_scale.hpp); every code path they take still runs in it.
+    # run in full), runs a tenth of the cases of the long random scans and
+    # fewer starts of the calibration's strike fits (tests/support/test_scale.hpp);
+    # every code path they take still runs in it.
     phase "asan tests" ctest --preset asan
     phase "fuzz build" build fuzz
     phase "fuzz run" fuzz/run.sh build/fuzz 30

@@ -116,17 +116,13 @@ PlannedShot shot_of(const Scenario& s, const Candidate& c) {
   return shot;
 }
 
-// The corrected strike played once more: the cue ball's speed, the robot's
-// form, every ball's end and the window probability. False and `why` when
-// the cue is obstructed at the corrected aim or the strike does not pot.
+// The corrected strike (its cue clear: clear_the_cue()) played once more:
+// the cue ball's speed, the robot's form, every ball's end and the window
+// probability. False and `why` when the strike does not pot.
 bool finish_shot(SearchState& st, const ShotAction& a, const Candidate& c, PlannedShot& shot, std::string& why) {
   const Scenario& s = st.s;
   const BallParameters& ball = s.settings.parameters.ball;
   const CueStrike strike = to_strike(a, ball.radius);
-  if (cue_obstructed(s.table, s.balls, s.balls[st.cue].id, strike, ball)) {
-    why = "the cue is obstructed at the corrected aim";
-    return false;
-  }
   const Trial final_trial = st.trials.play(a, c);
   if (!final_trial.success) {
     why = "the corrected strike does not pot it";
@@ -145,29 +141,31 @@ bool finish_shot(SearchState& st, const ShotAction& a, const Candidate& c, Plann
   return true;
 }
 
-// Where the aim correction turned the cue into a ball or the rail (the
-// elevation was chosen at the first aim): the lowest elevation that clears
-// the cue at the corrected aim, the aim solved again there and the windows
-// found anew. False and `why` when none clears it or no aim pots there.
+// The cue clear at the corrected aim. Where the aim correction turned it
+// into a ball or the rail (the elevation was chosen at the first aim): the
+// lowest elevation that clears it there, the aim solved again and the
+// windows found anew, and the cue checked once more at the aim that gives.
+// False and `why` when it stays obstructed or no aim pots at that elevation.
 bool clear_the_cue(SearchState& st, ShotAction& a, const Candidate& c, PlannedShot& shot, std::string& why) {
   const Scenario& s = st.s;
   const BallParameters& ball = s.settings.parameters.ball;
-  if (!cue_obstructed(s.table, s.balls, s.balls[st.cue].id, to_strike(a, ball.radius), ball)) return true;
+  const auto obstructed = [&] {
+    return cue_obstructed(s.table, s.balls, s.balls[st.cue].id, to_strike(a, ball.radius), ball);
+  };
+  if (!obstructed()) return true;
+  why = "the cue is obstructed at the corrected aim";
   const std::optional<double> elevation = clearing_elevation(s, st.cue, a.aim_deg, a.side, a.height);
-  if (!elevation || *elevation <= a.elevation_deg) {
-    why = "the cue is obstructed at the corrected aim";
-    return false;
-  }
+  if (!elevation || *elevation <= a.elevation_deg) return false;
   a.elevation_deg = *elevation;
   bool short_of_pocket = false;
   const std::optional<double> aim = st.trials.solve_aim(a, c, short_of_pocket, 8);
   if (!aim) {
-    why = "the cue is obstructed at the corrected aim, and no aim pots at the elevation that clears it";
+    why += ", and no aim pots at the elevation that clears it";
     return false;
   }
   a.aim_deg = *aim;
   find_windows(st.trials, a, c, shot);
-  return true;
+  return !obstructed();
 }
 
 // Whether a new candidate's search would take the search past its budget.

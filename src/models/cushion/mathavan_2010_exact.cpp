@@ -1179,8 +1179,10 @@ struct ExactLimits {
   // error against the solve at 1e-11 went from 4.4e-7 to 4.8e-7 of the
   // largest incoming velocity (none beyond the goal), and on two more seeds
   // of the same draw it stayed as before (7.8e-7; and 2.8e-6 on one impact
-  // of seed 30, an outlier that the solver before the smooth middle has
-  // too); the five-rail shot's sliding impact takes 9 steps instead of 10.
+  // of seed 30, an outlier that the solver before the smooth middle had
+  // too: a step past a growing slip's radius of convergence, since bounded,
+  // Exact::step_bound); the five-rail shot's sliding impact takes 9 steps
+  // instead of 10.
   // (100x took 8, worst 5.6e-7.)
   static constexpr double middle_loosening = 3.0;
 };

@@ -51,26 +51,24 @@ std::vector<GameState> random_states(GameKind kind, int count) {
 // ones a random game reaches depends on the engine's last digits; a
 // snooker nomination, after a red is potted, is rare).
 std::vector<GameState> spread_sample(const std::vector<GameState>& states, int every) {
-  const auto asks = [](const GameState& s) {
-    const LegalActions legal = legal_actions(s);
-    return std::array<bool, 5>{legal.ball_in_hand.has_value(), !legal.decisions.empty(), legal.call_required,
-                               legal.nominate_required, legal.push_out};
-  };
+  std::vector<std::array<bool, 5>> asks(states.size());
+  for (std::size_t k = 0; k < states.size(); ++k) {
+    const LegalActions legal = legal_actions(states[k]);
+    asks[k] = {legal.ball_in_hand.has_value(), !legal.decisions.empty(), legal.call_required,
+               legal.nominate_required, legal.push_out};
+  }
   std::vector<bool> taken(states.size(), false);
   std::array<bool, 5> reached{};
   for (std::size_t k = 0; k < states.size(); k += static_cast<std::size_t>(every)) {
     taken[k] = true;
-    const std::array<bool, 5> a = asks(states[k]);
-    for (std::size_t i = 0; i < a.size(); ++i) reached[i] = reached[i] || a[i];
-  }
-  for (std::size_t k = 0; k < states.size(); ++k) {
-    const std::array<bool, 5> a = asks(states[k]);
-    for (std::size_t i = 0; i < a.size(); ++i)
-      if (a[i] && !reached[i]) taken[k] = true, reached[i] = true;
+    for (std::size_t i = 0; i < reached.size(); ++i) reached[i] = reached[i] || asks[k][i];
   }
   std::vector<GameState> sample;
-  for (std::size_t k = 0; k < states.size(); ++k)
+  for (std::size_t k = 0; k < states.size(); ++k) {
+    for (std::size_t i = 0; i < reached.size(); ++i)
+      if (asks[k][i] && !reached[i]) taken[k] = true, reached[i] = true;
     if (taken[k]) sample.push_back(states[k]);
+  }
   return sample;
 }
 

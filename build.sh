@@ -1,10 +1,11 @@
 #!/usr/bin/env bash
 # cueball's one entry point for people and CI, on Debian bookworm as root:
 #   ./build.sh demo   install what is missing, build (Release), run the main job
-#   ./build.sh test   the same, then every test (Release), then the suite
+#   ./build.sh test   the same, then every test (Release), then the C++ suite
 #                     again under AddressSanitizer + UndefinedBehaviorSanitizer
-#                     (without the long pure-numerics tests; see below),
-#                     then a bounded libFuzzer run of the scenario, table and game-state readers;
+#                     (clang; without the long numerics and searches; see below),
+#                     then a bounded libFuzzer run of the scenario, table and
+#                     game-state readers against the same instrumented library;
 #                     the Release suite includes the HTML viewer's tests in
 #                     headless Chromium (viewer/, npm packages from its lockfile)
 set -euo pipefail
@@ -54,16 +55,19 @@ case "$mode" in
     phase "npm ci (viewer)" bash -c 'cd viewer && npm ci --no-audit --no-fund --loglevel=error'
     phase "release build" build release -DCUEBALL_VIEWER_TESTS=ON -DCUEBALL_BUILD_PYTHON=ON
     phase "release tests" ctest --preset release
-    phase "asan build" build asan -DCUEBALL_BUILD_PYTHON=ON
-    # The sanitizer run checks memory and undefined behaviour, not numbers:
-    # it leaves out the tests labelled long_numerics (tests/long_numerics.cmake:
-    # long accuracy and convergence checks, which the Release suite above has
-    # run in full), runs a tenth of the cases of the long random scans and
-    # fewer starts of the calibration's strike fits (tests/support/test_scale.hpp);
-    # every code path they take still runs in it.
+    # The sanitizer build: clang, the library instrumented (ASan + UBSan, and
+    # libFuzzer's coverage), linked with the test objects the Release build
+    # compiled (tests/CMakeLists.txt, CUEBALL_TEST_OBJECTS_FROM) and with the
+    # fuzz targets. It checks memory and undefined behaviour, not numbers: it
+    # leaves out the tests of tests/long_numerics.cmake (long accuracy checks
+    # and long searches, which the Release suite above has run in full), runs
+    # a tenth of the cases of the long random scans and fewer starts of the
+    # calibration's strike fits (tests/support/test_scale.hpp); every code
+    # path they take still runs in it. The Python module is not built there
+    # (its tests ran in Release; the bindings call the library checked here).
+    phase "asan build" build asan "-DCUEBALL_TEST_OBJECTS_FROM=$PWD/build/release"
     phase "asan tests" ctest --preset asan
-    phase "fuzz build" build fuzz
-    phase "fuzz run" fuzz/run.sh build/fuzz 30
+    phase "fuzz run" fuzz/run.sh build/asan 30
     ;;
   *)
     echo "usage: $0 [demo|test]" >&2

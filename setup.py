@@ -9,7 +9,11 @@ stubs) is what pip installs. Nothing is downloaded.
 
 Environment: CUEBALL_CMAKE_ARGS (extra -D options, split on whitespace),
 CMAKE_BUILD_PARALLEL_LEVEL (parallel jobs, default all cores), CMAKE_GENERATOR
-(default Ninja when ninja is on PATH).
+(default Ninja when ninja is on PATH), CUEBALL_CMAKE_BUILD_DIR (a build tree of
+this source already configured with -DCUEBALL_BUILD_PYTHON=ON, for the same
+Python as pip's, such as build/release: its module is brought up to date with
+`cmake --build` and packaged, instead of configuring and compiling a tree of
+its own; ctest python_install uses it).
 """
 
 import os
@@ -17,6 +21,7 @@ import re
 import shutil
 import subprocess
 import sys
+import sysconfig
 from pathlib import Path
 
 from setuptools import Extension, setup
@@ -46,8 +51,28 @@ class CMakeBuild(build_ext):
         cmake = shutil.which("cmake")
         if cmake is None:
             raise RuntimeError("cmake is not on PATH (Debian: apt-get install cmake)")
-        build_dir = Path(self.build_temp).resolve() / "cmake"
+        jobs = os.environ.get("CMAKE_BUILD_PARALLEL_LEVEL") or str(os.cpu_count() or 1)
         stage = Path(self.build_temp).resolve() / "stage"
+        prebuilt = os.environ.get("CUEBALL_CMAKE_BUILD_DIR")
+        if prebuilt:
+            build_dir = Path(prebuilt).resolve()
+            module_dir = stage / self.module_dir_of(build_dir)
+        else:
+            build_dir = Path(self.build_temp).resolve() / "cmake"
+            module_dir = stage
+            self.configure(cmake, build_dir)
+        run([cmake, "--build", build_dir, "--target", "cueball_python", "-j", jobs])
+        if stage.exists():
+            shutil.rmtree(stage)
+        run([cmake, "--install", build_dir, "--component", "python", "--prefix", stage])
+        suffix = sysconfig.get_config_var("EXT_SUFFIX")
+        if not list((module_dir / "cueball").glob("_cueball" + suffix)):
+            raise RuntimeError(f"cmake --install --component python put no cueball/_cueball{suffix} "
+                               f"(the extension for {sys.executable}) in {module_dir}")
+        shutil.copytree(module_dir, Path(self.build_lib), dirs_exist_ok=True)
+
+    @staticmethod
+    def configure(cmake, build_dir):
         configure = [cmake, "-S", ROOT, "-B", build_dir,
                      "-DCMAKE_BUILD_TYPE=Release",
                      "-DCUEBALL_BUILD_PYTHON=ON",
@@ -62,14 +87,17 @@ class CMakeBuild(build_ext):
             configure += ["-G", "Ninja"]
         configure += os.environ.get("CUEBALL_CMAKE_ARGS", "").split()
         run(configure)
-        jobs = os.environ.get("CMAKE_BUILD_PARALLEL_LEVEL") or str(os.cpu_count() or 1)
-        run([cmake, "--build", build_dir, "--target", "cueball_python", "-j", jobs])
-        if stage.exists():
-            shutil.rmtree(stage)
-        run([cmake, "--install", build_dir, "--component", "python", "--prefix", stage])
-        if not any(stage.iterdir()):
-            raise RuntimeError("cmake --install --component python installed nothing")
-        shutil.copytree(stage, Path(self.build_lib), dirs_exist_ok=True)
+
+    @staticmethod
+    def module_dir_of(build_dir):
+        """CUEBALL_PYTHON_INSTALL_DIR of a configured tree: where it installs the package."""
+        cache = build_dir / "CMakeCache.txt"
+        if not cache.is_file():
+            raise RuntimeError(f"CUEBALL_CMAKE_BUILD_DIR={build_dir}: no CMakeCache.txt (not a configured build tree)")
+        match = re.search(r"^CUEBALL_PYTHON_INSTALL_DIR:[A-Z]+=(.*)$", cache.read_text(encoding="utf-8"), re.M)
+        if not match:
+            raise RuntimeError(f"CUEBALL_CMAKE_BUILD_DIR={build_dir}: not configured with -DCUEBALL_BUILD_PYTHON=ON")
+        return match.group(1).strip()
 
     def get_outputs(self):
         return []

@@ -1,7 +1,7 @@
 # Runs cueball-planner-benchmark on a tiny size (TOOL, JSON set by ctest) and
 # checks that it exits 0 and that its JSON has the keys docs/planner-benchmark.md documents.
 execute_process(
-  COMMAND ${TOOL} --suite all --layouts 3 --racks 2 --repeats 200 --planner-simulations 500 --seed 1 --threads 1 --json ${JSON}
+  COMMAND ${TOOL} --suite all --layouts 3 --racks 1 --repeats 200 --planner-simulations 500 --seed 1 --threads 1 --json ${JSON}
   RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
 if(NOT rc EQUAL 0)
   message(FATAL_ERROR "cueball-planner-benchmark exited ${rc}:\n${out}\n${err}")

@@ -3,7 +3,7 @@
 #
 #   fuzz/run.sh [BUILD_DIR] [SECONDS]
 #
-# BUILD_DIR is the "fuzz" preset's build directory (default build/fuzz; the
+# BUILD_DIR is the "asan" preset's build directory (default build/asan; the
 # binaries are in BUILD_DIR/fuzz or BUILD_DIR). SECONDS (default 30) is the
 # fuzzing time in total: half for fuzz_scenario, a quarter each for
 # fuzz_table and fuzz_game_state. Each target first runs every seed in full, then fuzzes from
@@ -16,7 +16,7 @@
 # the targets side by side, each for SECONDS, when 2; default 1).
 set -euo pipefail
 here=$(cd "$(dirname "$0")" && pwd)
-build=${1:-build/fuzz}
+build=${1:-build/asan}
 seconds=${2:-30}
 [[ $seconds =~ ^[0-9]+$ ]] || { echo "usage: $0 [BUILD_DIR] [SECONDS]" >&2; exit 2; }
 
@@ -24,7 +24,7 @@ find_bin() {
   for candidate in "$build/fuzz/$1" "$build/$1"; do
     [[ -x $candidate ]] && { echo "$candidate"; return; }
   done
-  echo "fuzz/run.sh: $1 not found in $build (build the 'fuzz' preset first)" >&2
+  echo "fuzz/run.sh: $1 not found in $build (build the 'asan' preset first)" >&2
   exit 2
 }
 

@@ -8,8 +8,9 @@
 # code named beside each entry; a tenth of the cases of the long random scans
 # run there too (tests/support/test_scale.hpp).
 #
-# ctest `long_numerics_listed` fails when a name here matches no test (a
-# renamed test would silently come back into the sanitizer run).
+# ctest `long_numerics_listed` fails when a name here or in
+# CUEBALL_LONG_SEARCHES below matches no test (a renamed test would silently
+# come back into the sanitizer run).
 set(CUEBALL_LONG_NUMERICS
   # N = 1e4, 1e5, 1e6 Euler steps per case (the paper solver, the exact one:
   # every other cushion test, CliCushion.*).
@@ -31,3 +32,32 @@ set(CUEBALL_LONG_NUMERICS
   # fitted constants (the issue's goal; skipped without ../shared): 91 strike
   # fits (the other CalibrateOnTheRecordedMatch tests fit 12 shots each).
   CalibrateOnTheRecordedMatch.FittedConstantsMeetTheGoalOnTheHeldOutShots)
+
+# The long searches: planner, agent and calibration tests that repeat a
+# search many times to measure what it finds. They carry the label
+# `long_searches`, and the sanitizer run leaves them out like the above: the
+# code they run, run there by the shorter test of the same code named beside
+# each, is what the sanitizers check; what the search finds is the Release
+# suite's. Together 140 s of the sanitizer run's 840 s of tests (2026-12).
+set(CUEBALL_LONG_SEARCHES
+  # Six layouts at depth 1 against plan_shot (PositionPlay.PlaysTheCandidate-
+  # WithTheBestTwoBallScoreAndEachLeaveIsReproduced, AnExplicitNextTarget...).
+  PositionPlay.DoesAtLeastAsWellAsThePlanWithoutLookaheadAndBetterSomewhere
+  # Depth 2 over three layouts (PositionPlay.DepthTwoPrefersTheLeaveWhose-
+  # NextTwoShotsAreEasier: depth 1 and 2 on one layout).
+  PositionPlay.DepthTwoIsDepthOneWithNoBallAfterTheNextAndAtMostItWithOne
+  # A rectangle region, planned twice (BallInHand.PlacesInTheKitchenAndInTheD:
+  # the rectangle, the kitchen and the D).
+  BallInHand.StaysInTheRegionAndIsDeterministic
+  # calibrate() with held-out shots (CliCalibrate.CalibratesAndWritesAScenario-
+  # Fragment: the same, --held-out through the CLI).
+  Calibrate.HeldOutShotsAreDrawnBySeedAndOnlyEvaluated
+  # The recorded match under Mathavan 2014 (CliCalibrate.TheBallCollision-
+  # ModelIsChosenAndWritten; skipped without ../shared).
+  CalibrateOnTheRecordedMatch.MathavanBallBallContactFitsBetter
+  # The planner agent's placement in two regions (AgentLegality.EveryAgentIs-
+  # LegalInRandomStatesOfEveryDiscipline: every agent's placements).
+  PlannerAgent.BallInHandIsPlacedInsideTheRegion
+  # Both planners twice on three states (Safety.BlockedPotsGiveALegalSafety-
+  # ThatLeavesTheOpponentLessThanThePlainHit).
+  Safety.DeterministicForASeed)

@@ -168,7 +168,7 @@ TEST(ConstantsFit, SpinProfileRecoversMuSpFromEitherSide) {
   const TrackedShots shots = spin_shots(spin_truth());
   std::vector<double> fitted;
   for (const double start : {0.0045, 0.020}) {
-    if (test::kSanitized && start > 0.0085) continue;
+    if (test::sanitized() && start > 0.0085) continue;
     const CalibrationReport r = spin_fit_from(shots, start);
     fitted.push_back(r.model.settings.parameters.cloth.spin_friction);
     RecordProperty("mu_sp_from_" + std::to_string(start), std::to_string(fitted.back()));

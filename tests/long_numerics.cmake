@@ -38,10 +38,10 @@ set(CUEBALL_LONG_NUMERICS
 # `long_searches`, and the sanitizer run leaves them out like the above: the
 # code they run, run there by the shorter test of the same code named beside
 # each, is what the sanitizers check; what the search finds is the Release
-# suite's. Together 140 s of the sanitizer run's 840 s of tests (2026-12).
+# suite's. Together 210 s of the sanitizer run's 840 s of tests (2026-12).
 set(CUEBALL_LONG_SEARCHES
   # Six layouts at depth 1 against plan_shot (PositionPlay.PlaysTheCandidate-
-  # WithTheBestTwoBallScoreAndEachLeaveIsReproduced, AnExplicitNextTarget...).
+  # WithTheBestTwoBallScoreAndEachLeaveIsReproduced: depth 1 on one layout).
   PositionPlay.DoesAtLeastAsWellAsThePlanWithoutLookaheadAndBetterSomewhere
   # Depth 2 over three layouts (PositionPlay.DepthTwoPrefersTheLeaveWhose-
   # NextTwoShotsAreEasier: depth 1 and 2 on one layout).
@@ -60,4 +60,17 @@ set(CUEBALL_LONG_SEARCHES
   PlannerAgent.BallInHandIsPlacedInsideTheRegion
   # Both planners twice on three states (Safety.BlockedPotsGiveALegalSafety-
   # ThatLeavesTheOpponentLessThanThePlainHit).
-  Safety.DeterministicForASeed)
+  Safety.DeterministicForASeed
+  # The spin-profile fit from one start (CliCalibrate.CalibratesAndWrites-
+  # AScenarioFragment: calibrate() with the default spin_profile of 7).
+  ConstantsFit.SpinProfileRecoversMuSpFromEitherSide
+  # A placement scored against a hand-placed straight-in (BallInHand.Places-
+  # TheCueBallOnAFreeSpotAndTheShotFromThereDropsTheTarget).
+  BallInHand.ScoresAtLeastAsWellAsAStraightInPlacedByHand
+  # --in-hand --region kitchen (CliPlanShotPosition.InHandPlacesTheCueBallAnd-
+  # TheWrittenScenarioReplaysFromThere: --in-hand with a rectangle;
+  # BadRegionIsAUsageErrorNamingTheFlag: the names' parser).
+  CliPlanShotPosition.InHandTakesARegionByName
+  # An explicit next target (PositionPlay.NineBallsNextTargetsGivenExplicitly-
+  # AreTheDefaultPlan).
+  PositionPlay.AnExplicitNextTargetIsPlayedFor)

@@ -65,6 +65,12 @@ case "$mode" in
     # calibration's strike fits (tests/support/test_scale.hpp); every code
     # path they take still runs in it. The Python module is not built there
     # (its tests ran in Release; the bindings call the library checked here).
+    # A tree configured by the asan preset of before (GCC) cannot be
+    # reconfigured with clang in place: start it afresh.
+    if [[ -f build/asan/CMakeCache.txt ]] && ! grep -q '^CMAKE_CXX_COMPILER:[A-Z]*=.*clang' build/asan/CMakeCache.txt; then
+      echo "== build/asan was configured with another compiler: removing it"
+      rm -rf build/asan
+    fi
     phase "asan build" build asan "-DCUEBALL_TEST_OBJECTS_FROM=$PWD/build/release"
     phase "asan tests" ctest --preset asan
     phase "fuzz run" fuzz/run.sh build/asan 30

@@ -52,6 +52,7 @@ struct Options {
   int race = 0;  // 0: no races
   std::uint64_t seed = 1;
   bool noise = true;
+  double seconds = 0.0;  // AgentOptions::seconds of both agents (0: none)
   std::string json;
 };
 
@@ -152,7 +153,7 @@ std::array<double, 2> wilson(int k, int n) {
 void usage() {
   std::printf(
       "usage: cueball-agent-benchmark [--game G] [--players A,B] [--games N] [--race R] [--seed S]\n"
-      "                               [--noise tournament|none] [--json FILE]\n"
+      "                               [--noise tournament|none] [--seconds S] [--json FILE]\n"
       "Whole games between two agents: games and races won, breaks, break-and-runs, snooker breaks,\n"
       "three-cushion averages, fouls and decision times (docs/planner-benchmark.md, \"Games\").\n"
       "  --game G           %s (default nine_ball)\n"
@@ -161,6 +162,7 @@ void usage() {
       "  --race R           group the games into races to R games, [1, 1000] (default: none)\n"
       "  --seed S           first seed, [0, 1e18] (default 1)\n"
       "  --noise N          the execution noise: tournament (the default) or none\n"
+      "  --seconds S        each decision's wall-clock budget, [0, 3600] (AgentOptions::seconds; default 0: none)\n"
       "  --json FILE        also write the results as JSON\n"
       "Exit status: 0 done, 1 an engine error, 2 bad flags.\n",
       game_kind_names().c_str(), agent_names().c_str());
@@ -174,9 +176,9 @@ Options parse(int argc, char** argv) {
       usage();
       std::exit(0);
     }
-    static const char* const known[] = {"--game", "--players", "--games", "--race", "--seed", "--noise", "--json"};
+    static const char* const known[] = {"--game", "--players", "--games", "--race", "--seed", "--noise", "--seconds", "--json"};
     if (std::find_if(std::begin(known), std::end(known), [&](const char* k) { return flag == k; }) == std::end(known))
-      kFlags.bad("flag", flag, "--game, --players, --games, --race, --seed, --noise, --json, --help");
+      kFlags.bad("flag", flag, "--game, --players, --games, --race, --seed, --noise, --seconds, --json, --help");
     if (i + 1 >= argc) kFlags.bad(flag, "", "a value after the flag");
     const std::string value = argv[++i];
     if (flag == "--game") {
@@ -198,6 +200,8 @@ Options parse(int argc, char** argv) {
     } else if (flag == "--noise") {
       if (value != "tournament" && value != "none") kFlags.bad(flag, value, "tournament, none");
       o.noise = value == "tournament";
+    } else if (flag == "--seconds") {
+      o.seconds = kFlags.number(flag, value, 0.0, kMaxAgentSeconds, "[0, 3600] s a decision");
     } else {
       if (value.empty()) kFlags.bad(flag, value, "a file path");
       o.json = value;
@@ -210,10 +214,11 @@ int run(const Options& o) {
   GameConfig config = default_config(o.game);
   config.noise = o.noise ? tournament_noise() : CueStrikeNoise{};
   // The agents plan under the game's noise, tournament noise when it has none (planning_noise()).
-  const std::array<AgentOptions, 2> agents{*agent_named(o.names[0]), *agent_named(o.names[1])};
-  std::printf("cueball-agent-benchmark: %s, %s v %s, %d games from seed %llu, %s noise\n", to_string(o.game),
+  std::array<AgentOptions, 2> agents{*agent_named(o.names[0]), *agent_named(o.names[1])};
+  for (AgentOptions& a : agents) a.seconds = o.seconds;
+  std::printf("cueball-agent-benchmark: %s, %s v %s, %d games from seed %llu, %s noise%s\n", to_string(o.game),
               o.names[0].c_str(), o.names[1].c_str(), o.games, static_cast<unsigned long long>(o.seed),
-              o.noise ? "tournament" : "no");
+              o.noise ? "tournament" : "no", o.seconds > 0.0 ? fmt(", %g s a decision", o.seconds).c_str() : "");
   std::array<int, 2> won{}, fouls{};
   std::array<std::vector<int>, 2> visits;
   std::array<std::vector<double>, 2> cpu;
@@ -256,10 +261,10 @@ int run(const Options& o) {
   if (o.race > 0) std::printf("races to %d: %s %d, %s %d\n", o.race, o.names[0].c_str(), matches[0], o.names[1].c_str(), matches[1]);
   const bool pool = o.game != GameKind::snooker && o.game != GameKind::three_cushion;
   std::string json = fmt("{\n \"tool\": \"cueball-agent-benchmark\",\n \"game\": \"%s\", \"players\": [\"%s\", \"%s\"], "
-                         "\"games\": %d, \"seed\": %llu, \"noise\": \"%s\",\n \"won\": [%d, %d], \"undecided\": %d, "
+                         "\"games\": %d, \"seed\": %llu, \"noise\": \"%s\", \"seconds\": %.6g,\n \"won\": [%d, %d], \"undecided\": %d, "
                          "\"share\": %.6g, \"share_wilson_95\": [%.6g, %.6g], \"wall_seconds\": %.6g,\n",
                          to_string(o.game), o.names[0].c_str(), o.names[1].c_str(), o.games,
-                         static_cast<unsigned long long>(o.seed), o.noise ? "tournament" : "none", won[0], won[1],
+                         static_cast<unsigned long long>(o.seed), o.noise ? "tournament" : "none", o.seconds, won[0], won[1],
                          undecided, share, ci[0], ci[1], wall);
   if (o.race > 0) json += fmt(" \"race_to\": %d, \"matches\": [%d, %d],\n", o.race, matches[0], matches[1]);
   json += " \"agents\": [\n";

@@ -291,6 +291,7 @@ struct PlayFlags {
   std::string seed = "0";
   std::string noise = "none";
   std::string simulations;
+  std::string seconds;
   std::string record;
   std::string html;
   bool json = false;
@@ -310,6 +311,12 @@ std::array<AgentOptions, 2> players_flag(const PlayFlags& f, const CueStrikeNois
     players[p].noise = noise;
     if (!f.simulations.empty())
       players[p].simulations = static_cast<int>(whole("--simulations", f.simulations, 1, 1'000'000, "engine runs a decision may spend"));
+    if (!f.seconds.empty()) {
+      const double s = finite("--seconds", f.seconds, f.seconds, "[0, 3600] (seconds a decision; 0: none)");
+      if (!(s >= 0.0 && s <= kMaxAgentSeconds))
+        throw UsageError("--seconds = " + f.seconds + " is outside the allowed range [0, 3600] (seconds a decision; 0: none)");
+      players[p].seconds = s;
+    }
   }
   return players;
 }
@@ -424,6 +431,9 @@ Command add_game_command(CLI::App& app) {
   p->add_option("--noise", pf->noise, "Execution noise of every shot, also what the agents plan under: tournament, none")
       ->capture_default_str();
   p->add_option("--simulations", pf->simulations, "Engine runs an agent may spend on a decision (planner, carom_search, safety_planner)");
+  p->add_option("--seconds", pf->seconds,
+                 "Wall-clock seconds an agent may spend on a decision, [0, 3600]: planned at doubling budgets from 500 runs up to "
+                 "--simulations (or the agent's own) while the next round fits (AgentOptions::seconds); 0: none");
   p->add_option("--record", pf->record, "Write the game record here (game replay re-plays it)");
   p->add_option("--html", pf->html, "Write the first game as a self-contained HTML viewer page (every shot, its ruling) to this file");
   p->add_flag("--json", pf->json, "Print one JSON object: the games and the totals");

@@ -193,6 +193,10 @@ TEST(CliGame, PlayPrintsEveryGameAndRecordsWhatReplayReproduces) {
   expect_usage_error({"game", "play", "--game", "nine_ball", "--players", "random,random", "--simulations", "2.5"},
                      "--simulations");
   expect_usage_error({"game", "play", "--game", "nine_ball", "--players", "random,random", "--noise", "{}"}, "--noise");
+  expect_usage_error({"game", "play", "--game", "nine_ball", "--players", "random,random", "--seconds", "-1"},
+                     "--seconds");
+  expect_usage_error({"game", "play", "--game", "nine_ball", "--players", "random,random", "--seconds", "1h"},
+                     "--seconds");
   expect_usage_error({"game", "replay", dir.write("bad.json", R"({"games": []})")}, "record.format");
 }
 

@@ -2,11 +2,14 @@
 // crafted states (ball in hand anywhere and in the kitchen, a push-out
 // decision, a call, a nomination), deterministic for a seed; nothing pots:
 // a plain hit (pushed out when it may be); the next targets follow the
-// rules; and a planner-vs-ghost-ball 9-ball game ends. Small budgets: the
-// file runs in a few seconds in Release.
+// rules; a planner-vs-ghost-ball 9-ball game ends; a decision under a
+// seconds budget plays the round it reached, exactly as that budget without
+// one. Small budgets: the file runs in a few seconds in Release.
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <limits>
+#include <string>
 
 #include "cueball/agents/agent.hpp"
 #include "cueball/games/break_shot.hpp"
@@ -255,6 +258,64 @@ TEST(PlannerAgent, PlaysANineBallGameAgainstTheGhostBallToTheEnd) {
   EXPECT_TRUE(s.over);
   EXPECT_GT(planner_shots, 0);
   EXPECT_LE(s.shots, 60);
+}
+
+// AgentOptions::seconds (agent.cpp, choose_in_time()): the rounds' options.
+TEST(AgentSeconds, RoundOptionsScaleThePositionBudgetAndDropTheSeconds) {
+  AgentOptions o = strongest_agent();  // 4,000 runs a plan, 1,000 a next-shot plan
+  o.seconds = 0.5;
+  const AgentOptions first = timed_round_options(o, 500);
+  EXPECT_EQ(first.simulations, 500);
+  EXPECT_EQ(first.position_simulations, kMinPlanSimulations);  // 125 scaled, raised to the floor
+  EXPECT_EQ(first.seconds, 0.0);
+  EXPECT_EQ(timed_round_options(o, 2000).position_simulations, kMinPlanSimulations);
+  EXPECT_EQ(timed_round_options(o, 3000).position_simulations, 750);
+  EXPECT_EQ(timed_round_options(o, 4000).position_simulations, 1000);
+  AgentOptions plain = cheap();
+  plain.simulations = 2000;
+  EXPECT_EQ(timed_round_options(plain, 1000).position_simulations, 0);  // position play stays off
+}
+
+TEST(AgentSeconds, ATinyBudgetPlaysTheFirstRoundAsThatBudgetWould) {
+  const GameState s = in_play({{0, {0.62, 0.62}}, {1, {0.45, 0.45}}, {2, {1.8, 0.9}}, {9, {2.2, 0.3}}});
+  AgentOptions o = cheap();
+  o.simulations = 4000;
+  o.seconds = 1e-9;  // no second round fits
+  const AgentChoice timed = choose(o, s, 5);
+  const AgentChoice first = choose(timed_round_options(o, kFirstTimedRoundSimulations), s, 5);
+  EXPECT_EQ(timed.action.strike, first.action.strike);
+  EXPECT_NE(timed.reasoning.summary.find("seconds 1e-09: 1 round in"), std::string::npos) << timed.reasoning.summary;
+  EXPECT_NE(timed.reasoning.summary.find("played at 500 runs"), std::string::npos) << timed.reasoning.summary;
+  EXPECT_EQ(timed.reasoning.summary.rfind(first.reasoning.summary, 0), 0u) << timed.reasoning.summary;
+}
+
+TEST(AgentSeconds, RoomForEveryRoundPlaysAtSimulationsAsWithoutSeconds) {
+  const GameState s = in_play({{0, {0.62, 0.62}}, {1, {0.45, 0.45}}, {2, {1.8, 0.9}}, {9, {2.2, 0.3}}});
+  AgentOptions o = cheap();
+  o.simulations = 1000;  // the cap: rounds at 500, then 1,000
+  o.seconds = kMaxAgentSeconds;
+  const AgentChoice timed = choose(o, s, 7);
+  AgentOptions untimed = o;
+  untimed.seconds = 0.0;
+  const AgentChoice plain = choose(untimed, s, 7);
+  EXPECT_EQ(timed.action.strike, plain.action.strike);
+  EXPECT_NE(timed.reasoning.summary.find(": 2 rounds in"), std::string::npos) << timed.reasoning.summary;
+  EXPECT_NE(timed.reasoning.summary.find("played at 1000 runs"), std::string::npos) << timed.reasoning.summary;
+  // An agent that searches nothing ignores the budget.
+  AgentOptions ghost;
+  ghost.kind = AgentKind::ghost_ball;
+  ghost.seconds = 1.0;
+  EXPECT_EQ(choose(ghost, s, 7).reasoning.summary, "");
+}
+
+TEST(AgentSeconds, OutOfRangeIsRefusedNamingTheField) {
+  const GameState s = in_play({{0, {0.62, 0.62}}, {1, {0.45, 0.45}}});
+  for (const double bad : {-1.0, kMaxAgentSeconds * 2, std::numeric_limits<double>::quiet_NaN(),
+                           std::numeric_limits<double>::infinity()}) {
+    AgentOptions o = cheap();
+    o.seconds = bad;
+    test::expect_invalid("seconds", [&] { (void)choose(o, s, 1); });
+  }
 }
 
 }  // namespace

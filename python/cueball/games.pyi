@@ -151,9 +151,14 @@ def play(state: GameState, action: Action, seed: int = 0) -> GameStep:
     """Plays the action; step.next is the state after it."""
 
 def choose_action(
-    state: GameState, agent: str = "random", seed: int = 0, simulations: int | None = None, noise: str | dict[str, float] | None = None
+    state: GameState,
+    agent: str = "random",
+    seed: int = 0,
+    simulations: int | None = None,
+    noise: str | dict[str, float] | None = None,
+    seconds: float | None = None,
 ) -> Action:
-    """The agent's action for the player to act (always legal)."""
+    """The agent's action for the player to act (always legal); seconds: a wall-clock budget a decision."""
 
 class GameRecord:
     @property
@@ -176,6 +181,7 @@ def play_game(
     seed: int = 0,
     simulations: int | None = None,
     noise: str | dict[str, float] | None = None,
+    seconds: float | None = None,
 ) -> GameRecord:
     """Plays one game between two agents and records it."""
 

@@ -50,13 +50,15 @@ double radius_of(const GameConfig& c) { return cueball::preset_table(c.table).ba
 
 // An agent by name (agents/agent.hpp, agent_named()), its engine runs a
 // decision when given.
-cueball::AgentOptions agent_options(const std::string& name, const std::string& field, std::optional<int> simulations) {
+cueball::AgentOptions agent_options(const std::string& name, const std::string& field, std::optional<int> simulations,
+                                    std::optional<double> seconds) {
   const std::optional<cueball::AgentOptions> agent = cueball::agent_named(name);
   if (!agent)
     throw cueball::InvalidArgument(field, field + " = " + cueball::quote_input(name) + " is not an agent; allowed: " +
                                               cueball::agent_names());
   cueball::AgentOptions o = *agent;
   if (simulations) o.simulations = *simulations;
+  if (seconds) o.seconds = *seconds;
   return o;
 }
 
@@ -356,18 +358,21 @@ void bind_games(py::module_& parent) {
   m.def(
       "choose_action",
       [](const GameState& s, const std::string& agent, std::uint64_t seed, std::optional<int> simulations,
-         const py::object& noise) {
-        cueball::AgentOptions o = agent_options(agent, "agent", simulations);
+         const py::object& noise, std::optional<double> seconds) {
+        cueball::AgentOptions o = agent_options(agent, "agent", simulations, seconds);
         o.noise = noise_argument(noise, s.table.table.ball.radius);
         if (!o.noise) o.noise = s.config.noise;
         py::gil_scoped_release release;
         return cueball::choose_action(o, s, seed);
       },
       "state"_a, "agent"_a = "random", "seed"_a = 0, "simulations"_a = py::none(), "noise"_a = py::none(),
+      "seconds"_a = py::none(),
       "The agent's action for the player to act (always legal). agent: 'random', 'ghost_ball',\n"
       "'planner', 'carom_search', 'safety_planner' or 'strongest' (the safety planner with position play);\n"
       "simulations: engine runs a decision (default: the agent's own, 2000; strongest 4000); noise: what the\n"
-      "agent plans under (default: the game's).");
+      "agent plans under (default: the game's); seconds: a wall-clock budget a decision, [0, 3600], planned\n"
+      "at doubling budgets from 500 runs up to simulations while the next round fits (not reproducible\n"
+      "across machines; the same call with the runs it played at and no seconds is).");
 
   // ---------------------------------------------------------------- records
   py::class_<GameRecord> record_class(m, "GameRecord",
@@ -416,22 +421,23 @@ void bind_games(py::module_& parent) {
   m.def(
       "play_game",
       [](const py::object& config, const std::array<std::string, 2>& players, std::uint64_t seed,
-         std::optional<int> simulations, const py::object& noise) {
+         std::optional<int> simulations, const py::object& noise, std::optional<double> seconds) {
         GameConfig c = config_argument(config);
         if (const auto n = noise_argument(noise, radius_of(c))) c.noise = *n;
         std::array<cueball::AgentOptions, 2> agents;
         for (std::size_t p = 0; p < 2; ++p) {
-          agents[p] = agent_options(players[p], "players[" + std::to_string(p) + "]", simulations);
+          agents[p] = agent_options(players[p], "players[" + std::to_string(p) + "]", simulations, seconds);
           agents[p].noise = c.noise;
         }
         py::gil_scoped_release release;
         return cueball::play_game(c, agents, seed);
       },
       "config"_a, "players"_a = std::array<std::string, 2>{"random", "random"}, "seed"_a = 0, "simulations"_a = py::none(),
-      "noise"_a = py::none(),
+      "noise"_a = py::none(), "seconds"_a = py::none(),
       "Plays one game between two agents (players[0] breaks) and records it, as `cueball game play`\n"
       "does with --seed seed: the same seeds, the same game. noise: the game's execution noise\n"
-      "(default: the config's), also what the agents plan under.");
+      "(default: the config's), also what the agents plan under; seconds: each decision's wall-clock\n"
+      "budget (choose_action).");
 
   m.def(
       "records_to_json",

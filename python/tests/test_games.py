@@ -108,6 +108,17 @@ class GamesTest(unittest.TestCase):
             games.choose_action(s, agent="shark")
         self.assertEqual(e.exception.field, "agent")
 
+    def test_a_decision_under_a_seconds_budget(self):
+        game = games.play_game("nine_ball", ("planner", "ghost_ball"), seed=3, simulations=500, noise="tournament")
+        after_break = game.steps[0]["state"]
+        self.assertFalse(after_break.over)
+        # No second round fits in 1e-9 s: the first round's 500 runs are played, as simulations=500 plays.
+        timed = games.choose_action(after_break, agent="planner", seed=4, simulations=1000, seconds=1e-9)
+        self.assertEqual(timed, games.choose_action(after_break, agent="planner", seed=4, simulations=500))
+        with self.assertRaises(cueball.InvalidArgument) as e:
+            games.choose_action(after_break, agent="planner", seconds=-1.0)
+        self.assertEqual(e.exception.field, "seconds")
+
     def test_the_planner_agents_reasoning_is_in_the_record(self):
         game = games.play_game("nine_ball", ("planner", "ghost_ball"), seed=3, simulations=500, noise="tournament")
         first = game.steps[0]["reasoning"]

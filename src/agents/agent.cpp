@@ -6,7 +6,9 @@
 
 #include <algorithm>
 #include <array>
+#include <chrono>
 #include <cmath>
+#include <cstdio>
 #include <limits>
 #include <numbers>
 
@@ -66,6 +68,8 @@ void validate(const AgentOptions& options) {
   if (options.position_depth < 1 || options.position_depth > kMaxPositionDepth)
     throw InvalidArgument("position_depth", std::to_string(options.position_depth) + " is out of range [1, " +
                                                 std::to_string(kMaxPositionDepth) + "]");
+  if (!(options.seconds >= 0.0 && options.seconds <= kMaxAgentSeconds))
+    throw InvalidArgument("seconds", std::to_string(options.seconds) + " is out of range [0, 3600] (0: no time budget)");
   if (options.noise) validate(*options.noise);
   if (options.kinds.empty()) throw InvalidArgument("kinds", "is empty; allowed: one or more of " + shot_kind_names());
   const auto no_repeat = [](const std::vector<ShotKind>& kinds, const char* field) {
@@ -103,9 +107,22 @@ Reasoning reasoning_of(const CaromSearchResult& c) {
 
 }  // namespace
 
-AgentChoice choose(const AgentOptions& options, const GameState& state, std::uint64_t seed) {
-  validate(options);
-  if (state.over) throw InvalidArgument("state", "the game is over (" + state.end_reason + ")");
+AgentOptions timed_round_options(const AgentOptions& options, int simulations) {
+  AgentOptions r = options;
+  r.seconds = 0.0;
+  r.simulations = simulations;
+  if (options.position_simulations > 0) {
+    const long long scaled =
+        static_cast<long long>(options.position_simulations) * simulations / std::max(options.simulations, 1);
+    r.position_simulations = static_cast<int>(std::clamp<long long>(
+        scaled, std::min(kMinPlanSimulations, options.position_simulations), options.position_simulations));
+  }
+  return r;
+}
+
+namespace {
+
+AgentChoice choose_at_budget(const AgentOptions& options, const GameState& state, std::uint64_t seed) {
   switch (options.kind) {
     case AgentKind::random: return {random_action(state, seed), {}};          // nothing weighed
     case AgentKind::ghost_ball: return {ghost_ball_action(state, seed), {}};  // a rule, nothing weighed
@@ -125,6 +142,44 @@ AgentChoice choose(const AgentOptions& options, const GameState& state, std::uin
     }
   }
   throw InvalidArgument("kind", "unknown agent; allowed: " + agent_kind_names());
+}
+
+// AgentOptions::seconds: rounds at doubling budgets while the last round's
+// time, scaled to the next round's runs (a plan's time grows with its runs),
+// says the next one ends within the budget.
+AgentChoice choose_in_time(const AgentOptions& options, const GameState& state, std::uint64_t seed) {
+  using Clock = std::chrono::steady_clock;
+  const auto seconds_since = [](Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); };
+  const Clock::time_point start = Clock::now();
+  int budget = std::min(options.simulations, kFirstTimedRoundSimulations);
+  int rounds = 0;
+  AgentChoice choice;
+  for (;;) {
+    const Clock::time_point round_start = Clock::now();
+    choice = choose_at_budget(timed_round_options(options, budget), state, seed);
+    ++rounds;
+    const double took = seconds_since(round_start);
+    if (budget >= options.simulations) break;
+    const int next = static_cast<int>(std::min<long long>(2LL * budget, options.simulations));
+    if (seconds_since(start) + took * next / budget > options.seconds) break;
+    budget = next;
+  }
+  char tail[160];
+  std::snprintf(tail, sizeof tail, "seconds %g: %d round%s in %.3g s, played at %d runs", options.seconds, rounds,
+                rounds == 1 ? "" : "s", seconds_since(start), budget);
+  choice.reasoning.summary += (choice.reasoning.summary.empty() ? "" : "; ") + std::string(tail);
+  return choice;
+}
+
+}  // namespace
+
+AgentChoice choose(const AgentOptions& options, const GameState& state, std::uint64_t seed) {
+  validate(options);
+  if (state.over) throw InvalidArgument("state", "the game is over (" + state.end_reason + ")");
+  const bool searches = options.kind == AgentKind::planner || options.kind == AgentKind::safety_planner ||
+                        options.kind == AgentKind::carom_search;
+  if (options.seconds > 0.0 && searches) return choose_in_time(options, state, seed);
+  return choose_at_budget(options, state, seed);
 }
 
 Action choose_action(const AgentOptions& options, const GameState& state, std::uint64_t seed) {

@@ -61,6 +61,23 @@ struct AgentOptions {
   /// for position or in hand spends more, position_play.hpp and
   /// ball_in_hand.hpp say how much), or of a decision (carom_search).
   int simulations = 2000;
+  /// A wall-clock budget of a decision, s, [0, 3600]; 0 (the default):
+  /// `simulations` alone sets the effort. Otherwise (planner,
+  /// safety_planner, carom_search) the decision is planned in rounds at
+  /// doubling budgets, kFirstTimedRoundSimulations runs a plan (or
+  /// `simulations` when smaller), then twice that, ... up to `simulations`
+  /// (position_simulations scaled with them, never below
+  /// kMinPlanSimulations), each round only while the one before it says,
+  /// by its own time scaled to the next round's runs, that it will end
+  /// within `seconds` of the decision's start; the last round's action is
+  /// played. The first round always runs, so a decision can take longer
+  /// than `seconds` when even that round does not fit. Budget in seconds
+  /// or in runs, whichever runs out first (issue 27). The rounds played
+  /// depend on the machine's speed: the reasoning's summary ends with them
+  /// ("seconds 0.5: 3 rounds in 0.41 s, played at 2000 runs"), and the same
+  /// options with those `simulations` and no `seconds` replay the decision
+  /// exactly (timed_round_options()).
+  double seconds = 0.0;
   /// Engine runs of each next-shot plan in position play (planner; 0: no
   /// position play); carom_search: of the next point's search on each
   /// finalist's leave, at most `simulations` (src/agents/carom_search.cpp).
@@ -85,6 +102,16 @@ struct AgentOptions {
 
 /// Throws InvalidArgument naming the field ("simulations", ...).
 void validate(const AgentOptions& options);
+
+/// AgentOptions::seconds: the runs a plan of the first timed round, and the
+/// longest budget a decision may have.
+inline constexpr int kFirstTimedRoundSimulations = 500;
+inline constexpr double kMaxAgentSeconds = 3600.0;
+/// The options of a timed decision's round at `simulations` runs a plan:
+/// `options` with those simulations, position_simulations scaled by
+/// simulations / options.simulations (at least kMinPlanSimulations when
+/// position play is on, at most position_simulations), and seconds 0.
+AgentOptions timed_round_options(const AgentOptions& options, int simulations);
 
 /// The strongest pool player of the agents (issue 27), and what the
 /// planner benchmark's run-out suite measures by default: the safety

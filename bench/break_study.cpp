@@ -9,7 +9,8 @@
 // with tournament_noise() (shot_planner.hpp) drawn from (S, k). Per cell it
 // reports, each with its binomial standard error sqrt(p (1 - p) / n):
 //   pot    an object ball pocketed (any pocket; fouls included)
-//   legal  WPA 2.3: the 1 first, no scratch, and a ball pocketed or at least
+//   legal  WPA 2.3 (10-ball 9.3): the 1 first (8-ball, 3.3: any ball), no scratch,
+//          and a ball pocketed or at least
 //          four object balls to a rail (cushion contacts; jaw contacts are
 //          not in simulate_many's counts, so `legal` is a slight undercount)
 //   made   legal and a ball pocketed: the pro statistic's numerator
@@ -27,7 +28,8 @@
 // spot), final / final9 (the recommended break at 11 / 9 m/s), extras
 // (tighter corner pockets, a raised cue), cut9 (the side cut break with the
 // 9 on the spot), side (the side break, frozen and on the default gaps, and
-// its mirror image). Output: one line per cell. docs/break.md has the results.
+// its mirror image), disciplines (8-ball and 10-ball: the side break and its
+// neighbours). Output: one line per cell. docs/break.md has the results.
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -50,6 +52,7 @@ using namespace cueball;
 namespace {
 
 struct Cell {
+  int game = 9;                 // the rack: 9-ball, 8-ball (15 balls) or 10-ball
   const char* spot = "centre";  // centre, side (near the y = 0 rail), side_top (near y = W)
   double rail_gap = 0.10;       // side spots: centre's distance from the cushion nose line, m
   double cut = 0.0;             // impact offset on the 1, fraction of 2R, + towards the spot's side
@@ -93,6 +96,13 @@ Vec2 cue_spot(const Cell& c, const Table& t) {
   return {head_string_x(t) - 2.0 * t.ball.radius, 0.5 * t.width};  // rack.hpp's spot
 }
 
+// The cell's rack (rack.hpp): WPA 9-ball, 8-ball or 10-ball.
+std::vector<PlacedBall> rack_of(const Cell& c, const Table& t, const RackOptions& options = {}) {
+  if (c.game == 8) return rack_eight_ball(t, options);
+  if (c.game == 10) return rack_ten_ball(t, options);
+  return rack_nine_ball(t, options);
+}
+
 // Step 1: the table, the frozen rack as the scenario's balls (its order
 // reversed when asked), the model and the noise.
 void set_scenario(CellRun& run) {
@@ -103,7 +113,7 @@ void set_scenario(CellRun& run) {
   run.scenario.settings.parameters = default_parameters(run.table);
   run.scenario.settings.ball_collision_model = run.cell.model;
   run.scenario.settings.ball_collision = default_ball_collision(run.cell.model);
-  for (const PlacedBall& p : rack_nine_ball(run.table)) {
+  for (const PlacedBall& p : rack_of(run.cell, run.table)) {
     SimulationBall b;
     b.id = p.id;
     b.name = p.name;
@@ -130,7 +140,7 @@ void set_breaks(CellRun& run) {
     RackOptions rack;
     rack.gap_sigma = run.cell.gap_sigma;
     rack.seed = run.options.seed + static_cast<std::uint64_t>(k);
-    const std::vector<PlacedBall> placed = rack_nine_ball(run.table, rack);
+    const std::vector<PlacedBall> placed = rack_of(run.cell, run.table, rack);
     Vec2 one;
     for (std::size_t j = 0; j < balls; ++j) {
       const int id = run.scenario.balls[j].id;
@@ -182,13 +192,15 @@ void count(CellRun& run) {
         continue;
       }
       if (down) ++pocketed;
-      if (down && (id == 4 || id == 5)) {
+      if (down && run.cell.game == 9 && (id == 4 || id == 5)) {
         const int p = run.result.pocket[e];
         if (p == 2 || p == 3) wing = true;  // the foot corners (table.hpp's pocket order)
       }
       if (run.result.cushions[e] > 0) ++to_rail;
     }
-    const bool first_ok = run.result.first_contact[static_cast<std::size_t>(k)] == 1;
+    // 9-ball (WPA 2.3) and 10-ball (9.3): the 1 first; 8-ball (3.3): any ball first.
+    const bool first_ok = run.cell.game == 8 ? run.result.first_contact[static_cast<std::size_t>(k)] > 0
+                                             : run.result.first_contact[static_cast<std::size_t>(k)] == 1;
     const bool legal = first_ok && !scratch && (pocketed > 0 || to_rail >= 4);
     t.pot += pocketed > 0;
     t.balls += pocketed;
@@ -210,9 +222,9 @@ std::string share(int k, int n) {
 void report(const CellRun& run) {
   const Cell& c = run.cell;
   const Tally& t = run.tally;
-  std::printf("%smouth=%.4f %-8s rail=%.2f cut=%+.2f v=%4.1f h=%+.2f el=%2.0f sigma=%.5f %s %s | pot %s legal %s made %s made|legal %s "
+  std::printf("%d-ball %smouth=%.4f %-8s rail=%.2f cut=%+.2f v=%4.1f h=%+.2f el=%2.0f sigma=%.5f %s %s | pot %s legal %s made %s made|legal %s "
               "scratch %s wing %s balls %.3f | %.0f/s\n",
-              c.nine_on_spot ? "9spot " : "", c.corner_mouth, c.spot, c.rail_gap, c.cut, c.speed, c.height, c.elevation, c.gap_sigma,
+              c.game, c.nine_on_spot ? "9spot " : "", c.corner_mouth, c.spot, c.rail_gap, c.cut, c.speed, c.height, c.elevation, c.gap_sigma,
               c.model == BallCollisionModel::coulomb_impulse ? "coulomb" : "mathavan",
               c.reverse_order ? "rev" : "fwd", share(t.pot, t.n).c_str(), share(t.legal, t.n).c_str(),
               share(t.made, t.n).c_str(), share(t.made, t.legal).c_str(), share(t.scratch, t.n).c_str(),
@@ -379,6 +391,30 @@ void suite_cut9(const Options& o) {
     }
 }
 
+// 8-ball and 10-ball (issue 27, item 4): the recommended side break and its
+// neighbours (the spot's distance from the rail, the rack's own spot on the
+// long string, a cut on the apex ball, the speed), frozen and on the games'
+// default gaps (new_game's kDefaultRackGapSigma).
+void suite_disciplines(const Options& o) {
+  for (int game : {8, 10})
+    for (double sigma : {0.0, 0.000025}) {
+      auto run = [&](const char* spot, double rail, double cut, double v) {
+        Cell c;
+        c.game = game;
+        c.spot = spot;
+        c.rail_gap = rail;
+        c.cut = cut;
+        c.speed = v;
+        c.gap_sigma = sigma;
+        run_cell(c, o);
+      };
+      run("centre", 0.10, 0.0, 11.0);
+      for (double rail : {0.05, 0.10, 0.15, 0.20, 0.25, 0.30}) run("side", rail, 0.0, 11.0);
+      for (double cut : {0.15, 0.3}) run("side", 0.10, cut, 11.0);
+      for (double v : {9.0, 10.0, 12.0}) run("side", 0.10, 0.0, v);
+    }
+}
+
 // Tighter corner pockets (pro events: 4-4.25 in) and a raised cue, on the
 // recommended break.
 void suite_extras(const Options& o) {
@@ -400,7 +436,7 @@ void suite_extras(const Options& o) {
 
 int usage(const char* why) {
   std::fprintf(stderr, "cueball-break-study: %s\nusage: cueball-break-study [--shots N] [--threads T] [--seed S] "
-                       "[--suite default|grid|order|model|rail|sigma|centre|spot|final|final9|extras|cut9|side]\n", why);
+                       "[--suite default|grid|order|model|rail|sigma|centre|spot|final|final9|extras|cut9|side|disciplines]\n", why);
   return 2;
 }
 
@@ -433,6 +469,7 @@ int main(int argc, char** argv) {
   else if (o.suite == "extras") suite_extras(o);
   else if (o.suite == "side") suite_side(o);
   else if (o.suite == "cut9") suite_cut9(o);
-  else return usage("unknown --suite (default, grid, order, model, rail, sigma, centre, spot, final, final9, extras, cut9)");
+  else if (o.suite == "disciplines") suite_disciplines(o);
+  else return usage("unknown --suite (default, grid, order, model, rail, sigma, centre, spot, final, final9, extras, cut9, side, disciplines)");
   return 0;
 }

@@ -122,32 +122,32 @@ struct ClusterSolve {
     return std::sqrt(4.0 * 0.4 * f * x);
   }
 
-  void accelerate() {
-    update_forces();
+  // Half a step of (C3) for the velocities (the impulses: step()).
+  void kick_velocities(double h) {
+    for (std::size_t r = 0; r < v.size(); ++r) v[r] = v[r] + h * acceleration[r];
+  }
+
+  // One velocity Verlet step of (C1)-(C3): a half kick of the velocities by
+  // the forces at the step's start, the approaches moved by the whole step,
+  // the forces and accelerations there, the second half kick. Each contact's
+  // work is done in one pass (its impulse gets both half kicks, in order),
+  // the accelerations summed in the contacts' canonical order.
+  void step() {
+    const double h = 0.5 * dt;
+    kick_velocities(h);
     std::fill(acceleration.begin(), acceleration.end(), Vec2{});
-    for (const Spring& s : springs) {
+    for (Spring& s : springs) {
+      if (s.force != 0.0) s.impulse += h * s.force;
+      s.approach += dt * closing(s);
+      s.deepest = std::max(s.deepest, s.approach);
+      s.force = force(s);
+      if (s.force == 0.0) continue;  // apart or unloaded: no acceleration, no impulse
       const Vec2 f = s.force * s.normal;
       acceleration[s.a] = acceleration[s.a] - f;
       acceleration[s.b] = acceleration[s.b] + f;
+      s.impulse += h * s.force;
     }
-  }
-
-  // Half a step of (C3), the impulses it carries counted.
-  void kick() {
-    const double h = 0.5 * dt;
-    for (std::size_t r = 0; r < v.size(); ++r) v[r] = v[r] + h * acceleration[r];
-    for (Spring& s : springs) s.impulse += h * s.force;
-  }
-
-  // One velocity Verlet step of (C1)-(C3).
-  void step() {
-    kick();
-    for (Spring& s : springs) {
-      s.approach += dt * closing(s);
-      s.deepest = std::max(s.deepest, s.approach);
-    }
-    accelerate();
-    kick();
+    kick_velocities(h);
     ++steps;
   }
 

@@ -308,6 +308,15 @@ TEST(AgentSeconds, RoomForEveryRoundPlaysAtSimulationsAsWithoutSeconds) {
   EXPECT_EQ(choose(ghost, s, 7).reasoning.summary, "");
 }
 
+TEST(AgentSeconds, TheBreakIsTheRecommendedOneWhateverTheBudget) {
+  const GameState s = new_game(default_config(GameKind::nine_ball));
+  AgentOptions o = cheap();
+  o.seconds = 0.5;
+  const AgentChoice c = choose(o, s, 3);
+  EXPECT_EQ(c.reasoning.summary, "break");  // no rounds
+  EXPECT_EQ(c.action.strike, recommended_break(s).strike);
+}
+
 TEST(AgentSeconds, OutOfRangeIsRefusedNamingTheField) {
   const GameState s = in_play({{0, {0.62, 0.62}}, {1, {0.45, 0.45}}});
   for (const double bad : {-1.0, kMaxAgentSeconds * 2, std::numeric_limits<double>::quiet_NaN(),

@@ -144,6 +144,16 @@ AgentChoice choose_at_budget(const AgentOptions& options, const GameState& state
   throw InvalidArgument("kind", "unknown agent; allowed: " + agent_kind_names());
 }
 
+// Whether the agent breaks with break_action() (planner_agent.cpp: a pool
+// or snooker break with no call or nomination due), which no budget changes.
+bool plays_fixed_break(const AgentOptions& options, const GameState& state) {
+  if (state.phase != GamePhase::break_shot || options.kind == AgentKind::carom_search ||
+      state.config.kind == GameKind::three_cushion)
+    return false;
+  const LegalActions legal = legal_actions(state);
+  return legal.shoot && !legal.call_required && !legal.nominate_required;
+}
+
 // AgentOptions::seconds: rounds at doubling budgets while the last round's
 // time, scaled to the next round's runs (a plan's time grows with its runs),
 // says the next one ends within the budget.
@@ -178,7 +188,7 @@ AgentChoice choose(const AgentOptions& options, const GameState& state, std::uin
   if (state.over) throw InvalidArgument("state", "the game is over (" + state.end_reason + ")");
   const bool searches = options.kind == AgentKind::planner || options.kind == AgentKind::safety_planner ||
                         options.kind == AgentKind::carom_search;
-  if (options.seconds > 0.0 && searches) return choose_in_time(options, state, seed);
+  if (options.seconds > 0.0 && searches && !plays_fixed_break(options, state)) return choose_in_time(options, state, seed);
   return choose_at_budget(options, state, seed);
 }
 

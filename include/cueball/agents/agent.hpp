@@ -76,7 +76,7 @@ struct AgentOptions {
   /// depend on the machine's speed: the reasoning's summary ends with them
   /// ("seconds 0.5: 3 rounds in 0.41 s, played at 2000 runs"), and the same
   /// options with those `simulations` and no `seconds` replay the decision
-  /// exactly (timed_round_options()).
+  /// exactly (timed_round_options()). A break is played as without it.
   double seconds = 0.0;
   /// Engine runs of each next-shot plan in position play (planner; 0: no
   /// position play); carom_search: of the next point's search on each

@@ -549,8 +549,16 @@ std::uint64_t play_seed(std::uint64_t stream, std::uint64_t shot) {
 }
 
 // The agent's choice: the planner's or the safety planner's.
+// Under --seconds, planned in rounds (agents/agent.hpp plan_in_time()), the
+// last round's choice played.
 PlannerChoice agent_choice(const AgentOptions& agent, const GameState& g, std::uint64_t seed) {
-  return agent.kind == AgentKind::safety_planner ? safety_planner_choice(agent, g, seed) : planner_choice(agent, g, seed);
+  const auto plan = [&](const AgentOptions& a) {
+    return a.kind == AgentKind::safety_planner ? safety_planner_choice(a, g, seed) : planner_choice(a, g, seed);
+  };
+  if (!(agent.seconds > 0.0)) return plan(agent);
+  PlannerChoice c;
+  (void)plan_in_time(agent, [&](const AgentOptions& round) { c = plan(round); });
+  return c;
 }
 
 RackRecord run_rack(const Setup& st, std::uint64_t seed, const AgentOptions& agent, bool in_hand_planner,
@@ -668,6 +676,7 @@ struct Options {
   std::optional<int> position_simulations;  // --position
   std::optional<int> noisy_leaves;          // --noisy-leaves
   std::optional<int> depth;                 // --depth
+  double seconds = 0.0;                     // --seconds: AgentOptions::seconds (0: none)
   bool in_hand_planner = true;   // the run-outs' first cue ball placed by plan_ball_in_hand, not by the rule
   bool real_break = false;       // --break recommended: the game's own break, the run-out only after a made one
   std::optional<std::vector<ShotKind>> kinds;           // the run-outs' shot kinds
@@ -680,6 +689,7 @@ struct Options {
     if (position_simulations) a.position_simulations = *position_simulations;
     if (noisy_leaves) a.position_noisy_leaves = *noisy_leaves;
     if (depth) a.position_depth = *depth;
+    a.seconds = seconds;
     if (kinds) a.kinds = *kinds;
     if (fallback_kinds) a.fallback_kinds = *fallback_kinds;
     return a;
@@ -695,7 +705,7 @@ void usage() {
       "                                 [--seed S] [--planner-simulations N] [--position N] [--threads T]\n"
       "                                 [--in-hand rule|planner] [--break rule|recommended] [--kinds LIST]\n"
       "                                 [--fallback-kinds LIST] [--agent NAME] [--noisy-leaves N]\n"
-      "                                 [--depth D]\n"
+      "                                 [--depth D] [--seconds S]\n"
       "                                 [--json FILE] [--layouts-out DIR]\n"
       "The shot planner against a ghost-ball baseline and an exhaustive grid search (docs/planner-benchmark.md).\n"
       "  --suite S                single, runout or all (default all)\n"
@@ -712,6 +722,8 @@ void usage() {
       "  --noisy-leaves N         position play: noisy outcomes of each finalist whose leaves are scored,\n"
       "                           [0, %d] (default %d; 0: the noise-free leave alone)\n"
       "  --depth D                position play: shots looked ahead, [1, %d] (default: the agent's, 1)\n"
+      "  --seconds S              the run-outs' decisions under a wall-clock budget, [0, 3600] s\n"
+      "                           (AgentOptions::seconds: rounds from 500 runs up to the agent's; default 0: none)\n"
       "  --in-hand H              the run-outs' cue ball in hand after the break: planner (plan_ball_in_hand,\n"
       "                           with --position's budget, 1000 without it; the default) or rule (a straight-in\n"
       "                           on the lowest ball)\n"
@@ -757,12 +769,12 @@ Options parse(int argc, char** argv) {
     }
     static const char* const known[] = {"--suite",  "--layouts", "--racks", "--repeats", "--seed", "--planner-simulations",
                                         "--position", "--kinds", "--fallback-kinds", "--threads", "--json", "--layouts-out",
-                                        "--in-hand", "--break", "--agent", "--noisy-leaves", "--depth"};
+                                        "--in-hand", "--break", "--agent", "--noisy-leaves", "--depth", "--seconds"};
     if (std::find_if(std::begin(known), std::end(known), [&](const char* k) { return flag == k; }) == std::end(known))
       kFlags.bad("flag", flag,
                "--suite, --layouts, --racks, --repeats, --seed, --planner-simulations, --position, --kinds, "
                "--fallback-kinds, --threads, "
-               "--json, --layouts-out, --in-hand, --break, --agent, --noisy-leaves, --depth, --help");
+               "--json, --layouts-out, --in-hand, --break, --agent, --noisy-leaves, --depth, --seconds, --help");
     if (i + 1 >= argc) kFlags.bad(flag, "", "a value after the flag");
     const std::string value = argv[++i];
     if (flag == "--suite") {
@@ -780,6 +792,8 @@ Options parse(int argc, char** argv) {
       o.seed = static_cast<std::uint64_t>(kFlags.integer(flag, value, 0, 1000000000000000000LL));
     } else if (flag == "--noisy-leaves") {
       o.noisy_leaves = static_cast<int>(kFlags.integer(flag, value, 0, kMaxPositionNoisyLeaves));
+    } else if (flag == "--seconds") {
+      o.seconds = kFlags.number(flag, value, 0.0, kMaxAgentSeconds, "[0, 3600] s a decision");
     } else if (flag == "--depth") {
       o.depth = static_cast<int>(kFlags.integer(flag, value, 1, kMaxPositionDepth));
     } else if (flag == "--agent") {
@@ -852,12 +866,12 @@ int run(const Options& o) {
   std::string json = "{\n \"tool\": \"cueball-planner-benchmark\",\n";
   const AgentOptions agent = o.runout_agent();
   json += fmt(" \"options\": {\"suite\": \"%s\", \"layouts\": %d, \"racks\": %d, \"repeats\": %d, \"seed\": %llu, "
-              "\"planner_simulations\": %d, \"agent\": \"%s\", \"agent_simulations\": %d, \"position_simulations\": %d, \"noisy_leaves\": %d, \"depth\": %d, "
+              "\"planner_simulations\": %d, \"agent\": \"%s\", \"agent_simulations\": %d, \"position_simulations\": %d, \"noisy_leaves\": %d, \"depth\": %d, \"seconds\": %g, "
               "\"in_hand\": \"%s\", \"break\": \"%s\", \"kinds\": \"%s\", "
               "\"fallback_kinds\": \"%s\", \"threads\": %d},\n",
               o.suite.c_str(), o.layouts, o.racks, o.repeats, static_cast<unsigned long long>(o.seed), o.planner_simulations,
               o.agent_name.c_str(), agent.simulations, agent.position_simulations, agent.position_noisy_leaves, agent.position_depth,
-              o.in_hand_planner ? "planner" : "rule",
+              agent.seconds, o.in_hand_planner ? "planner" : "rule",
               o.real_break ? "recommended" : "rule", kinds_text(agent.kinds).c_str(), kinds_text(agent.fallback_kinds).c_str(),
               o.threads);
   const CueStrikeNoise& n = st.base.noise;

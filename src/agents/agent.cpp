@@ -9,6 +9,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <functional>
 #include <limits>
 #include <numbers>
 
@@ -120,6 +121,37 @@ AgentOptions timed_round_options(const AgentOptions& options, int simulations) {
   return r;
 }
 
+// AgentOptions::seconds: rounds at doubling budgets while the last round's
+// time, scaled to the next round's runs (a plan's time grows with its runs),
+// says the next one ends within the budget.
+TimedRounds plan_in_time(const AgentOptions& options, const std::function<void(const AgentOptions&)>& round) {
+  using Clock = std::chrono::steady_clock;
+  const auto seconds_since = [](Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); };
+  const Clock::time_point start = Clock::now();
+  TimedRounds t;
+  t.budget = options.seconds;
+  t.simulations = std::min(options.simulations, kFirstTimedRoundSimulations);
+  for (;;) {
+    const Clock::time_point round_start = Clock::now();
+    round(timed_round_options(options, t.simulations));
+    ++t.rounds;
+    const double took = seconds_since(round_start);
+    if (t.simulations >= options.simulations) break;
+    const int next = static_cast<int>(std::min<long long>(2LL * t.simulations, options.simulations));
+    if (seconds_since(start) + took * next / t.simulations > options.seconds) break;
+    t.simulations = next;
+  }
+  t.seconds = seconds_since(start);
+  return t;
+}
+
+std::string TimedRounds::summary() const {
+  char text[160];
+  std::snprintf(text, sizeof text, "seconds %g: %d round%s in %.3g s, played at %d runs", budget, rounds,
+                rounds == 1 ? "" : "s", seconds, simulations);
+  return text;
+}
+
 namespace {
 
 AgentChoice choose_at_budget(const AgentOptions& options, const GameState& state, std::uint64_t seed) {
@@ -154,30 +186,11 @@ bool plays_fixed_break(const AgentOptions& options, const GameState& state) {
   return legal.shoot && !legal.call_required && !legal.nominate_required;
 }
 
-// AgentOptions::seconds: rounds at doubling budgets while the last round's
-// time, scaled to the next round's runs (a plan's time grows with its runs),
-// says the next one ends within the budget.
 AgentChoice choose_in_time(const AgentOptions& options, const GameState& state, std::uint64_t seed) {
-  using Clock = std::chrono::steady_clock;
-  const auto seconds_since = [](Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); };
-  const Clock::time_point start = Clock::now();
-  int budget = std::min(options.simulations, kFirstTimedRoundSimulations);
-  int rounds = 0;
   AgentChoice choice;
-  for (;;) {
-    const Clock::time_point round_start = Clock::now();
-    choice = choose_at_budget(timed_round_options(options, budget), state, seed);
-    ++rounds;
-    const double took = seconds_since(round_start);
-    if (budget >= options.simulations) break;
-    const int next = static_cast<int>(std::min<long long>(2LL * budget, options.simulations));
-    if (seconds_since(start) + took * next / budget > options.seconds) break;
-    budget = next;
-  }
-  char tail[160];
-  std::snprintf(tail, sizeof tail, "seconds %g: %d round%s in %.3g s, played at %d runs", options.seconds, rounds,
-                rounds == 1 ? "" : "s", seconds_since(start), budget);
-  choice.reasoning.summary += (choice.reasoning.summary.empty() ? "" : "; ") + std::string(tail);
+  const TimedRounds t = plan_in_time(
+      options, [&](const AgentOptions& round) { choice = choose_at_budget(round, state, seed); });
+  choice.reasoning.summary += (choice.reasoning.summary.empty() ? "" : "; ") + t.summary();
   return choice;
 }
 

@@ -36,6 +36,7 @@
 
 #include <array>
 #include <cstdint>
+#include <functional>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -112,6 +113,21 @@ inline constexpr double kMaxAgentSeconds = 3600.0;
 /// simulations / options.simulations (at least kMinPlanSimulations when
 /// position play is on, at most position_simulations), and seconds 0.
 AgentOptions timed_round_options(const AgentOptions& options, int simulations);
+/// What a decision under AgentOptions::seconds did.
+struct TimedRounds {
+  double budget = 0.0;   ///< AgentOptions::seconds
+  int rounds = 0;
+  int simulations = 0;   ///< the runs a plan of the last round, whose result is played
+  double seconds = 0.0;  ///< wall-clock time of all the rounds
+  /// "seconds 0.5: 3 rounds in 0.41 s, played at 2000 runs"
+  std::string summary() const;
+};
+/// The rounds of AgentOptions::seconds: round(timed_round_options(options,
+/// b)) for b = min(simulations, kFirstTimedRoundSimulations), 2b, 4b, ...
+/// up to options.simulations, each while the one before says it fits; the
+/// caller keeps the last round's result. choose() uses it; so can a caller
+/// that plans with planner_choice() itself (the planner benchmark).
+TimedRounds plan_in_time(const AgentOptions& options, const std::function<void(const AgentOptions&)>& round);
 
 /// The strongest pool player of the agents (issue 27), and what the
 /// planner benchmark's run-out suite measures by default: the safety

@@ -122,8 +122,9 @@ AgentOptions timed_round_options(const AgentOptions& options, int simulations) {
 }
 
 // AgentOptions::seconds: rounds at doubling budgets while the last round's
-// time, scaled to the next round's runs (a plan's time grows with its runs),
-// says the next one ends within the budget.
+// time, scaled to the next round's runs (a plan's time grows with its runs,
+// a little less than in proportion), says the next one ends within the
+// budget; the last round takes the runs the time left allows.
 TimedRounds plan_in_time(const AgentOptions& options, const std::function<void(const AgentOptions&)>& round) {
   using Clock = std::chrono::steady_clock;
   const auto seconds_since = [](Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); };
@@ -137,9 +138,14 @@ TimedRounds plan_in_time(const AgentOptions& options, const std::function<void(c
     ++t.rounds;
     const double took = seconds_since(round_start);
     if (t.simulations >= options.simulations) break;
-    const int next = static_cast<int>(std::min<long long>(2LL * t.simulations, options.simulations));
-    if (seconds_since(start) + took * next / t.simulations > options.seconds) break;
-    t.simulations = next;
+    // The next round doubles the runs, or takes what the time left allows
+    // at this round's pace when that is less, if it is a quarter more.
+    const double left = options.seconds - seconds_since(start);
+    const double affordable = left > 0.0 && took > 0.0 ? t.simulations * (left / took) : 0.0;
+    const long long next = std::min<long long>(
+        {2LL * t.simulations, options.simulations, static_cast<long long>(std::min(affordable, 2e9))});
+    if (next < t.simulations + t.simulations / 4) break;
+    t.simulations = static_cast<int>(next);
   }
   t.seconds = seconds_since(start);
   return t;

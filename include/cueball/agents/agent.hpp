@@ -70,8 +70,9 @@ struct AgentOptions {
   /// (position_simulations scaled with them, never below
   /// kMinPlanSimulations), each round only while the one before it says,
   /// by its own time scaled to the next round's runs, that it will end
-  /// within `seconds` of the decision's start; the last round's action is
-  /// played. The first round always runs, so a decision can take longer
+  /// within `seconds` of the decision's start (fewer than twice the runs
+  /// where only those fit, at least a quarter more); the last round's
+  /// action is played. The first round always runs, so a decision can take longer
   /// than `seconds` when even that round does not fit. Budget in seconds
   /// or in runs, whichever runs out first (issue 27). The rounds played
   /// depend on the machine's speed: the reasoning's summary ends with them
@@ -124,7 +125,8 @@ struct TimedRounds {
 };
 /// The rounds of AgentOptions::seconds: round(timed_round_options(options,
 /// b)) for b = min(simulations, kFirstTimedRoundSimulations), 2b, 4b, ...
-/// up to options.simulations, each while the one before says it fits; the
+/// up to options.simulations, each while the one before says it fits (the
+/// last one at what fits, when that is 1.25 b to 2 b); the
 /// caller keeps the last round's result. choose() uses it; so can a caller
 /// that plans with planner_choice() itself (the planner benchmark).
 TimedRounds plan_in_time(const AgentOptions& options, const std::function<void(const AgentOptions&)>& round);

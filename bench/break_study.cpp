@@ -399,14 +399,7 @@ void suite_disciplines(const Options& o) {
   for (int game : {8, 10})
     for (double sigma : {0.0, 0.000025}) {
       auto run = [&](const char* spot, double rail, double cut, double v) {
-        Cell c;
-        c.game = game;
-        c.spot = spot;
-        c.rail_gap = rail;
-        c.cut = cut;
-        c.speed = v;
-        c.gap_sigma = sigma;
-        run_cell(c, o);
+        run_cell({.game = game, .spot = spot, .rail_gap = rail, .cut = cut, .speed = v, .gap_sigma = sigma}, o);
       };
       run("centre", 0.10, 0.0, 11.0);
       for (double rail : {0.05, 0.10, 0.15, 0.20, 0.25, 0.30}) run("side", rail, 0.0, 11.0);

@@ -72,9 +72,9 @@ struct AgentOptions {
   /// by its own time scaled to the next round's runs, that it will end
   /// within `seconds` of the decision's start (fewer than twice the runs
   /// where only those fit, at least a quarter more); the last round's
-  /// action is played. The first round always runs, so a decision can take longer
-  /// than `seconds` when even that round does not fit. Budget in seconds
-  /// or in runs, whichever runs out first (issue 27). The rounds played
+  /// action is played. The first round always runs, so a decision can take
+  /// longer than `seconds` when even that round does not fit. Budget in
+  /// seconds or in runs, whichever runs out first (issue 27). The rounds played
   /// depend on the machine's speed: the reasoning's summary ends with them
   /// ("seconds 0.5: 3 rounds in 0.41 s, played at 2000 runs"), and the same
   /// options with those `simulations` and no `seconds` replay the decision

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace cueball {
 
@@ -13,6 +14,42 @@ double rail_height(const Table& table) {
   for (const JawArc& j : table.jaws) h = std::max(h, j.contact_height);
   return h;
 }
+
+namespace {
+
+// The rail test of one point p of the cue's axis in plan: `over` as
+// cue_obstructed() samples it (outside the playing area, or within the
+// cue's radius of a cushion's nose line), and, when not, how far p can move
+// in plan with that still false: its distance to the nearest nose line less
+// the cue's radius, and to the playing area's boundary (inside_playing_area:
+// the polygon of the nose lines and their joins, and the pockets' circles),
+// whichever is smaller. Both are 1-Lipschitz in p.
+struct RailSample {
+  bool over = false;
+  double clear = 0.0;
+};
+RailSample rail_sample(const Table& table, Vec2 p) {
+  RailSample r;
+  r.over = !inside_playing_area(table, p);
+  double clear = std::numeric_limits<double>::infinity();
+  Vec2 previous_end = table.cushions.empty() ? Vec2{} : table.cushions.back().end;
+  for (const CushionSegment& c : table.cushions) {
+    const double d = distance_to_segment(c, p);
+    if (d < kCueTipRadius) r.over = true;
+    clear = std::min({clear, d - kCueTipRadius, distance_to_segment(p, previous_end, c.start)});
+    previous_end = c.end;
+  }
+  for (const Pocket& k : table.pockets) clear = std::min(clear, std::abs(norm(p - k.centre) - k.radius));
+  r.clear = r.over ? 0.0 : clear;
+  return r;
+}
+
+// Rounding in the distances and the samples' positions, m: far below the 2 mm steps.
+constexpr double kClearSlack = 1e-9;
+// The samples along the cue, m.
+constexpr double kStep = 0.002;
+
+}  // namespace
 
 bool cue_obstructed(const Table& table, Vec2 cue_ball, const std::vector<Vec2>& other_balls, const CueStrike& strike,
                     double radius) {
@@ -31,17 +68,21 @@ bool cue_obstructed(const Table& table, Vec2 cue_ball, const std::vector<Vec2>& 
     if (distance_to_segment(Vec3{p.x, p.y, R}, tip, butt) < R + kCueTipRadius) return true;
   // The rail: the first point (2 mm steps) where the cue is over it, within
   // its radius in plan of a cushion's nose or outside the playing area; the
-  // cue only rises behind it.
+  // cue only rises behind it. The samples nearer in plan to one that is
+  // clear than its clearance (rail_sample) cannot be over the rail and are
+  // passed over, not tested: the same samples (s summed step by step), the
+  // same answer, without testing the ~700 points of a cue over the bed.
   const double rail = rail_height(table);
   const double drop = kCueTipRadius / ce;  // the lower edge below the axis
-  constexpr double kStep = 0.002;
-  for (double s = 0.0; s <= kCueLength; s += kStep) {
+  const double plan_step = ce * kStep;     // the axis moves ce per unit length in plan
+  double s = 0.0;
+  while (s <= kCueLength) {
     const Vec3 x = tip - s * d;
-    const Vec2 p{x.x, x.y};
-    bool over_rail = !inside_playing_area(table, p);
-    for (std::size_t k = 0; k < table.cushions.size() && !over_rail; ++k)
-      over_rail = distance_to_segment(table.cushions[k], p) < kCueTipRadius;
-    if (over_rail) return x.z - drop < rail;
+    const RailSample r = rail_sample(table, {x.x, x.y});
+    if (r.over) return x.z - drop < rail;
+    const double passable = (r.clear - kClearSlack) / plan_step;  // samples ahead that stay clear
+    s += kStep;
+    for (int j = 1; j < passable && s <= kCueLength; ++j) s += kStep;
   }
   return false;
 }

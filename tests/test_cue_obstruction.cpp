@@ -20,18 +20,11 @@ namespace {
 // the first one outside the playing area or within the cue's radius of a
 // nose line decides (no balls: the rail alone).
 bool over_rail_low_by_every_sample(const Table& table, Vec2 cue_ball, const CueStrike& strike, double R) {
-  const Vec3 u{std::cos(strike.aim), std::sin(strike.aim), 0.0};
-  const Vec3 side{u.y, -u.x, 0.0};
-  const double ce = std::cos(strike.elevation), se = std::sin(strike.elevation);
-  const Vec3 d{ce * u.x, ce * u.y, -se};
-  const Vec3 up{se * u.x, se * u.y, ce};
-  const double a = strike.side_offset, b = strike.height_offset;
-  const double c = std::sqrt(std::max(0.0, R * R - a * a - b * b));
-  const Vec3 tip = Vec3{cue_ball.x, cue_ball.y, R} + a * side + b * up - c * d;
+  const CueAxis axis = cue_axis(cue_ball, strike, R);
   const double rail = rail_height(table);
-  const double drop = kCueTipRadius / ce;
+  const double drop = kCueTipRadius / std::cos(strike.elevation);
   for (double s = 0.0; s <= kCueLength; s += 0.002) {
-    const Vec3 x = tip - s * d;
+    const Vec3 x = axis.tip + s * axis.toward_butt;
     const Vec2 p{x.x, x.y};
     bool over = !inside_playing_area(table, p);
     for (const CushionSegment& k : table.cushions) over = over || distance_to_segment(k, p) < kCueTipRadius;

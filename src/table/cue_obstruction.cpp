@@ -51,8 +51,7 @@ constexpr double kStep = 0.002;
 
 }  // namespace
 
-bool cue_obstructed(const Table& table, Vec2 cue_ball, const std::vector<Vec2>& other_balls, const CueStrike& strike,
-                    double radius) {
+CueAxis cue_axis(Vec2 cue_ball, const CueStrike& strike, double radius) {
   const double R = radius;
   // The cue frame (C1) of cue_strike.hpp and the contact point (C2).
   const Vec3 u{std::cos(strike.aim), std::sin(strike.aim), 0.0};
@@ -62,7 +61,16 @@ bool cue_obstructed(const Table& table, Vec2 cue_ball, const std::vector<Vec2>& 
   const Vec3 up{se * u.x, se * u.y, ce};
   const double a = strike.side_offset, b = strike.height_offset;
   const double c = std::sqrt(std::max(0.0, R * R - a * a - b * b));
-  const Vec3 tip = Vec3{cue_ball.x, cue_ball.y, R} + a * side + b * up - c * d;
+  return {Vec3{cue_ball.x, cue_ball.y, R} + a * side + b * up - c * d, -d};
+}
+
+bool cue_obstructed(const Table& table, Vec2 cue_ball, const std::vector<Vec2>& other_balls, const CueStrike& strike,
+                    double radius) {
+  const double R = radius;
+  const CueAxis axis = cue_axis(cue_ball, strike, radius);
+  const Vec3 tip = axis.tip;
+  const Vec3 d = -axis.toward_butt;  // along the strike, butt to tip
+  const double ce = std::cos(strike.elevation);
   const Vec3 butt = tip - kCueLength * d;
   for (const Vec2 p : other_balls)
     if (distance_to_segment(Vec3{p.x, p.y, R}, tip, butt) < R + kCueTipRadius) return true;

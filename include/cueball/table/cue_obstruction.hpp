@@ -33,6 +33,17 @@ inline constexpr double kCueTipRadius = 0.0065;
 /// of the table's cushions and jaws, m.
 double rail_height(const Table& table);
 
+/// The cue's axis for `strike` on a ball of radius `radius` resting at
+/// `cue_ball`: the contact point on the ball (the tip's centre, C2 of
+/// cue_strike.hpp) and the unit direction from the tip towards the butt,
+/// raised by the elevation (the cue frame C1). A point at length s behind
+/// the tip is tip + s * toward_butt.
+struct CueAxis {
+  Vec3 tip;
+  Vec3 toward_butt;
+};
+CueAxis cue_axis(Vec2 cue_ball, const CueStrike& strike, double radius);
+
 /// True when the cue, aligned for `strike` (radians, metres) on the cue ball
 /// at `cue_ball`, passes within its radius of another ball (centres
 /// `other_balls`, balls of radius `radius` resting on the bed) or below the

@@ -39,7 +39,14 @@ Vec2 closest_approach(const BallTrajectory& b, double end_time, Vec2 p, const Pa
     const BallState& start = b.segments[k].state;
     const double reach = norm(start.velocity) * span + 0.5 * a_max * span * span;
     if (norm(start.position - p) - reach > best + kRoundingSlack) continue;
-    const auto at = [&](double dt) { return evolve(b.segments[k].state, dt, par).position; };
+    // evolve(start, dt), its phase and next transition worked out once for
+    // the segment (what evolve() does first on every call).
+    const MotionPhase phase = motion_phase(start, par);
+    const NextTransition next = next_transition(start, par);
+    const auto at = [&](double dt) {
+      if (dt < next.time || next.kind == Transition::none) return evolve_in_phase(start, phase, dt, par).position;
+      return evolve(start, dt, par).position;
+    };
     constexpr int kSamples = 24;
     int best_i = -1;
     double seg_best = std::numeric_limits<double>::infinity();

@@ -182,14 +182,11 @@ AgentChoice choose_at_budget(const AgentOptions& options, const GameState& state
   throw InvalidArgument("kind", "unknown agent; allowed: " + agent_kind_names());
 }
 
-// Whether the agent breaks with break_action() (planner_agent.cpp: a pool
-// or snooker break with no call or nomination due), which no budget changes.
+// Whether the agent breaks with break_action(), which no budget changes.
 bool plays_fixed_break(const AgentOptions& options, const GameState& state) {
-  if (state.phase != GamePhase::break_shot || options.kind == AgentKind::carom_search ||
-      state.config.kind == GameKind::three_cushion)
-    return false;
+  if (state.phase != GamePhase::break_shot || options.kind == AgentKind::carom_search) return false;
   const LegalActions legal = legal_actions(state);
-  return legal.shoot && !legal.call_required && !legal.nominate_required;
+  return legal.shoot && plays_break_action(state, legal);
 }
 
 AgentChoice choose_in_time(const AgentOptions& options, const GameState& state, std::uint64_t seed) {
@@ -242,6 +239,11 @@ int nearest_pocket(const Scenario& table, int id) {
     }
   }
   return best;
+}
+
+bool plays_break_action(const GameState& state, const LegalActions& legal) {
+  return state.phase == GamePhase::break_shot && state.config.kind != GameKind::three_cushion &&
+         !legal.call_required && !legal.nominate_required;
 }
 
 Action break_action(const GameState& state) {

@@ -361,7 +361,7 @@ PlannerChoice planner_choice(const AgentOptions& options, const GameState& state
     decide(t);
     return t.choice;
   }
-  if (state.phase == GamePhase::break_shot && !t.legal.call_required && !t.legal.nominate_required) {
+  if (plays_break_action(state, t.legal)) {
     t.choice.kind = PlannerChoice::Kind::break_shot;
     t.choice.action = break_action(state);
     t.choice.detail = "break";

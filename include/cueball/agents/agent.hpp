@@ -196,6 +196,10 @@ CaromSearchResult carom_search(const AgentOptions& options, const GameState& sta
 /// (games/break_shot.hpp), the opening shot measured best for each
 /// discipline (docs/break.md), the same for every seed.
 Action break_action(const GameState& state);
+/// Whether the planner agents play break_action() in `state` (its legal
+/// actions `legal`): a pool or snooker break with no call or nomination
+/// due (three-cushion's opening is searched by carom_search).
+bool plays_break_action(const GameState& state, const LegalActions& legal);
 
 /// The decision policy both pool agents follow, given whether the table as
 /// it stands is good for the player deciding (`table_good`: the agent would

@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <functional>
 #include <string>
 #include <utility>
 
@@ -162,11 +163,27 @@ std::vector<Candidate> candidate_leaves(std::vector<PlannedShot>& every) {
   return candidates;
 }
 
+// The k-th largest of `scores` (k >= 1); -1 when there are fewer.
+double kth_largest(std::vector<double> scores, std::size_t k) {
+  if (scores.size() < k) return -1.0;
+  std::nth_element(scores.begin(), scores.begin() + static_cast<std::ptrdiff_t>(k - 1), scores.end(),
+                   std::greater<>());
+  return scores[k - 1];
+}
+
 // Step 2: each leave scored by window probabilities alone (no noisy shot):
 // this shot's, times the best next shot's on the table it leaves; the
-// kMaxPositionCandidates best kept.
+// kMaxPositionCandidates best kept. The candidates come best window first
+// and the next shot's window is at most 1, so a leave whose own window is
+// no more than the kMaxPositionCandidates-th score so far cannot be kept
+// (nor can any after it; an equal score keeps the earlier leave): the
+// scoring stops there, and the leaves kept are those of scoring them all.
 void score_leaves_by_windows(Lookahead& la, std::vector<Candidate>& candidates) {
+  std::vector<double> scores;
+  std::size_t scored = 0;
   for (Candidate& c : candidates) {
+    if (c.shot.window_probability <= kth_largest(scores, kMaxPositionCandidates)) break;
+    ++scored;
     c.leave.cue_ball = cue_ball_end(c.shot, la.cue_id);
     c.left = table_left_by(la.s, c.shot);
     // The next targets on the table it leaves (by default the next ball, or
@@ -174,9 +191,11 @@ void score_leaves_by_windows(Lookahead& la, std::vector<Candidate>& candidates) 
     // to score.
     c.next_ids = next_ids_on(c.left, la, {});
     c.next_window = 1.0;
-    if (c.next_ids.empty()) continue;
-    c.next_window = best_window_probability(c.left, next_request(la, c.next_ids), la.simulations);
+    if (!c.next_ids.empty())
+      c.next_window = best_window_probability(c.left, next_request(la, c.next_ids), la.simulations);
+    scores.push_back(c.shot.window_probability * c.next_window);
   }
+  candidates.resize(scored);
   std::stable_sort(candidates.begin(), candidates.end(), [](const Candidate& a, const Candidate& b) {
     return a.shot.window_probability * a.next_window > b.shot.window_probability * b.next_window;
   });
@@ -207,6 +226,8 @@ double two_shot_window(Lookahead& la, const Scenario& left, const std::vector<in
     if (best.size() < kPositionSecondShots) best.push_back(&alternative);
   double value = 0.0;
   for (const PlannedShot* shot : best) {
+    // The shot after it has a window of at most 1: no gain possible.
+    if (shot->window_probability <= value) continue;
     const Scenario after = table_left_by(left, *shot);
     const std::vector<int> after_ids = next_ids_on(after, la, {});
     const double after_window =

@@ -116,7 +116,8 @@ void run_plan_shot(const PlanShotFlags& f, std::ostream& out, std::ostream& err)
   else if (f.noise == "scenario") q.noise = s.noise;
   else throw UsageError("--noise = " + quote_input(f.noise) + " is not known; allowed: tournament, none, scenario");
   q.noise = with_sigma_flags(f.sigma, q.noise, s.settings.parameters.ball.radius);
-  if (f.pocket != "any") {
+  q.call_shot = f.pocket == "called";
+  if (f.pocket != "any" && f.pocket != "called") {
     std::string names;
     for (std::size_t k = 0; k < s.table.pockets.size(); ++k) {
       names += (names.empty() ? "" : ", ") + s.table.pockets[k].name;
@@ -124,7 +125,7 @@ void run_plan_shot(const PlanShotFlags& f, std::ostream& out, std::ostream& err)
     }
     if (!q.pocket)
       throw UsageError("--pocket = " + quote_input(f.pocket) + " is not a pocket of " + s.table.name +
-                       "; allowed: any" + (names.empty() ? "" : ", " + names));
+                       "; allowed: any, called" + (names.empty() ? "" : ", " + names));
   }
   q.kinds.clear();
   std::stringstream kinds(f.kinds);
@@ -269,7 +270,8 @@ Command add_plan_shot_command(CLI::App& app) {
       "spin and speed variants ranked by the chance that the noise keeps them inside their windows, and\n"
       "the success probability estimated from noisy simulations (--noise tournament: sigma 0.125 deg\n"
       "aim, 0.1 deg elevation, 0.075 m/s speed, 0.5 mm tip). A pot needs the ball in the intended pocket\n"
-      "(under the noise, with --pocket any, in any pocket), the cue ball touching it first (for a\n"
+      "(under the noise, with --pocket any, in any pocket; with --pocket called, a call shot as in 8-ball\n"
+      "and 10-ball, only in the pocket each shot aims at), the cue ball touching it first (for a\n"
       "combination: the intermediate ball) and not pocketed. The scenario's own cue strike is\n"
       "ignored. --scenario-out writes the scenario with the planned cue (cueball simulate\n"
       "replays it); --html the viewer page of the planned shot with its aim line and ghost ball. The\n"
@@ -281,7 +283,10 @@ Command add_plan_shot_command(CLI::App& app) {
   sub->add_option("--targets", flags->targets,
                   "Ids of the legal targets, comma-separated (e.g. 1,3,5), instead of --ball: the plan pots any one\n"
                   "of them, the best shot of all");
-  sub->add_option("--pocket", flags->pocket, "Pocket name (e.g. top-right), or any")->capture_default_str();
+  sub->add_option("--pocket", flags->pocket,
+                  "Pocket name (e.g. top-right); any (a pot in any pocket counts, as in 9-ball); or called (any\n"
+                  "pocket may be planned, but each shot's pot counts only in its own pocket: a call shot, WPA 1.6)")
+      ->capture_default_str();
   sub->add_option("--kinds", flags->kinds,
                   "Kinds of shot to consider, comma-separated: direct, bank (off one or two cushions), kick (the "
                   "cue ball off a cushion first), combination (the cue ball sends another ball into the target)")

@@ -11,6 +11,8 @@
 #include <vector>
 
 #include "cli_runner.hpp"
+#include "cueball/io/scenario_json.hpp"
+#include "cueball/planning/shot_planner.hpp"
 #include "plan_shot_scenarios.hpp"
 #include "temp_dir.hpp"
 
@@ -190,6 +192,36 @@ TEST(CliPlanShot, TargetsPotsTheOnlyPottableLegalTargetAndSaysWhich) {
   const CliRun none = run_cli({"plan-shot", scenario, "--targets", "1,4", "--kinds", "direct", "--simulations", "1000"});
   EXPECT_EQ(none.status, 3);
   EXPECT_NE(none.err.find("no feasible shot pots any of balls 1, 4"), std::string::npos) << none.err;
+}
+
+// --pocket called is PlanRequest::call_shot: the same strike as --pocket any
+// on the library test's layout (ShotPlanner.ACallShotCountsAPotOnlyInTheShotsOwnPocket),
+// estimated lower, and the plan of the library's call shot to the bit.
+TEST(CliPlanShot, PocketCalledCountsAPotOnlyInTheShotsOwnPocket) {
+  const TempDir dir;
+  const std::string scenario = dir.write("two.json", R"({"table": "pool_9ft", "balls": [
+    {"id": 0, "position": [0.9637952625759938, 0.2051678989520107]},
+    {"id": 1, "position": [1.9107061147082365, 0.4468972208536196]},
+    {"id": 2, "position": [0.47856410301977315, 0.8823697581870137]},
+    {"id": 3, "position": [0.4788933752081283, 0.45139904709695194]},
+    {"id": 4, "position": [2.339371941354914, 0.09099373819723446]}]})");
+  nlohmann::json plan[2];
+  const char* pockets[2] = {"any", "called"};
+  for (int k = 0; k < 2; ++k) {
+    const CliRun r = run_cli({"plan-shot", scenario, "--ball", "1", "--seed", "17", "--simulations", "1000", "--pocket",
+                              pockets[k], "--json"});
+    ASSERT_EQ(r.status, 0) << r.err;
+    plan[k] = nlohmann::json::parse(r.out);
+  }
+  EXPECT_EQ(plan[0]["cue"], plan[1]["cue"]);
+  EXPECT_LT(plan[1]["success_probability"].get<double>(), plan[0]["success_probability"].get<double>());
+  PlanRequest q;
+  q.target = 1;
+  q.seed = 17;
+  q.simulations = 1000;
+  q.call_shot = true;
+  const ShotPlanResult library = plan_shot(scenario_from_json(test::read_text(scenario)), q);
+  EXPECT_EQ(plan[1]["success_probability"].get<double>(), library.shot.success_probability);
 }
 
 TEST(CliPlanShot, KindsKickAndCombinationArePlannedAndSaidInTheJson) {

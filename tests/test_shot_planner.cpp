@@ -709,41 +709,85 @@ TEST(ShotPlanner, TheAimScanFindsABallOnTheRailSentAlongItIntoTheSidePocket) {
   EXPECT_GT(measured_success(s, plan.shot.strike, 1, 2000, 99), 0.5);
 }
 
-// A request without a pocket counts the target dropping in any pocket (as in
-// 9-ball); with a pocket, only there. The final estimate's draws replayed
-// and counted both ways: it is the count of any pocket. Planner benchmark
-// layout seed 17, where the noise sends the target into two pockets.
-TEST(ShotPlanner, ARequestWithoutAPocketCountsAPotInAnyPocket) {
-  const Scenario s = layout({{0, {0.9637952625759938, 0.2051678989520107}},
-                             {1, {1.9107061147082365, 0.4468972208536196}},
-                             {2, {0.47856410301977315, 0.8823697581870137}},
-                             {3, {0.4788933752081283, 0.45139904709695194}},
-                             {4, {2.339371941354914, 0.09099373819723446}}});
-  PlanRequest any;
-  any.target = 1;
-  any.seed = 17;
-  any.simulations = 1000;
-  const ShotPlanResult plan = plan_shot(s, any);
-  // The final estimate's draws are the batch stream of the request's seed:
-  // replay them and count both ways.
+// Planner benchmark layout seed 17, where the noise sends the target into
+// two pockets.
+Scenario two_pocket_layout() {
+  return layout({{0, {0.9637952625759938, 0.2051678989520107}},
+                 {1, {1.9107061147082365, 0.4468972208536196}},
+                 {2, {0.47856410301977315, 0.8823697581870137}},
+                 {3, {0.4788933752081283, 0.45139904709695194}},
+                 {4, {2.339371941354914, 0.09099373819723446}}});
+}
+
+// The noisy shots of a plan's final estimate that pot the 1 legally (first
+// contact the 1, no scratch): in any pocket, and in the shot's own. The
+// final estimate's draws are the batch stream of the request's seed: they
+// are replayed.
+struct PotCounts {
+  int anywhere = 0, there = 0;
+};
+PotCounts final_estimate_pots(const Scenario& s, const PlanRequest& q, const PlannedShot& shot) {
   Scenario noisy = s;
-  noisy.noise = any.noise;
+  noisy.noise = q.noise;
   noisy.cue = ShotStrike{};
   noisy.cue->ball = 0;
-  const std::vector<ShotAction> actions(static_cast<std::size_t>(plan.shot.noisy_shots), plan.shot.strike);
+  const std::vector<ShotAction> actions(static_cast<std::size_t>(shot.noisy_shots), shot.strike);
   ManyOptions options;
-  options.seed = any.seed;
+  options.seed = q.seed;
   options.noise = true;
   const ManyResult m = simulate_many(noisy, actions, {}, options);
-  int anywhere = 0, there = 0;
+  PotCounts c;
   const auto n = static_cast<std::size_t>(m.balls);
   for (std::size_t k = 0; k < actions.size(); ++k) {
     const bool legal = !m.miscue[k] && !m.failure[k] && m.first_contact[k] == 1 && !m.pocketed[k * n + 0];
-    anywhere += legal && m.pocketed[k * n + 1] ? 1 : 0;
-    there += legal && m.pocket[k * n + 1] == plan.shot.pocket ? 1 : 0;
+    c.anywhere += legal && m.pocketed[k * n + 1] ? 1 : 0;
+    c.there += legal && m.pocket[k * n + 1] == shot.pocket ? 1 : 0;
   }
-  EXPECT_EQ(plan.shot.success_probability, static_cast<double>(anywhere) / plan.shot.noisy_shots);
-  EXPECT_GT(anywhere, there) << "no noisy shot dropped elsewhere: the test cannot tell the two counts apart";
+  return c;
+}
+
+// The 1 of two_pocket_layout(), seed 17, 1,000 runs; a call shot or not.
+PlanRequest two_pocket_request(bool call_shot) {
+  PlanRequest q;
+  q.target = 1;
+  q.seed = 17;
+  q.simulations = 1000;
+  q.call_shot = call_shot;
+  return q;
+}
+
+// A request without a pocket counts the target dropping in any pocket (as in
+// 9-ball); with a pocket, only there. The final estimate is the count of any
+// pocket.
+TEST(ShotPlanner, ARequestWithoutAPocketCountsAPotInAnyPocket) {
+  const Scenario s = two_pocket_layout();
+  const PlanRequest any = two_pocket_request(false);
+  const ShotPlanResult plan = plan_shot(s, any);
+  const PotCounts c = final_estimate_pots(s, any, plan.shot);
+  EXPECT_EQ(plan.shot.success_probability, static_cast<double>(c.anywhere) / plan.shot.noisy_shots);
+  EXPECT_GT(c.anywhere, c.there) << "no noisy shot dropped elsewhere: the test cannot tell the two counts apart";
+}
+
+// A call shot (8-ball, 10-ball: the pocket is called, WPA 1.6) counts a pot
+// only in the pocket the shot aims at, as the rules do: on the same layout
+// and draws its estimate is the count of that pocket, and the same strike
+// planned without the call would have been estimated higher.
+TEST(ShotPlanner, ACallShotCountsAPotOnlyInTheShotsOwnPocket) {
+  const Scenario s = two_pocket_layout();
+  const PlanRequest called = two_pocket_request(true);
+  const ShotPlanResult plan = plan_shot(s, called);
+  const PotCounts c = final_estimate_pots(s, called, plan.shot);
+  EXPECT_EQ(plan.shot.success_probability, static_cast<double>(c.there) / plan.shot.noisy_shots);
+  EXPECT_GT(c.anywhere, c.there) << "no noisy shot of the called plan dropped elsewhere";
+  // The candidates are the same: the same shots are feasible either way.
+  // Here the same strike is chosen, and on the same draws it is estimated
+  // lower with the call.
+  const ShotPlanResult any_plan = plan_shot(s, two_pocket_request(false));
+  EXPECT_EQ(plan.alternatives.size(), any_plan.alternatives.size());
+  EXPECT_EQ(plan.rejected, any_plan.rejected);
+  ASSERT_TRUE(plan.shot.strike == any_plan.shot.strike);
+  EXPECT_LT(plan.shot.success_probability, any_plan.shot.success_probability);
+  EXPECT_EQ(any_plan.shot.success_probability, static_cast<double>(c.anywhere) / plan.shot.noisy_shots);
 }
 
 // docs/example-blocked.json: balls 2, 3 and 4 crowd the 1. With direct

@@ -1142,7 +1142,9 @@ def plan_shot(
     'combination'), pocket, cushion (only off a cushion), cushions, intermediate_ball, success_probability and its
     standard error, window_probability, aim_window_deg, speed_window m/s, robot, combination_cut_deg (combinations
     only), predicted, alternatives, rejected) and `scenario`, the one key the CLI has not: the Scenario with the
-    planned cue (in each alternative too). noise 'tournament', 'none', 'scenario' or a dict of sigmas
+    planned cue (in each alternative too). pocket 'any' (a pot in any pocket counts), 'called' (a call
+    shot as in 8-ball and 10-ball: each shot's pot counts only in the pocket it aims at), a pocket's name
+    or index. noise 'tournament', 'none', 'scenario' or a dict of sigmas
     as the scenario's "noise" (speed m/s, aim_deg, elevation_deg, side, height ball radii); raises
     NoFeasibleShot when nothing pots. position=True plays for position (plan-shot --position):
     next_targets: the next shots' legal targets in turn ([[2], [3], ...] for 9-ball, [[9, ..., 15], [8]]

@@ -59,16 +59,16 @@ std::optional<int> pocket_index(const py::object& pocket, const Scenario& s) {
   if (pocket.is_none()) return std::nullopt;
   if (py::isinstance<py::str>(pocket)) {
     const std::string name = utf8_argument(pocket, "pocket");
-    if (name == "any") return std::nullopt;
+    if (name == "any" || name == "called") return std::nullopt;
     std::string names;
     for (std::size_t k = 0; k < s.table.pockets.size(); ++k) {
       if (s.table.pockets[k].name == name) return static_cast<int>(k);
       names += ", '" + s.table.pockets[k].name + "'";
     }
     throw cueball::InvalidArgument("pocket", "pocket = '" + name + "' is not a pocket of " + s.table.name +
-                                                 "; allowed: 'any'" + names + " or an index");
+                                                 "; allowed: 'any', 'called'" + names + " or an index");
   }
-  return cast_argument<int>(pocket, "pocket", "a pocket's name, 'any' or an index");  // plan_shot checks the index's range
+  return cast_argument<int>(pocket, "pocket", "a pocket's name, 'any', 'called' or an index");  // plan_shot checks the index's range
 }
 
 // region=: a name (placement.hpp: "kitchen", "d", "anywhere", ...) or a
@@ -122,6 +122,7 @@ void bind_shot_planner(py::module_& m) {
         q.cue_ball = cue_ball;
         set_targets(target, targets, q);
         q.pocket = pocket_index(pocket, *s);
+        q.call_shot = py::isinstance<py::str>(pocket) && pocket.cast<std::string>() == "called";
         q.kinds = shot_kinds(kinds);
         q.noise = noise_model(noise, *s);
         q.seed = seed;
@@ -188,7 +189,8 @@ void bind_shot_planner(py::module_& m) {
       "first aim, blocked paths and an obstructed cue skipped, the aim then solved on the exact simulation (throw, the cloth, the\n"
       "cushion), the aim and speed windows that still pot, and the success probability from noisy\n"
       "simulations. scenario: as simulate()'s (its own cue strike is ignored; None: the built-in\n"
-      "rack); pocket: 'any', a pocket's name or index; kinds: any of 'direct', 'bank', 'kick',\n"
+      "rack); pocket: 'any', 'called' (a call shot, WPA 1.6: each shot's pot counts only in the pocket\n"
+      "it aims at, as 8-ball and 10-ball score it), a pocket's name or index; kinds: any of 'direct', 'bank', 'kick',\n"
       "'combination'; noise: 'tournament'\n"
       "(sigma 0.125 deg aim, 0.1 deg elevation, 0.075 m/s, 0.5 mm tip), 'none', 'scenario' (the\n"
       "scenario's own \"noise\") or a dict of sigmas as the scenario's \"noise\" takes them (speed m/s,\n"

@@ -97,6 +97,18 @@ class PlanShotTest(unittest.TestCase):
         self.assertIn("kinds", str(e.exception))
         self.assertIn("'combination'", str(e.exception))
 
+    def test_a_called_pocket_counts_a_pot_only_in_the_shots_own_pocket(self) -> None:
+        # The C++ test's layout (ACallShotCountsAPotOnlyInTheShotsOwnPocket), where the noise sends the 1
+        # into two pockets: the same strike, estimated on the same draws, lower with the call.
+        places = [(0, 0.9637952625759938, 0.2051678989520107), (1, 1.9107061147082365, 0.4468972208536196),
+                  (2, 0.47856410301977315, 0.8823697581870137), (3, 0.4788933752081283, 0.45139904709695194),
+                  (4, 2.339371941354914, 0.09099373819723446)]
+        layout = cueball.Scenario.from_json(json.dumps(
+            {"table": "pool_9ft", "balls": [{"id": i, "position": [x, y]} for i, x, y in places]}))
+        plans = {p: cueball.plan_shot(layout, 1, pocket=p, seed=17, simulations=1000) for p in ("any", "called")}
+        self.assertEqual(plans["any"]["cue"], plans["called"]["cue"])
+        self.assertLess(plans["called"]["success_probability"], plans["any"]["success_probability"])
+
     def test_bad_input_names_the_field(self) -> None:
         for kwargs, field in (({"simulations": 10}, "simulations"), ({"noise": "loud"}, "noise"),
                               ({"kinds": ["masse"]}, "kinds"), ({"kinds": []}, "kinds"),

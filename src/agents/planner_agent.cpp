@@ -67,6 +67,7 @@ PlanRequest plan_request(const Turn& t, const std::vector<int>& targets, const s
   else
     q.targets = targets;
   q.kinds = kinds;
+  q.call_shot = t.legal.call_required;  // the pocket is called (WPA 1.6): a pot counts only there
   q.noise = t.noise;
   q.seed = seed;
   q.simulations = t.options.simulations;

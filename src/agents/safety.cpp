@@ -269,13 +269,14 @@ struct Reply {
   Scenario table;
   int cue_ball = 0;
   std::vector<int> targets;
+  bool call_shot = false;  // the reply's pocket is called (WPA 1.6)
 };
 std::optional<Reply> reply_table(const GameState& state) {
   if (state.over) return std::nullopt;
   const GameState view = as_played(state);
   const LegalActions legal = legal_actions(view);
   if (!legal.shoot) return std::nullopt;
-  Reply r{view.table, legal.cue_ball, shot_targets(view, legal)};
+  Reply r{view.table, legal.cue_ball, shot_targets(view, legal), legal.call_required};
   if (r.targets.empty()) return std::nullopt;
   if (legal.ball_in_hand)
     if (const std::optional<Vec2> spot = ghost_ball_in_hand_spot(r.table, r.cue_ball, r.targets, *legal.ball_in_hand))
@@ -308,6 +309,7 @@ double planned_chance(const GameState& state, const CueStrikeNoise& noise, std::
   else
     q.targets = reply->targets;
   q.kinds = {ShotKind::direct, ShotKind::bank};
+  q.call_shot = reply->call_shot;
   q.noise = noise;
   q.seed = seed;
   q.simulations = kSafetyReplySimulations;

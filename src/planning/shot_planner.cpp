@@ -174,7 +174,7 @@ NoisyOutcomes noisy_outcomes(const Scenario& table_state, const PlanRequest& q, 
   noisy.noise = q.noise;
   const std::size_t cue = index_of(noisy.balls, cue_ball), target = index_of(noisy.balls, shot.target);
   const int first_contact = shot.intermediate_ball >= 0 ? shot.intermediate_ball : shot.target;
-  const std::optional<int> pocket = q.pocket ? std::optional<int>(shot.pocket) : std::nullopt;
+  const std::optional<int> pocket = q.pocket || q.call_shot ? std::optional<int>(shot.pocket) : std::nullopt;
   const std::vector<ShotAction> actions(static_cast<std::size_t>(shots), shot.strike);
   ManyOptions options;
   options.seed = q.seed;

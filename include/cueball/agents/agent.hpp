@@ -335,7 +335,9 @@ CueStrikeNoise planning_noise(const AgentOptions& options, const GameState& stat
 /// options.fallback_kinds; with none feasible, safe_hit() (from
 /// ghost_ball_in_hand_spot()'s spot, or a seeded random free spot, when in
 /// hand), a push-out when one may be announced. The call is the planned
-/// target and pocket (the safety: its ball and nearest pocket); the
+/// target and pocket (the safety: its ball and nearest pocket), and where
+/// the rules ask for one every plan is a call shot (PlanRequest::call_shot:
+/// a pot counts only in the shot's own pocket, as the rules score it); the
 /// nomination, the planned target. Every plan is seeded with `seed` itself
 /// (so a caller's seeds reproduce plan_shot's), the decision's evaluation
 /// with stream_seed(seed, 1), a random spot with stream_seed(seed, 2).

@@ -95,8 +95,9 @@
 // A noise-free strike pots only when the target drops in the intended
 // pocket, the cue ball's first contact is the target (for a combination: ball
 // A) and the cue ball is not pocketed (a scratch). A noisy shot succeeds on
-// the same terms, except that a request without a pocket (any pocket, as in
-// 9-ball) counts the target dropping in any pocket; with several legal
+// the same terms, except that a request without a pocket and not a call
+// shot (any pocket, as in 9-ball) counts the target dropping in any pocket
+// (PlanRequest::call_shot: only in the shot's own pocket); with several legal
 // targets (PlanRequest::targets) each shot is planned on one of them, its
 // target, and succeeds on its own target's terms; a miscue or an
 // event-limit failure is a failure. Kinds are tried only when asked for: the default is direct
@@ -203,6 +204,12 @@ struct PlanRequest {
   /// ball). Empty: {target}. No id twice, none the cue ball.
   std::vector<int> targets;
   std::optional<int> pocket;             ///< index into table.pockets (a called pocket); none: any pocket
+  /// Call shot (WPA Rules of Play 1.6; 8-ball 3.x and 10-ball 9.x, not
+  /// 9-ball): each shot counts a pot only in its own pocket (the one it aims
+  /// at, PlannedShot::pocket, which the player calls), as the rules score
+  /// it; false: a pot in any pocket counts. Its success estimates, and the
+  /// leaves position play scores, change; the candidates do not.
+  bool call_shot = false;
   std::vector<ShotKind> kinds{ShotKind::direct, ShotKind::bank};
   CueStrikeNoise noise = tournament_noise();  ///< m/s, rad, rad, m, m
   std::uint64_t seed = 0;

@@ -356,6 +356,44 @@ TEST(Simulator, ValidationOfAnUnchangedTableAndSettingsIsNotRepeatedButStillCatc
   EXPECT_THROW(simulate(bad_table, balls, s.settings), InvalidArgument);
 }
 
+// The table's and settings' part of a simulation (its cushions' and jaws'
+// impact models, contact lines, pocket groups) is kept per thread while the
+// table and settings stay the same: a result never depends on the
+// simulations before it. Shots on tables and settings that differ in one
+// part each (another table, a cushion model, a cushion's constant, the
+// cushions' contact height, the cloth), played interleaved on one thread, give to the
+// bit what each gives first on a thread of its own.
+TEST(Simulator, AResultDoesNotDependOnTheSimulationsBeforeIt) {
+  const Scenario pool = default_scenario();
+  std::vector<Scenario> shots(6, pool);
+  shots[1] = scenario_from_json(R"({"table": "snooker_12ft", "rack": {"type": "snooker"},
+                                   "cue": {"ball": 0, "target": 1, "speed": 8.0}})");
+  shots[2].settings.cushion = default_cushion_settings(CushionModel::han_2005);
+  shots[3].settings.cushion.friction = 0.2;
+  for (CushionSegment& c : shots[4].table.cushions) c.contact_height = 1.35 * pool.settings.parameters.ball.radius;
+  shots[5].settings.parameters.cloth.sliding_friction *= 1.5;
+  const auto fingerprint = [](const Scenario& s) {
+    const SimulationResult r = run_scenario(s);
+    std::vector<double> f{r.end_time, static_cast<double>(r.events.size())};
+    for (std::size_t i = 0; i < r.balls.size(); ++i) {
+      const BallState b = r.state_at(i, r.end_time, s.settings.parameters);
+      f.insert(f.end(), {b.position.x, b.position.y});
+    }
+    return f;
+  };
+  std::vector<std::vector<double>> alone(shots.size());
+  for (std::size_t k = 0; k < shots.size(); ++k) {
+    std::thread t([&] { alone[k] = fingerprint(shots[k]); });  // a thread keeps nothing from another
+    t.join();
+  }
+  for (std::size_t k = 1; k < shots.size(); ++k) EXPECT_NE(alone[k], alone[0]) << "shot " << k << " is not another shot";
+  for (int round = 0; round < 2; ++round)
+    for (std::size_t k = 0; k < shots.size(); ++k) {
+      EXPECT_EQ(fingerprint(shots[k]), alone[k]) << "shot " << k << " after shot " << (k + shots.size() - 1) % shots.size();
+      EXPECT_EQ(fingerprint(shots[0]), alone[0]) << "the pool shot after shot " << k;
+    }
+}
+
 TEST(Simulator, TrajectorySegmentsReproduceTheStatesAtEvents) {
   const Scenario s = default_scenario();
   const SimulationResult r = run_scenario(s);

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstdio>
 #include <limits>
+#include <memory>
 #include <span>
 #include <string>
 #include <tuple>
@@ -136,6 +137,106 @@ Box box_inside_playing_area(const Table& table) {
   return box;
 }
 
+// A pocket and the jaws nearest to it (jaws far from every pocket form
+// groups of their own), with a circle containing all their contact circles.
+struct PocketGroup {
+  int pocket = -1;
+  std::vector<std::size_t> jaws;
+  Vec2 centre;
+  double radius = 0.0;
+};
+
+// What a simulation derives from the table and the settings alone: the
+// ball-ball contact, each cushion's and jaw's impact model and contact
+// line, the pockets grouped with their jaws, a box inside the playing area.
+// Built once for a table and settings on each thread and kept while a
+// thread's simulations use the same ones (table_contacts()), so that a loop
+// of simulations on one table (a planner's trials, a batch's noisy shots, a
+// user's loop) pays for it once: about 2 us of a pool table's simulation.
+struct TableContacts {
+  BallCollisionContact ball_contact;
+  ClusterSettings cluster_settings;  // the ball-ball model's e, phenolic balls' K / m
+  std::vector<CushionContact> cushion_models, jaw_models;
+  std::vector<ContactLine> cushion_lines;
+  std::vector<Box> cushion_boxes;  // where a ball centre can touch each cushion
+  std::vector<double> jaw_distance;
+  std::vector<PocketGroup> groups;
+  Box inner_box;  // wholly inside the playing area (check_on_table's fast path)
+};
+
+void group_pockets_and_jaws(const Table& table, TableContacts& c) {
+  for (std::size_t q = 0; q < table.pockets.size(); ++q)
+    c.groups.push_back({static_cast<int>(q), {}, table.pockets[q].centre, table.pockets[q].radius});
+  for (std::size_t j = 0; j < table.jaws.size(); ++j) {
+    const Vec2 centre = table.jaws[j].centre;
+    PocketGroup* nearest = nullptr;
+    for (PocketGroup& g : c.groups)
+      if (g.pocket >= 0 && (!nearest || norm(centre - g.centre) < norm(centre - nearest->centre))) nearest = &g;
+    if (!nearest || norm(centre - nearest->centre) > 0.3) {
+      c.groups.push_back({-1, {j}, centre, c.jaw_distance[j]});
+      continue;
+    }
+    nearest->jaws.push_back(j);
+    nearest->radius = std::max(nearest->radius, norm(centre - nearest->centre) + c.jaw_distance[j]);
+  }
+}
+
+TableContacts make_table_contacts(const Table& table, const SimulationSettings& settings) {
+  const Parameters& p = settings.parameters;
+  TableContacts c;
+  c.ball_contact = ball_collision_contact(p, settings.ball_collision_model, settings.ball_collision);
+  c.cluster_settings.restitution = c.ball_contact.model == BallCollisionModel::mathavan_2014
+                                       ? c.ball_contact.mathavan.restitution
+                                       : c.ball_contact.coulomb.restitution;
+  c.cluster_settings.stiffness = hertz_stiffness_per_mass(p.ball);
+  // Contacts left slower than half the impacts' threshold are resting
+  // contacts (resting_contact.hpp).
+  c.cluster_settings.slow_speed = 0.5 * kPushSpeed;
+  // A table has one contact height or a few: each model (and its
+  // validation) is built once.
+  std::vector<std::pair<double, CushionContact>> by_height;
+  const auto model_for = [&](double contact_height) {
+    for (const auto& [height, model] : by_height)
+      if (height == contact_height) return model;
+    by_height.emplace_back(contact_height, cushion_contact(p, settings.cushion, contact_height));
+    return by_height.back().second;
+  };
+  for (const CushionSegment& s : table.cushions) {
+    c.cushion_models.push_back(model_for(s.contact_height));
+    c.cushion_lines.push_back(contact_line(s.start, s.end, cushion_contact_distance(s.contact_height, p.ball.radius)));
+    // A ball centre touching this cushion lies within the contact distance
+    // of the segment.
+    const double d = c.cushion_lines.back().contact_distance + kBoxSlack;
+    c.cushion_boxes.push_back({{std::min(s.start.x, s.end.x) - d, std::min(s.start.y, s.end.y) - d},
+                               {std::max(s.start.x, s.end.x) + d, std::max(s.start.y, s.end.y) + d}});
+  }
+  for (const JawArc& j : table.jaws) {
+    c.jaw_models.push_back(model_for(j.contact_height));
+    c.jaw_distance.push_back(j.radius + cushion_contact_distance(j.contact_height, p.ball.radius));
+  }
+  group_pockets_and_jaws(table, c);
+  c.inner_box = box_inside_playing_area(table);
+  return c;
+}
+
+// The table contacts of this table and these settings: this thread's last
+// ones when the table (its ball too) and the settings are the same (==,
+// which no NaN passes), else built anew. Shared, so that a simulation keeps
+// its own while another on the same thread replaces them.
+std::shared_ptr<const TableContacts> table_contacts(const Table& table, const SimulationSettings& settings) {
+  struct Last {
+    Table table;
+    SimulationSettings settings;
+    std::shared_ptr<const TableContacts> contacts;
+  };
+  thread_local Last last;
+  if (last.contacts && last.settings == settings && last.table == table && last.table.ball == table.ball)
+    return last.contacts;
+  auto contacts = std::make_shared<const TableContacts>(make_table_contacts(table, settings));  // may throw
+  last = {table, settings, contacts};
+  return contacts;
+}
+
 class Simulation {
  public:
   Simulation(const Table& table, const std::vector<SimulationBall>& balls, const SimulationSettings& settings)
@@ -143,30 +244,17 @@ class Simulation {
         settings_(settings),
         p_(settings.parameters),
         n_(static_cast<int>(balls.size())),
-        ball_contact_(ball_collision_contact(p_, settings.ball_collision_model, settings.ball_collision)),
-        stiffness_(hertz_stiffness_per_mass(p_.ball)) {
-    cluster_settings_.restitution = ball_contact_.model == BallCollisionModel::mathavan_2014
-                                        ? ball_contact_.mathavan.restitution
-                                        : ball_contact_.coulomb.restitution;
-    cluster_settings_.stiffness = stiffness_;
-    // Contacts left slower than half the impacts' threshold are resting
-    // contacts (resting_contact.hpp).
-    cluster_settings_.slow_speed = 0.5 * kPushSpeed;
-    for (const CushionSegment& c : table.cushions) {
-      cushion_models_.push_back(model_for(c.contact_height));
-      cushion_lines_.push_back(contact_line(c.start, c.end, cushion_contact_distance(c.contact_height, p_.ball.radius)));
-      // A ball centre touching this cushion lies within the contact distance
-      // of the segment.
-      const double d = cushion_lines_.back().contact_distance + kBoxSlack;
-      cushion_boxes_.push_back({{std::min(c.start.x, c.end.x) - d, std::min(c.start.y, c.end.y) - d},
-                                {std::max(c.start.x, c.end.x) + d, std::max(c.start.y, c.end.y) + d}});
-    }
-    for (const JawArc& j : table.jaws) {
-      jaw_models_.push_back(model_for(j.contact_height));
-      jaw_distance_.push_back(j.radius + cushion_contact_distance(j.contact_height, p_.ball.radius));
-    }
-    group_pockets_and_jaws();
-    inner_box_ = box_inside_playing_area(table);
+        contacts_(table_contacts(table, settings)),
+        ball_contact_(contacts_->ball_contact),
+        cluster_settings_(contacts_->cluster_settings),
+        stiffness_(cluster_settings_.stiffness),
+        cushion_models_(contacts_->cushion_models),
+        jaw_models_(contacts_->jaw_models),
+        cushion_lines_(contacts_->cushion_lines),
+        cushion_boxes_(contacts_->cushion_boxes),
+        jaw_distance_(contacts_->jaw_distance),
+        groups_(contacts_->groups),
+        inner_box_(contacts_->inner_box) {
     result_.balls.resize(balls.size());
     const auto n = balls.size();
     state_.resize(n);
@@ -222,44 +310,7 @@ class Simulation {
   }
 
  private:
-  // The impact model of a cushion or jaw at this contact height. A table has
-  // one height or a few: each model (and its validation) is built once.
-  CushionContact model_for(double contact_height) {
-    for (const auto& [height, model] : models_by_height_) {
-      if (height == contact_height) return model;
-    }
-    const CushionContact m = cushion_contact(p_, settings_.cushion, contact_height);
-    models_by_height_.emplace_back(contact_height, m);
-    return m;
-  }
-
   std::size_t idx(int i) const { return static_cast<std::size_t>(i); }
-
-  // A pocket and the jaws nearest to it (jaws far from every pocket form
-  // groups of their own), with a circle containing all their contact circles.
-  struct PocketGroup {
-    int pocket = -1;
-    std::vector<std::size_t> jaws;
-    Vec2 centre;
-    double radius = 0.0;
-  };
-
-  void group_pockets_and_jaws() {
-    for (std::size_t q = 0; q < table_.pockets.size(); ++q)
-      groups_.push_back({static_cast<int>(q), {}, table_.pockets[q].centre, table_.pockets[q].radius});
-    for (std::size_t j = 0; j < table_.jaws.size(); ++j) {
-      const Vec2 c = table_.jaws[j].centre;
-      PocketGroup* nearest = nullptr;
-      for (PocketGroup& g : groups_)
-        if (g.pocket >= 0 && (!nearest || norm(c - g.centre) < norm(c - nearest->centre))) nearest = &g;
-      if (!nearest || norm(c - nearest->centre) > 0.3) {
-        groups_.push_back({-1, {j}, c, jaw_distance_[j]});
-        continue;
-      }
-      nearest->jaws.push_back(j);
-      nearest->radius = std::max(nearest->radius, norm(c - nearest->centre) + jaw_distance_[j]);
-    }
-  }
 
   // Whether the path's hull over the horizon comes within `radius` of `centre`.
   static bool reaches_circle(const QuadraticPath& s, Vec2 centre, double radius, double horizon) {
@@ -683,9 +734,18 @@ class Simulation {
   const Parameters& p_;
   int n_;
   double now_ = 0.0;
-  BallCollisionContact ball_contact_;
-  ClusterSettings cluster_settings_;  // the ball-ball model's e, phenolic balls' K / m
-  double stiffness_ = 0.0;            // cluster_settings_.stiffness
+  // The table's and settings' part (table_contacts()), shared while it is used.
+  std::shared_ptr<const TableContacts> contacts_;
+  const BallCollisionContact& ball_contact_;
+  const ClusterSettings& cluster_settings_;
+  double stiffness_ = 0.0;  // cluster_settings_.stiffness
+  const std::vector<CushionContact>& cushion_models_;
+  const std::vector<CushionContact>& jaw_models_;
+  const std::vector<ContactLine>& cushion_lines_;
+  const std::vector<Box>& cushion_boxes_;  // where a ball centre can touch each cushion
+  const std::vector<double>& jaw_distance_;
+  const std::vector<PocketGroup>& groups_;
+  Box inner_box_;  // wholly inside the playing area (check_on_table's fast path)
   struct ClusterBall {
     int ball;
     BallState state;
@@ -693,11 +753,6 @@ class Simulation {
   std::vector<ClusterBall> cluster_;  // touching_cluster()'s
   std::vector<ClusterContact> cluster_contacts_;
   std::vector<char> in_cluster_;
-  std::vector<CushionContact> cushion_models_, jaw_models_;
-  std::vector<std::pair<double, CushionContact>> models_by_height_;  // model_for()'s cache
-  std::vector<ContactLine> cushion_lines_;
-  std::vector<double> jaw_distance_;
-  std::vector<PocketGroup> groups_;
   std::vector<BallState> state_;  // state at time_
   std::vector<double> time_;
   std::vector<MotionPhase> phase_;
@@ -705,8 +760,6 @@ class Simulation {
   std::vector<QuadraticPath> path_;         // from time_
   std::vector<double> path_end_;            // absolute time the path changes (sliding or rolling ends)
   std::vector<Box> path_box_;               // bounds path_ from time_ to path_end_
-  std::vector<Box> cushion_boxes_;          // where a ball centre can touch each cushion
-  Box inner_box_;                           // wholly inside the playing area (check_on_table's fast path)
   std::vector<Candidate> transition_next_;
   double contact_ = 0.0;                    // 2R
   std::vector<char> active_;

@@ -55,11 +55,18 @@ Vec2 closest_approach(const BallTrajectory& b, double end_time, Vec2 p, const Pa
       if (d < seg_best) seg_best = d, best_i = i;
     }
     double lo = span * std::max(0, best_i - 1) / kSamples, hi = span * std::min(kSamples, best_i + 1) / kSamples;
+    // Golden section, each step reusing the inner point it keeps.
     const double g = (std::sqrt(5.0) - 1.0) / 2.0;
+    double m1 = hi - g * (hi - lo), m2 = lo + g * (hi - lo);
+    double d1 = norm(at(m1) - p), d2 = norm(at(m2) - p);
     for (int it = 0; it < 30 && hi - lo > 1e-7; ++it) {
-      const double m1 = hi - g * (hi - lo), m2 = lo + g * (hi - lo);
-      if (norm(at(m1) - p) < norm(at(m2) - p)) hi = m2;
-      else lo = m1;
+      if (d1 < d2) {
+        hi = m2, m2 = m1, d2 = d1;
+        m1 = hi - g * (hi - lo), d1 = norm(at(m1) - p);
+      } else {
+        lo = m1, m1 = m2, d1 = d2;
+        m2 = lo + g * (hi - lo), d2 = norm(at(m2) - p);
+      }
     }
     Vec2 x = at(0.5 * (lo + hi));
     if (norm(x - p) > seg_best) x = at(span * best_i / kSamples);

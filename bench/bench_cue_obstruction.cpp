@@ -15,6 +15,7 @@
 
 #include "cueball/table/cue_obstruction.hpp"
 #include "cueball/table/table.hpp"
+#include "cue_rail_by_every_sample.hpp"  // tests/support/
 
 namespace {
 
@@ -24,22 +25,6 @@ struct Case {
   Vec2 cue_ball;
   CueStrike strike;
 };
-
-// The rail test by its definition: every 2 mm sample from the tip.
-bool every_sample(const Table& table, Vec2 cue_ball, const CueStrike& strike, double R) {
-  const CueAxis axis = cue_axis(cue_ball, strike, R);
-  const double rail = rail_height(table);
-  const double drop = kCueTipRadius / std::cos(strike.elevation);
-  for (double s = 0.0; s <= kCueLength; s += 0.002) {
-    const Vec3 x = axis.tip + s * axis.toward_butt;
-    const Vec2 p{x.x, x.y};
-    bool over = !inside_playing_area(table, p);
-    for (std::size_t k = 0; k < table.cushions.size() && !over; ++k)
-      over = distance_to_segment(table.cushions[k], p) < kCueTipRadius;
-    if (over) return x.z - drop < rail;
-  }
-  return false;
-}
 
 void BM_CueObstructionRail(benchmark::State& st) {
   const Table table = build_table(pool_table_9ft_spec());
@@ -62,7 +47,7 @@ void BM_CueObstructionRail(benchmark::State& st) {
     const auto t0 = std::chrono::steady_clock::now();
     for (const Case& c : cases) agree += cue_obstructed(table, c.cue_ball, {}, c.strike, R) ? 1 : 0;
     const auto t1 = std::chrono::steady_clock::now();
-    for (const Case& c : cases) agree -= every_sample(table, c.cue_ball, c.strike, R) ? 1 : 0;
+    for (const Case& c : cases) agree -= test::over_rail_low_by_every_sample(table, c.cue_ball, c.strike, R) ? 1 : 0;
     const auto t2 = std::chrono::steady_clock::now();
     fast_s += std::chrono::duration<double>(t1 - t0).count();
     sampled_s += std::chrono::duration<double>(t2 - t1).count();

@@ -12,26 +12,12 @@
 
 #include "cueball/table/cue_obstruction.hpp"
 #include "cueball/table/table.hpp"
+#include "cue_rail_by_every_sample.hpp"
 
 namespace cueball {
 namespace {
 
-// The model by its definition: every 2 mm sample of the axis from the tip,
-// the first one outside the playing area or within the cue's radius of a
-// nose line decides (no balls: the rail alone).
-bool over_rail_low_by_every_sample(const Table& table, Vec2 cue_ball, const CueStrike& strike, double R) {
-  const CueAxis axis = cue_axis(cue_ball, strike, R);
-  const double rail = rail_height(table);
-  const double drop = kCueTipRadius / std::cos(strike.elevation);
-  for (double s = 0.0; s <= kCueLength; s += 0.002) {
-    const Vec3 x = axis.tip + s * axis.toward_butt;
-    const Vec2 p{x.x, x.y};
-    bool over = !inside_playing_area(table, p);
-    for (const CushionSegment& k : table.cushions) over = over || distance_to_segment(k, p) < kCueTipRadius;
-    if (over) return x.z - drop < rail;
-  }
-  return false;
-}
+using test::over_rail_low_by_every_sample;
 
 TEST(CueObstruction, PassingOverClearSamplesGivesTheAnswerOfEverySample) {
   const Table tables[] = {build_table(pool_table_9ft_spec()), snooker_table_12ft(), carom_table_10ft()};

@@ -247,7 +247,6 @@ class Simulation {
         contacts_(table_contacts(table, settings)),
         ball_contact_(contacts_->ball_contact),
         cluster_settings_(contacts_->cluster_settings),
-        stiffness_(cluster_settings_.stiffness),
         cushion_models_(contacts_->cushion_models),
         jaw_models_(contacts_->jaw_models),
         cushion_lines_(contacts_->cushion_lines),
@@ -539,7 +538,7 @@ class Simulation {
     cluster_.clear();
     cluster_contacts_.clear();
     in_cluster_.assign(idx(n_), 0);
-    const double reach = std::max(hertz_compression(closing, stiffness_), kContactTolerance);
+    const double reach = std::max(hertz_compression(closing, cluster_settings_.stiffness), kContactTolerance);
     const auto join = [&](int k, const BallState& s) {
       in_cluster_[idx(k)] = 1;
       cluster_.push_back({k, s});
@@ -738,7 +737,6 @@ class Simulation {
   std::shared_ptr<const TableContacts> contacts_;
   const BallCollisionContact& ball_contact_;
   const ClusterSettings& cluster_settings_;
-  double stiffness_ = 0.0;  // cluster_settings_.stiffness
   const std::vector<CushionContact>& cushion_models_;
   const std::vector<CushionContact>& jaw_models_;
   const std::vector<ContactLine>& cushion_lines_;

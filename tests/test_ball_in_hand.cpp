@@ -86,6 +86,22 @@ TEST(BallInHand, ScoresAtLeastAsWellAsAStraightInPlacedByHand) {
   EXPECT_GE(r.plan.leave.score, h.leave.score - 3.0 * se);
 }
 
+// LeaveValuation::ghost_ball: the spots scored by their ghost-ball chance,
+// no engine run for them; the spot chosen is as legal and its shot pots.
+TEST(BallInHand, TheGhostBallValuationPlacesTheCueBallWithFewerRunsAndPots) {
+  const Scenario s = two_balls();
+  BallInHandRequest q = request_for(1);
+  const BallInHandResult by_windows = plan_ball_in_hand(s, q);
+  q.position.valuation = LeaveValuation::ghost_ball;
+  const BallInHandResult r = plan_ball_in_hand(s, q);
+  EXPECT_LT(r.plan.plan.simulations, by_windows.plan.plan.simulations);
+  EXPECT_TRUE(ball_on_table(s.table, r.cue_ball, s.settings.parameters.ball.radius));
+  const SimulationResult played = run_scenario(scenario_with_shot(r.table, 0, r.plan.plan.shot, q.position.shot.noise));
+  for (const BallTrajectory& b : played.balls) EXPECT_EQ(b.pocketed, b.id == 1) << "ball " << b.id;
+  EXPECT_GT(r.plan.plan.shot.success_probability, 0.5);
+  EXPECT_EQ(r.plan.leave.next_kind, r.plan.leave.next_feasible ? "direct" : "");
+}
+
 TEST(BallInHand, StaysInTheRegionAndIsDeterministic) {
   const Scenario s = two_balls();
   BallInHandRequest q = request_for(1);

@@ -238,6 +238,11 @@ TEST(PlannerAgent, RefusesBadOptions) {
   o = cheap();
   o.simulations = 0;
   test::expect_invalid("simulations", [&] { (void)planner_action(o, s, 1); });
+  o = cheap();
+  o.position_simulations = 500;
+  o.position_depth = 2;
+  o.position_valuation = LeaveValuation::ghost_ball;  // depth 1 only
+  test::expect_invalid("position_depth", [&] { (void)choose_action(o, s, 1); });
 }
 
 TEST(PlannerAgent, PlaysANineBallGameAgainstTheGhostBallToTheEnd) {

@@ -4,7 +4,8 @@
 // lookahead doing at least as well as the shot planned without it (and
 // better somewhere), the default next ball, an explicit next target played
 // for (PositionRequest::next_targets), 9-ball's next targets given
-// explicitly the same plan as the default, and bad input.
+// explicitly the same plan as the default, the ghost-ball valuation's
+// scores, and bad input.
 #include "cueball/planning/position_play.hpp"
 
 #include <gtest/gtest.h>
@@ -18,6 +19,7 @@
 
 #include "ball_layout.hpp"
 #include "cueball/core/errors.hpp"
+#include "cueball/planning/ghost_ball.hpp"
 #include "cueball/simulation/scenario.hpp"
 #include "cueball/table/table.hpp"
 #include "test_scale.hpp"
@@ -311,6 +313,53 @@ TEST(PositionPlay, DepthTwoPrefersTheLeaveWhoseNextTwoShotsAreEasier) {
   EXPECT_GT(after_two, after_one + 0.3) << "depth 1's leave " << after_one << ", depth 2's " << after_two;
 }
 
+// LeaveValuation::ghost_ball: each leave scored by the ghost-ball chance of
+// the next ball from where it leaves the cue ball (recomputed here from the
+// table the shot leaves), no next shot planned, and far fewer engine runs
+// than by windows for the same request.
+TEST(PositionPlay, TheGhostBallValuationScoresEachLeaveByItsGhostBallChance) {
+  int compared = 0;
+  for (unsigned seed : {3u, 4u, 5u, 6u, 7u}) {
+    SCOPED_TRACE(seed);
+    const Scenario s = random_layout(seed);
+    PositionRequest q = request_for(1);
+    q.valuation = LeaveValuation::ghost_ball;
+    if (seed % 2 == 1) q.noisy_leaves = 0;  // the noise-free leave alone
+    PositionPlanResult r, by_windows;
+    try {
+      r = plan_shot_for_position(s, q);
+      q.valuation = LeaveValuation::windows;
+      by_windows = plan_shot_for_position(s, q);
+      q.valuation = LeaveValuation::ghost_ball;
+    } catch (const NoFeasibleShot&) {
+      continue;
+    }
+    EXPECT_LT(r.plan.simulations, by_windows.plan.simulations);
+    const auto check = [&](const PlannedShot& shot, const Leave& leave) {
+      const Scenario left = table_left_by(s, shot);
+      const bool next_on = std::any_of(left.balls.begin(), left.balls.end(), [](const SimulationBall& b) { return b.id == 2; });
+      if (!next_on) return;
+      const double chance = best_ghost_ball_chance(left, 0, {2}, q.shot.noise.aim);
+      EXPECT_EQ(leave.next_success_probability, chance);
+      EXPECT_EQ(leave.next_feasible, chance > 0.0);
+      if (leave.next_feasible) {
+        EXPECT_EQ(leave.next_kind, "direct");
+        EXPECT_EQ(leave.next_ball, 2);
+      }
+      if (leave.noisy_leaves > 0) {
+        EXPECT_DOUBLE_EQ(leave.score, leave.screened_probability * leave.noisy_next_window);
+      } else {
+        EXPECT_DOUBLE_EQ(leave.score, leave.screened_probability * chance);
+      }
+      ++compared;
+    };
+    check(r.plan.shot, r.leave);
+    for (std::size_t k = 0; k < r.plan.alternatives.size(); ++k) check(r.plan.alternatives[k], r.alternative_leaves[k]);
+    for (std::size_t k = 0; k < r.alternative_leaves.size(); ++k) EXPECT_LE(r.alternative_leaves[k].score, r.leave.score);
+  }
+  EXPECT_GE(compared, 4);
+}
+
 TEST(PositionPlay, BadInputNamesTheField) {
   const Scenario s = random_layout(3);
   const auto field = [&](PositionRequest q) -> std::string {
@@ -340,6 +389,9 @@ TEST(PositionPlay, BadInputNamesTheField) {
   q.depth = 0;
   EXPECT_EQ(field(q), "depth");
   q.depth = kMaxPositionDepth + 1;
+  EXPECT_EQ(field(q), "depth");
+  q.depth = 2;
+  q.valuation = LeaveValuation::ghost_ball;  // depth 1 only
   EXPECT_EQ(field(q), "depth");
   q = request_for(5);
   EXPECT_EQ(field(q), "target");

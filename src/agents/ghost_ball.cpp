@@ -24,6 +24,7 @@
 #include "cueball/agents/agent.hpp"
 #include "cueball/core/errors.hpp"
 #include "cueball/core/random.hpp"
+#include "cueball/planning/ghost_ball.hpp"
 
 namespace cueball {
 
@@ -74,48 +75,19 @@ Action ghost_shot(const LegalActions& legal, const Scenario& table, const std::v
 
 std::optional<GhostBallShot> ghost_ball_shot(const Scenario& table, int cue_ball, const std::vector<int>& targets,
                                              double speed) {
-  const SimulationBall* cue = find_ball(table.balls, cue_ball);
-  if (!cue) return std::nullopt;
-  const double R = table.settings.parameters.ball.radius;
-  const Vec2 C = cue->state.position;
-  std::optional<GhostBallShot> best;
-  double best_score = -1.0;
-  for (const int target : targets) {
-    const SimulationBall* object = find_ball(table.balls, target);
-    if (!object || target == cue_ball) continue;
-    const Vec2 O = object->state.position;
-    for (std::size_t p = 0; p < table.table.pockets.size(); ++p) {
-      const Vec2 P = table.table.pockets[p].centre;
-      const double op = norm(P - O);
-      if (op <= 0.0) continue;
-      const Vec2 u = (P - O) / op;
-      const Vec2 G = O - 2.0 * R * u;
-      const double cg = norm(G - C);
-      if (cg <= 0.0) continue;
-      const double cos_cut = dot((G - C) / cg, u);
-      if (cos_cut < std::cos(kMaxCutDeg * kDeg)) continue;
-      bool blocked = false;
-      for (const SimulationBall& b : table.balls) {
-        if (b.id == cue_ball || b.id == target) continue;
-        if (distance_to_segment(b.state.position, C, G) < 2.0 * R ||
-            distance_to_segment(b.state.position, O, P) < 2.0 * R)
-          blocked = true;
-      }
-      if (blocked) continue;
-      ShotAction a;
-      a.speed = speed;
-      a.aim_deg = angle_deg(G - C);
-      const std::optional<double> elevation = lowest_clear_elevation_deg(table, cue_ball, a);
-      if (!elevation) continue;
-      a.elevation_deg = *elevation;
-      const double score = cos_cut / (cg * op);
-      if (score > best_score) {
-        best_score = score;
-        best = GhostBallShot{target, static_cast<int>(p), a, score};
-      }
-    }
+  const std::vector<GhostBallPot> pots = ghost_ball_pots(table, cue_ball, targets);  // best score first
+  if (pots.empty()) return std::nullopt;
+  const Vec2 C = find_ball(table.balls, cue_ball)->state.position;
+  for (const GhostBallPot& pot : pots) {
+    ShotAction a;
+    a.speed = speed;
+    a.aim_deg = angle_deg(pot.ghost - C);
+    const std::optional<double> elevation = lowest_clear_elevation_deg(table, cue_ball, a);
+    if (!elevation) continue;
+    a.elevation_deg = *elevation;
+    return GhostBallShot{pot.target, pot.pocket, a, pot.score};
   }
-  return best;
+  return std::nullopt;
 }
 
 std::optional<Vec2> ghost_ball_in_hand_spot(const Scenario& table, int cue_ball, const std::vector<int>& targets,

@@ -134,6 +134,7 @@ Pot plan_pot(const Turn& t, const std::vector<ShotKind>& kinds) {
       p.next_simulations = position ? t.options.position_simulations : kInHandNextSimulations;
       p.noisy_leaves = t.options.position_noisy_leaves;
       p.depth = t.options.position_depth;
+      p.valuation = t.options.position_valuation;
       PositionPlanResult pr;
       if (in_hand) {
         BallInHandRequest h{p, std::nullopt};

@@ -19,6 +19,7 @@
 #include "cueball/agents/agent.hpp"
 #include "cueball/core/errors.hpp"
 #include "cueball/core/random.hpp"
+#include "cueball/planning/ghost_ball.hpp"
 #include "cueball/planning/shot_planner.hpp"
 
 namespace cueball {
@@ -329,9 +330,7 @@ double pot_chance(const GameState& state, const CueStrikeNoise& noise) {
   if (!reply) return 0.0;
   const std::optional<GhostBallShot> shot = ghost_ball_shot(reply->table, reply->cue_ball, reply->targets);
   if (!shot) return 0.0;
-  if (noise.aim <= 0.0) return 1.0;
-  const double tolerance = 2.0 * reply->table.settings.parameters.ball.radius * kPotTolerance * shot->score;
-  return std::erf(tolerance / (noise.aim * std::numbers::sqrt2));
+  return ghost_ball_pot_chance(shot->score, reply->table.settings.parameters.ball.radius, noise.aim);
 }
 
 std::optional<SafetyPlan> plan_safety(const GameState& state, const LegalActions& legal, std::optional<Vec2> place,

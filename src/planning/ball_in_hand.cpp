@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "cueball/core/errors.hpp"
+#include "cueball/planning/ghost_ball.hpp"
 #include "planning/shot_search.hpp"
 
 namespace cueball {
@@ -187,11 +188,28 @@ std::vector<Spot> grid_spots(const Hand& h) {
   return spots;
 }
 
+// A spot's chance by LeaveValuation::ghost_ball: the best ghost-ball pot of
+// its target into its pocket (a grid spot's: of any target into any pocket
+// the request allows).
+double ghost_ball_spot_chance(const Hand& h, const Spot& spot, bool grid) {
+  const std::optional<int>& allowed = h.q.position.shot.pocket;
+  const std::vector<int> ids = grid ? target_ids(h.q.position.shot) : std::vector<int>{spot.target};
+  for (const GhostBallPot& pot : ghost_ball_pots(spot.table, h.cue_id, ids))  // best first
+    if (grid ? !allowed || pot.pocket == *allowed : pot.pocket == spot.pocket)
+      return ghost_ball_pot_chance(pot.score, h.R, h.q.position.shot.noise.aim);
+  return 0.0;
+}
+
 // Step 2: each spot's direct shot into its pocket (a grid spot's: every
-// shot asked for) scored by its window probability, noise-free; the
-// kInHandSpots best kept, at most two a pocket (grid spots: no such limit).
+// shot asked for) scored by its window probability, noise-free (by
+// LeaveValuation::ghost_ball: its ghost-ball chance); the kInHandSpots best
+// kept, at most two a pocket (grid spots: no such limit).
 std::vector<const Spot*> kept_spots(const Hand& h, std::vector<Spot>& spots, bool grid, int& simulations) {
   for (Spot& spot : spots) {
+    if (h.q.position.valuation == LeaveValuation::ghost_ball) {
+      spot.window = ghost_ball_spot_chance(h, spot, grid);
+      continue;
+    }
     PlanRequest direct = h.q.position.shot;
     direct.cue_ball = h.cue_id;
     if (!grid) {

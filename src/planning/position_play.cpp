@@ -2,15 +2,34 @@
 #include "cueball/planning/position_play.hpp"
 
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <functional>
 #include <string>
 #include <utility>
 
 #include "cueball/core/errors.hpp"
+#include "cueball/planning/ghost_ball.hpp"
+#include "core/enum_names.hpp"
 #include "planning/shot_search.hpp"
 
 namespace cueball {
+
+namespace {
+constexpr std::array kLeaveValuations{LeaveValuation::windows, LeaveValuation::ghost_ball};
+}  // namespace
+
+const char* to_string(LeaveValuation valuation) {
+  switch (valuation) {
+    case LeaveValuation::windows: return "windows";
+    case LeaveValuation::ghost_ball: return "ghost_ball";
+  }
+  return "?";
+}
+std::optional<LeaveValuation> leave_valuation_from_string(std::string_view name) {
+  return value_named(kLeaveValuations, name);
+}
+std::string leave_valuation_names() { return names_of(kLeaveValuations, ""); }
 
 namespace {
 
@@ -113,6 +132,14 @@ PlanRequest next_request(const Lookahead& la, const std::vector<int>& ids) {
   return n;
 }
 
+// The next shot's value on table `left` for the balls `ids` (not empty), as
+// PositionRequest::valuation says: the best window probability of a
+// windows-only search (its runs counted), or the best ghost-ball chance.
+double next_shot_value(Lookahead& la, const Scenario& left, const std::vector<int>& ids) {
+  if (la.q.valuation == LeaveValuation::ghost_ball) return best_ghost_ball_chance(left, la.cue_id, ids, la.next.noise.aim);
+  return best_window_probability(left, next_request(la, ids), la.simulations);
+}
+
 // Step 1's search: plan_shot()'s step 4 widened (every shot and variant kept).
 ShotSearch wide_search(const PositionRequest& q) {
   ShotSearch wide;
@@ -191,8 +218,7 @@ void score_leaves_by_windows(Lookahead& la, std::vector<Candidate>& candidates) 
     // to score.
     c.next_ids = next_ids_on(c.left, la, {});
     c.next_window = 1.0;
-    if (!c.next_ids.empty())
-      c.next_window = best_window_probability(c.left, next_request(la, c.next_ids), la.simulations);
+    if (!c.next_ids.empty()) c.next_window = next_shot_value(la, c.left, c.next_ids);
     scores.push_back(c.shot.window_probability * c.next_window);
   }
   candidates.resize(scored);
@@ -244,7 +270,7 @@ double leave_value(Lookahead& la, const Scenario& left) {
   const std::vector<int> ids = next_ids_on(left, la, {});
   if (ids.empty()) return 1.0;
   if (la.q.depth >= 2) return two_shot_window(la, left, ids);
-  return best_window_probability(left, next_request(la, ids), la.simulations);
+  return next_shot_value(la, left, ids);
 }
 
 // The mean over the tables some noisy successes leave of leave_value(); 0
@@ -254,6 +280,35 @@ double noisy_next_window(Lookahead& la, const std::vector<Scenario>& leaves) {
   double sum = 0.0;
   for (const Scenario& left : leaves) sum += leave_value(la, left);
   return sum / static_cast<double>(leaves.size());
+}
+
+// Step 3's next shot by LeaveValuation::windows: plan_shot() in full from
+// the noise-free leave.
+void planned_next_shot(Lookahead& la, Candidate& c) {
+  try {
+    const ShotPlanResult n = plan_shot(c.left, next_request(la, c.next_ids));
+    la.simulations += n.simulations;
+    c.leave.next_feasible = true;
+    c.leave.next_ball = n.shot.target;
+    c.leave.next_success_probability = n.shot.success_probability;
+    c.leave.next_kind = to_string(n.shot.kind);
+    c.leave.next_pocket = n.shot.pocket_name;
+  } catch (const NoFeasibleShot&) {
+    la.simulations += la.q.next_simulations;
+  }
+}
+
+// Step 3's next shot by LeaveValuation::ghost_ball: the best ghost-ball pot
+// from the noise-free leave, its chance as the next shot's probability.
+void ghost_ball_next_shot(const Lookahead& la, Candidate& c) {
+  const std::vector<GhostBallPot> pots = ghost_ball_pots(c.left, la.cue_id, c.next_ids);
+  if (pots.empty()) return;
+  c.leave.next_feasible = true;
+  c.leave.next_ball = pots.front().target;
+  c.leave.next_success_probability =
+      ghost_ball_pot_chance(pots.front().score, c.left.settings.parameters.ball.radius, la.next.noise.aim);
+  c.leave.next_kind = to_string(ShotKind::direct);
+  c.leave.next_pocket = c.left.table.pockets[static_cast<std::size_t>(pots.front().pocket)].name;
 }
 
 // Step 3: the finalists, each shot screened on the same noisy draws and the
@@ -274,17 +329,8 @@ void screen_finalists(Lookahead& la, std::vector<Candidate>& candidates) {
     }
     c.leave.noisy_leaves = static_cast<int>(screened.leaves.size());
     c.leave.noisy_next_window = noisy_next_window(la, screened.leaves);
-    try {
-      const ShotPlanResult n = plan_shot(c.left, next_request(la, c.next_ids));
-      la.simulations += n.simulations;
-      c.leave.next_feasible = true;
-      c.leave.next_ball = n.shot.target;
-      c.leave.next_success_probability = n.shot.success_probability;
-      c.leave.next_kind = to_string(n.shot.kind);
-      c.leave.next_pocket = n.shot.pocket_name;
-    } catch (const NoFeasibleShot&) {
-      la.simulations += q.next_simulations;
-    }
+    if (q.valuation == LeaveValuation::ghost_ball) ghost_ball_next_shot(la, c);
+    else planned_next_shot(la, c);
     // With no noisy leave, the noise-free one: at depth 1 by the next
     // shot's full plan (the lookahead before issue 27), at depth 2 by
     // leave_value().
@@ -332,6 +378,9 @@ PositionPlanResult plan_shot_for_position(const Scenario& table_state, const Pos
                           "[0, " + std::to_string(kMaxPositionNoisyLeaves) + "]", "noisy leaves scored per finalist");
   if (q.depth < 1 || q.depth > kMaxPositionDepth)
     throw InvalidArgument("depth", static_cast<double>(q.depth), "[1, " + std::to_string(kMaxPositionDepth) + "]",
+                          "shots looked ahead");
+  if (q.valuation == LeaveValuation::ghost_ball && q.depth != 1)
+    throw InvalidArgument("depth", static_cast<double>(q.depth), "[1, 1] with valuation ghost_ball",
                           "shots looked ahead");
   PositionPlanResult result;
   // The cue ball as plan_shot() takes it (which checks it, the target and the rest).

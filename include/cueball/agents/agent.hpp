@@ -44,6 +44,7 @@
 
 #include "cueball/games/game.hpp"
 #include "cueball/games/record.hpp"
+#include "cueball/planning/ghost_ball.hpp"
 #include "cueball/planning/position_play.hpp"
 #include "cueball/planning/shot_planner.hpp"
 
@@ -89,6 +90,9 @@ struct AgentOptions {
   int position_noisy_leaves = kPositionNoisyLeaves;
   /// Position play: shots looked ahead (PositionRequest::depth), [1, kMaxPositionDepth].
   int position_depth = 1;
+  /// Position play and ball in hand: how a leave is valued
+  /// (PositionRequest::valuation); ghost_ball needs position_depth 1.
+  LeaveValuation position_valuation = LeaveValuation::windows;
   /// The execution noise the agent plans under (planner). None: the game's
   /// (GameConfig::noise), or tournament_noise() when the game has none (a
   /// plan under no noise cannot tell a safe pot from a thin one).
@@ -357,13 +361,9 @@ PlannerChoice planner_choice(const AgentOptions& options, const GameState& state
 // The opponent's chance is estimated twice. First by a quick screen, no
 // engine run: pot_chance(), the best ghost-ball pot of the balls on from the
 // table (with ball in hand, from ghost_ball_in_hand_spot()), turned into a
-// probability by the ghost-ball aim tolerance: a cue-ball aim error
-// d(theta) moves the contact point |CG| d(theta) sideways, which turns the
-// object ball by |CG| d(theta) / (2R cos(cut)), which must stay within
-// w / |OP| of the pocket's centre line (w = kPotTolerance): the aim
-// tolerance is 2R w cos(cut) / (|CG| |OP|) = 2R w score
-// (GhostBallShot::score), and under Gaussian aim noise sigma the pot
-// succeeds with probability erf(tolerance / (sigma sqrt 2)). Direct pots
+// probability by the ghost-ball aim tolerance (ghost_ball_pot_chance(),
+// planning/ghost_ball.hpp: erf(2R w score / (sigma sqrt 2)) under Gaussian
+// aim noise sigma, w = kPotTolerance, score = GhostBallShot::score). Direct pots
 // only: a leave that gives a bank counts as safe. Then, for the few
 // finalists, by the planner's own quick search: planned_chance(), plan_shot
 // (direct and bank, kSafetyReplySimulations runs, the same noise) from the
@@ -371,9 +371,6 @@ PlannerChoice planner_choice(const AgentOptions& options, const GameState& state
 // agent's decisions place it (ghost_ball_in_hand_spot()), or the ghost-ball
 // estimate when that is larger.
 
-/// The pocket's half-width for a ball's centre, m (a 9-ft table's corner
-/// mouth of 4.5 in less a ball, halved, rounded down).
-inline constexpr double kPotTolerance = 0.025;
 
 /// The chance that the player to act in `state` pots a ball on from the
 /// table (decisions due are taken as if the player shoots from the table as

@@ -26,7 +26,10 @@
 //      noise-free search with kMinPlanSimulations runs. The kInHandSpots
 //      best are kept (window probabilities in steps of 0.02, then the shorter
 //      cue ball and object ball paths first), at most two a target and pocket (grid
-//      spots: no such limit).
+//      spots: no such limit). With PositionRequest::valuation ghost_ball
+//      the spot's score is its ghost-ball chance instead (ghost_ball.hpp:
+//      the straight pot into its pocket, a grid spot's into any pocket
+//      allowed; no engine run).
 //   3. On each kept spot the shot is played for position
 //      (plan_shot_for_position(), the request's budgets, any pocket the
 //      request allows); the spot whose leave scores best (P(this pot) x

@@ -57,9 +57,15 @@
 //      kPositionEstimateFraction-th of the budget), so it carries no
 //      selection bias.
 //
-// The leave's quality is measured on the exact simulation and the real
-// planner, so it includes what the next shot needs (its cut, distance,
-// blockers and the cue's clearance), not a distance heuristic. Paper 001's
+// With PositionRequest::valuation ghost_ball, steps 2 and 3 value each
+// leave (noise-free and noisy) by the next shot's best ghost-ball chance
+// instead (ghost_ball.hpp, no engine run) and plan no next shot in full:
+// what a decision on a budget of a tenth of a second can afford.
+//
+// By default (valuation windows) the leave's quality is measured on the
+// exact simulation and the real planner, so it includes what the next shot
+// needs (its cut, distance, blockers and the cue's clearance), not a
+// distance heuristic. Paper 001's
 // inverse problem (a ball stopping at a planned point) is not used: the cue
 // ball's end after a collision is not a straight roll from the strike, so
 // the leave is read from the simulation instead.
@@ -68,6 +74,7 @@
 #include <array>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "cueball/planning/shot_planner.hpp"
@@ -100,6 +107,25 @@ inline constexpr std::size_t kPositionSecondShots = 3;
 /// final estimate of the one played, the budget over kPositionEstimateFraction.
 inline constexpr int kPositionScreenFraction = 5;
 inline constexpr int kPositionEstimateFraction = 4;
+
+/// How position play values a leave for the next shot (PositionRequest::valuation).
+enum class LeaveValuation : unsigned char {
+  /// The planner's window search: the best window probability of the next
+  /// shot's candidates (the request's kinds), found on the exact simulation
+  /// with `next_simulations` runs at most; each finalist's next shot also
+  /// planned in full (step 3). Milliseconds a leave.
+  windows,
+  /// The best ghost-ball pot's chance under the request's aim noise
+  /// (best_ghost_ball_chance(), ghost_ball.hpp): no engine run,
+  /// microseconds a leave; straight pots only, without throw, squirt, the
+  /// speed or the cue's clearance. For decisions on a budget of a tenth of a
+  /// second. `next_simulations` is not used; depth 1 only.
+  ghost_ball,
+};
+/// "windows", "ghost_ball".
+const char* to_string(LeaveValuation valuation);
+std::optional<LeaveValuation> leave_valuation_from_string(std::string_view name);
+std::string leave_valuation_names();
 
 struct PositionRequest {
   /// The shot that pots shot.target; its `simulations` is the budget of its
@@ -134,6 +160,9 @@ struct PositionRequest {
   /// (`next_simulations` runs a plan) for every plan; depth 2 makes about
   /// kPositionSecondShots + 1 times as many next plans.
   int depth = 1;
+  /// How a leave's next shot is valued in steps 2 and 3 (LeaveValuation);
+  /// ghost_ball needs depth 1.
+  LeaveValuation valuation = LeaveValuation::windows;
 };
 
 /// What a candidate leaves for the next shot.

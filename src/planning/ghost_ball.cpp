@@ -1,0 +1,57 @@
+// Ghost-ball pots: a table's straight pots from its geometry, and their
+// chance under the aim noise; see ghost_ball.hpp.
+#include "cueball/planning/ghost_ball.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+#include "cueball/planning/shot_planner.hpp"
+
+namespace cueball {
+
+std::vector<GhostBallPot> ghost_ball_pots(const Scenario& table, int cue_ball, const std::vector<int>& targets) {
+  std::vector<GhostBallPot> pots;
+  const SimulationBall* cue = find_ball(table.balls, cue_ball);
+  if (!cue) return pots;
+  const double R = table.settings.parameters.ball.radius;
+  const double min_cos_cut = std::cos(kMaxCutDeg * std::numbers::pi / 180.0);
+  const Vec2 C = cue->state.position;
+  for (const int target : targets) {
+    const SimulationBall* object = find_ball(table.balls, target);
+    if (!object || target == cue_ball) continue;
+    const Vec2 O = object->state.position;
+    for (std::size_t p = 0; p < table.table.pockets.size(); ++p) {
+      const Vec2 P = table.table.pockets[p].centre;
+      const double op = norm(P - O);
+      if (op <= 0.0) continue;
+      const Vec2 u = (P - O) / op;
+      const Vec2 G = O - 2.0 * R * u;
+      const double cg = norm(G - C);
+      if (cg <= 0.0) continue;
+      const double cos_cut = dot((G - C) / cg, u);
+      if (cos_cut < min_cos_cut) continue;
+      const bool blocked = std::any_of(table.balls.begin(), table.balls.end(), [&](const SimulationBall& b) {
+        return b.id != cue_ball && b.id != target &&
+               (distance_to_segment(b.state.position, C, G) < 2.0 * R ||
+                distance_to_segment(b.state.position, O, P) < 2.0 * R);
+      });
+      if (!blocked) pots.push_back({target, static_cast<int>(p), G, cos_cut / (cg * op)});
+    }
+  }
+  std::stable_sort(pots.begin(), pots.end(), [](const GhostBallPot& a, const GhostBallPot& b) { return a.score > b.score; });
+  return pots;
+}
+
+double ghost_ball_pot_chance(double score, double radius, double aim_sigma) {
+  if (aim_sigma <= 0.0) return 1.0;
+  return std::erf(2.0 * radius * kPotTolerance * score / (aim_sigma * std::numbers::sqrt2));
+}
+
+double best_ghost_ball_chance(const Scenario& table, int cue_ball, const std::vector<int>& targets, double aim_sigma) {
+  const std::vector<GhostBallPot> pots = ghost_ball_pots(table, cue_ball, targets);
+  if (pots.empty()) return 0.0;
+  return ghost_ball_pot_chance(pots.front().score, table.settings.parameters.ball.radius, aim_sigma);
+}
+
+}  // namespace cueball

@@ -1,0 +1,118 @@
+// Tests of the ghost-ball pots (src/planning/ghost_ball.cpp): a straight-in
+// pot's ghost ball, score and chance against their closed forms; a ball on
+// either path or a cut beyond kMaxCutDeg removes a pot; on random layouts
+// every pot returned meets the definition, best first, and every pocket
+// left out fails it.
+#include "cueball/planning/ghost_ball.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+#include <random>
+#include <vector>
+
+#include "ball_layout.hpp"
+#include "cueball/planning/shot_planner.hpp"
+
+namespace cueball {
+namespace {
+
+using test::layout;
+
+constexpr double kAim = 0.125 * std::numbers::pi / 180.0;  // tournament aim noise, rad
+
+TEST(GhostBallPots, AStraightInPotIsTheClosedForm) {
+  // The 1 on the diagonal of the bottom-left corner pocket, the cue ball behind it on that line.
+  const Scenario s = layout({{0, {0.8, 0.8}}, {1, {0.45, 0.45}}});
+  const double R = s.settings.parameters.ball.radius;
+  const std::vector<GhostBallPot> pots = ghost_ball_pots(s, 0, {1});
+  ASSERT_FALSE(pots.empty());
+  const GhostBallPot& best = pots.front();
+  EXPECT_EQ(best.target, 1);
+  const Vec2 P = s.table.pockets[static_cast<std::size_t>(best.pocket)].centre;
+  const Vec2 O{0.45, 0.45};
+  EXPECT_NEAR(P.x, P.y, 1e-12);  // the corner on the diagonal
+  const Vec2 u = (P - O) / norm(P - O);
+  const Vec2 G = O - 2.0 * R * u;
+  EXPECT_NEAR(best.ghost.x, G.x, 1e-15);
+  EXPECT_NEAR(best.ghost.y, G.y, 1e-15);
+  // Straight in: cos(cut) = 1, score 1 / (|CG| |OP|).
+  EXPECT_NEAR(best.score, 1.0 / (norm(G - Vec2{0.8, 0.8}) * norm(P - O)), 1e-9);
+  const double chance = ghost_ball_pot_chance(best.score, R, kAim);
+  EXPECT_NEAR(chance, std::erf(2.0 * R * kPotTolerance * best.score / (kAim * std::numbers::sqrt2)), 1e-15);
+  EXPECT_GT(chance, 0.9);  // 0.35 m and 0.45 m of path: an easy pot
+  EXPECT_EQ(best_ghost_ball_chance(s, 0, {1}, kAim), chance);
+  EXPECT_EQ(ghost_ball_pot_chance(best.score, R, 0.0), 1.0);          // no noise
+  EXPECT_LT(ghost_ball_pot_chance(best.score, R, 4.0 * kAim), chance);  // more noise, less chance
+  // Farther back along the same line: a lower score and chance.
+  const Scenario farther = layout({{0, {1.1, 1.1}}, {1, {0.45, 0.45}}});
+  EXPECT_LT(best_ghost_ball_chance(farther, 0, {1}, kAim), chance);
+}
+
+TEST(GhostBallPots, ABallOnEitherPathOrACutTooThinRemovesThePot) {
+  const Scenario open = layout({{0, {0.8, 0.8}}, {1, {0.45, 0.45}}});
+  const int corner = ghost_ball_pots(open, 0, {1}).front().pocket;
+  auto has_corner = [&](const Scenario& s) {
+    for (const GhostBallPot& p : ghost_ball_pots(s, 0, {1}))
+      if (p.pocket == corner) return true;
+    return false;
+  };
+  EXPECT_TRUE(has_corner(open));
+  EXPECT_FALSE(has_corner(layout({{0, {0.8, 0.8}}, {1, {0.45, 0.45}}, {2, {0.25, 0.25}}})));  // on O -> P
+  EXPECT_FALSE(has_corner(layout({{0, {0.8, 0.8}}, {1, {0.45, 0.45}}, {2, {0.62, 0.63}}})));  // on C -> G
+  // The cue ball beside the line from the corner through the 1, past it: a cut over 80 degrees.
+  EXPECT_FALSE(has_corner(layout({{0, {0.45 - 0.06, 0.45 + 0.06}}, {1, {0.45, 0.45}}})));
+  EXPECT_TRUE(ghost_ball_pots(layout({{1, {0.45, 0.45}}}), 0, {1}).empty());  // no cue ball
+  EXPECT_EQ(best_ghost_ball_chance(layout({{1, {0.45, 0.45}}}), 0, {1}, kAim), 0.0);
+}
+
+TEST(GhostBallPots, EveryPotMeetsTheDefinitionBestFirstAndEveryPocketLeftOutFailsIt) {
+  const Scenario empty = layout({});
+  const double R = empty.settings.parameters.ball.radius;
+  std::mt19937_64 rng(29);
+  std::uniform_real_distribution<double> ux(0.1, 2.44), uy(0.1, 1.17);
+  int pots_seen = 0, left_out = 0;
+  for (int trial = 0; trial < 200; ++trial) {
+    std::vector<test::Placed> balls;
+    while (balls.size() < 6) {
+      const Vec2 p{ux(rng), uy(rng)};
+      bool apart = ball_on_table(empty.table, p, R);
+      for (const test::Placed& b : balls) apart = apart && norm(b.p - p) > 2.0 * R;
+      if (apart) balls.push_back({static_cast<int>(balls.size()), p});
+    }
+    const Scenario s = layout(balls);
+    const std::vector<int> targets{1, 2};
+    const std::vector<GhostBallPot> pots = ghost_ball_pots(s, 0, targets);
+    for (std::size_t k = 1; k < pots.size(); ++k) EXPECT_GE(pots[k - 1].score, pots[k].score);
+    const Vec2 C = balls[0].p;
+    for (const int t : targets) {
+      const Vec2 O = balls[static_cast<std::size_t>(t)].p;
+      for (std::size_t k = 0; k < s.table.pockets.size(); ++k) {
+        const Vec2 P = s.table.pockets[k].centre;
+        const Vec2 u = (P - O) / norm(P - O);
+        const Vec2 G = O - 2.0 * R * u;
+        const double cos_cut = dot((G - C) / norm(G - C), u);
+        bool clear = cos_cut >= std::cos(kMaxCutDeg * std::numbers::pi / 180.0);
+        for (const test::Placed& b : balls)
+          if (b.id != 0 && b.id != t)
+            clear = clear && distance_to_segment(b.p, C, G) >= 2.0 * R && distance_to_segment(b.p, O, P) >= 2.0 * R;
+        const GhostBallPot* found = nullptr;
+        for (const GhostBallPot& p : pots)
+          if (p.target == t && p.pocket == static_cast<int>(k)) found = &p;
+        EXPECT_EQ(found != nullptr, clear) << "trial " << trial << " ball " << t << " pocket " << k;
+        if (found) {
+          ++pots_seen;
+          EXPECT_NEAR(found->score, cos_cut / (norm(G - C) * norm(P - O)), 1e-12);
+        } else {
+          ++left_out;
+        }
+      }
+    }
+  }
+  EXPECT_GT(pots_seen, 200);  // both kinds were exercised
+  EXPECT_GT(left_out, 200);
+}
+
+}  // namespace
+}  // namespace cueball

@@ -53,8 +53,24 @@ struct Options {
   std::uint64_t seed = 1;
   bool noise = true;
   double seconds = 0.0;  // AgentOptions::seconds of both agents (0: none)
+  // --valuations, --noisy-leaves: each agent's position play, when given (else its own).
+  std::array<std::optional<LeaveValuation>, 2> valuations;
+  std::array<std::optional<int>, 2> noisy_leaves;
   std::string json;
 };
+
+// "A,B" split at its comma, each part "-" (none) or parsed by `parse`.
+template <class T, class Parse>
+std::array<std::optional<T>, 2> pair_flag(const std::string& flag, const std::string& value, const std::string& allowed,
+                                          Parse parse) {
+  const std::size_t comma = value.find(',');
+  if (comma == std::string::npos) kFlags.bad(flag, value, "two values A,B, each " + allowed + " or - (the agent's own)");
+  std::array<std::optional<T>, 2> out;
+  const std::array<std::string, 2> parts{value.substr(0, comma), value.substr(comma + 1)};
+  for (std::size_t k = 0; k < 2; ++k)
+    if (parts[k] != "-") out[k] = parse(parts[k]);
+  return out;
+}
 
 // One game as play_game() plays it (agents/match.hpp: the same seeds), the
 // breaker the agent `breaker`, each decision's CPU time kept per agent.
@@ -153,7 +169,8 @@ std::array<double, 2> wilson(int k, int n) {
 void usage() {
   std::printf(
       "usage: cueball-agent-benchmark [--game G] [--players A,B] [--games N] [--race R] [--seed S]\n"
-      "                               [--noise tournament|none] [--seconds S] [--json FILE]\n"
+      "                               [--noise tournament|none] [--seconds S] [--valuations V,W]\n"
+      "                               [--noisy-leaves N,M] [--json FILE]\n"
       "Whole games between two agents: games and races won, breaks, break-and-runs, snooker breaks,\n"
       "three-cushion averages, fouls and decision times (docs/planner-benchmark.md, \"Games\").\n"
       "  --game G           %s (default nine_ball)\n"
@@ -163,9 +180,13 @@ void usage() {
       "  --seed S           first seed, [0, 1e18] (default 1)\n"
       "  --noise N          the execution noise: tournament (the default) or none\n"
       "  --seconds S        each decision's wall-clock budget, [0, 3600] (AgentOptions::seconds; default 0: none)\n"
+      "  --valuations V,W   each agent's leave valuation in position play, windows or ghost_ball, - for the\n"
+      "                     agent's own (AgentOptions::position_valuation; default -,-)\n"
+      "  --noisy-leaves N,M each agent's noisy leaves per finalist, [0, %d], - for the agent's own\n"
+      "                     (AgentOptions::position_noisy_leaves; default -,-)\n"
       "  --json FILE        also write the results as JSON\n"
       "Exit status: 0 done, 1 an engine error, 2 bad flags.\n",
-      game_kind_names().c_str(), agent_names().c_str());
+      game_kind_names().c_str(), agent_names().c_str(), kMaxPositionNoisyLeaves);
 }
 
 Options parse(int argc, char** argv) {
@@ -176,9 +197,12 @@ Options parse(int argc, char** argv) {
       usage();
       std::exit(0);
     }
-    static const char* const known[] = {"--game", "--players", "--games", "--race", "--seed", "--noise", "--seconds", "--json"};
+    static const char* const known[] = {"--game",    "--players", "--games",      "--race",         "--seed",
+                                        "--noise",   "--seconds", "--valuations", "--noisy-leaves", "--json"};
     if (std::find_if(std::begin(known), std::end(known), [&](const char* k) { return flag == k; }) == std::end(known))
-      kFlags.bad("flag", flag, "--game, --players, --games, --race, --seed, --noise, --seconds, --json, --help");
+      kFlags.bad("flag", flag,
+                 "--game, --players, --games, --race, --seed, --noise, --seconds, --valuations, --noisy-leaves, "
+                 "--json, --help");
     if (i + 1 >= argc) kFlags.bad(flag, "", "a value after the flag");
     const std::string value = argv[++i];
     if (flag == "--game") {
@@ -202,6 +226,17 @@ Options parse(int argc, char** argv) {
       o.noise = value == "tournament";
     } else if (flag == "--seconds") {
       o.seconds = kFlags.number(flag, value, 0.0, kMaxAgentSeconds, "[0, 3600] s a decision");
+    } else if (flag == "--valuations") {
+      o.valuations = pair_flag<LeaveValuation>(flag, value, leave_valuation_names(), [&](const std::string& v) {
+        const std::optional<LeaveValuation> parsed = leave_valuation_from_string(v);
+        if (!parsed) kFlags.bad(flag, value, "two values A,B, each " + leave_valuation_names() + " or -");
+        return *parsed;
+      });
+    } else if (flag == "--noisy-leaves") {
+      o.noisy_leaves = pair_flag<int>(flag, value, "[0, " + std::to_string(kMaxPositionNoisyLeaves) + "]",
+                                      [&](const std::string& v) {
+                                        return static_cast<int>(kFlags.integer(flag, v, 0, kMaxPositionNoisyLeaves));
+                                      });
     } else {
       if (value.empty()) kFlags.bad(flag, value, "a file path");
       o.json = value;
@@ -215,7 +250,11 @@ int run(const Options& o) {
   config.noise = o.noise ? tournament_noise() : CueStrikeNoise{};
   // The agents plan under the game's noise, tournament noise when it has none (planning_noise()).
   std::array<AgentOptions, 2> agents{*agent_named(o.names[0]), *agent_named(o.names[1])};
-  for (AgentOptions& a : agents) a.seconds = o.seconds;
+  for (std::size_t k = 0; k < 2; ++k) {
+    agents[k].seconds = o.seconds;
+    if (o.valuations[k]) agents[k].position_valuation = *o.valuations[k];
+    if (o.noisy_leaves[k]) agents[k].position_noisy_leaves = *o.noisy_leaves[k];
+  }
   std::printf("cueball-agent-benchmark: %s, %s v %s, %d games from seed %llu, %s noise%s\n", to_string(o.game),
               o.names[0].c_str(), o.names[1].c_str(), o.games, static_cast<unsigned long long>(o.seed),
               o.noise ? "tournament" : "no", o.seconds > 0.0 ? fmt(", %g s a decision", o.seconds).c_str() : "");
@@ -267,6 +306,8 @@ int run(const Options& o) {
                          static_cast<unsigned long long>(o.seed), o.noise ? "tournament" : "none", o.seconds, won[0], won[1],
                          undecided, share, ci[0], ci[1], wall);
   if (o.race > 0) json += fmt(" \"race_to\": %d, \"matches\": [%d, %d],\n", o.race, matches[0], matches[1]);
+  json += fmt(" \"valuations\": [\"%s\", \"%s\"], \"noisy_leaves\": [%d, %d],\n", to_string(agents[0].position_valuation),
+              to_string(agents[1].position_valuation), agents[0].position_noisy_leaves, agents[1].position_noisy_leaves);
   json += " \"agents\": [\n";
   for (std::size_t a = 0; a < 2; ++a) {
     const std::vector<int>& v = visits[a];

@@ -42,6 +42,7 @@ struct PlanShotFlags {
   std::string region;             // "x_min,x_max,y_min,y_max", m; empty: anywhere
   std::optional<int> next;        // none: the lowest id left
   double next_simulations = kMinPlanSimulations;
+  std::string valuation = "windows";  // PositionRequest::valuation
 };
 
 // The viewer page of the planned shot, noise-free, with its aim line and
@@ -142,6 +143,12 @@ void run_plan_shot(const PlanShotFlags& f, std::ostream& out, std::ostream& err)
 
   const bool position_play = f.position || f.in_hand;
   if (!position_play && f.next) throw UsageError("--next = " + std::to_string(*f.next) + " needs --position");
+  const std::optional<LeaveValuation> valuation = leave_valuation_from_string(f.valuation);
+  if (!valuation)
+    throw UsageError("--valuation = " + quote_input(f.valuation) + " is not a valuation; allowed: " +
+                     leave_valuation_names());
+  if (!position_play && *valuation != LeaveValuation::windows)
+    throw UsageError("--valuation = " + quote_input(f.valuation) + " needs --position or --in-hand");
   if (!f.in_hand && !f.region.empty()) throw UsageError("--region = " + quote_input(f.region) + " needs --in-hand");
   std::optional<PlacementRegion> region;
   if (const std::optional<PlacementRegion::Kind> kind = placement_region_from_string(f.region);
@@ -183,6 +190,7 @@ void run_plan_shot(const PlanShotFlags& f, std::ostream& out, std::ostream& err)
       p.shot = q;
       p.next_target = f.next;
       p.next_simulations = static_cast<int>(f.next_simulations);
+      p.valuation = *valuation;
       if (f.in_hand) {
         in_hand = plan_ball_in_hand(s, BallInHandRequest{p, region});
         position = in_hand->plan;
@@ -313,6 +321,11 @@ Command add_plan_shot_command(CLI::App& app) {
   sub->add_option("--next", flags->next, "With --position: id of the next ball (default: the lowest id left)");
   sub->add_option("--next-simulations", flags->next_simulations,
                   "With --position: engine runs of each next-shot plan, [500, 1e6]")
+      ->capture_default_str();
+  sub->add_option("--valuation", flags->valuation,
+                  "With --position or --in-hand: how a leave's next shot is valued: windows (the planner's window\n"
+                  "search on the exact simulation) or ghost_ball (the best straight pot's chance under the aim\n"
+                  "noise from the geometry alone: no engine run, a decision in a fraction of the time)")
       ->capture_default_str();
   return [flags](std::ostream& out, std::ostream& err) { run_plan_shot(*flags, out, err); };
 }

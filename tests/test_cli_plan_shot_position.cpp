@@ -2,7 +2,8 @@
 // (cli/command_plan_shot.cpp over position_play.hpp and ball_in_hand.hpp):
 // the JSON's "position" and "in_hand" objects, the choice by score, the
 // text's position lines, the written scenario's cue ball at its spot, and
-// bad input naming --next, --next-simulations and --region.
+// --valuation ghost_ball the library's plan, and bad input naming --next,
+// --next-simulations, --valuation and --region.
 #include <gtest/gtest.h>
 
 #include <nlohmann/json.hpp>
@@ -10,6 +11,8 @@
 #include <string>
 
 #include "cli_runner.hpp"
+#include "cueball/io/scenario_json.hpp"
+#include "cueball/planning/position_play.hpp"
 #include "temp_dir.hpp"
 
 namespace cueball {
@@ -163,6 +166,30 @@ TEST(CliPlanShotPosition, BadRegionIsAUsageErrorNamingTheFlag) {
                      "a region overlapping [0, 2.54] x [0, 1.27] m");
 }
 
+// --valuation ghost_ball: the library's plan (PositionRequest::valuation) to
+// the bit, each leave's next shot the best straight pot by its ghost-ball chance.
+TEST(CliPlanShotPosition, ValuationGhostBallIsTheLibrarysPlan) {
+  const TempDir dir;
+  const std::string scenario = dir.write("three.json", kThreeBalls);
+  const CliRun r = run_cli({"plan-shot", scenario, "--ball", "1", "--position", "--valuation", "ghost_ball",
+                            "--simulations", "1000", "--json"});
+  ASSERT_EQ(r.status, 0) << r.err;
+  const nlohmann::json j = nlohmann::json::parse(r.out);
+  PositionRequest q;
+  q.shot.target = 1;
+  q.shot.simulations = 1000;
+  q.valuation = LeaveValuation::ghost_ball;
+  const PositionPlanResult lib = plan_shot_for_position(scenario_from_json(kThreeBalls), q);
+  EXPECT_EQ(j["cue"]["aim_deg"].get<double>(), lib.plan.shot.strike.aim_deg);
+  EXPECT_EQ(j["simulations"].get<int>(), lib.plan.simulations);
+  const nlohmann::json& p = j["position"];
+  EXPECT_EQ(p["score"].get<double>(), lib.leave.score);
+  EXPECT_EQ(p["next_success_probability"].get<double>(), lib.leave.next_success_probability);
+  if (p["next_feasible"].get<bool>()) {
+    EXPECT_EQ(p["next_kind"], "direct");
+  }
+}
+
 TEST(CliPlanShotPosition, BadNextIsAUsageErrorNamingTheFlag) {
   const TempDir dir;
   const std::string scenario = dir.write("three.json", kThreeBalls);
@@ -174,6 +201,9 @@ TEST(CliPlanShotPosition, BadNextIsAUsageErrorNamingTheFlag) {
                      "--next-simulations");
   expect_usage_error({"plan-shot", scenario, "--ball", "1", "--position", "--next-simulations", "600.5"},
                      "--next-simulations");
+  expect_usage_error({"plan-shot", scenario, "--ball", "1", "--position", "--valuation", "geometry"},
+                     "--valuation = \"geometry\" is not a valuation; allowed: windows, ghost_ball");
+  expect_usage_error({"plan-shot", scenario, "--ball", "1", "--valuation", "ghost_ball"}, "--valuation");  // needs --position
 }
 
 }  // namespace

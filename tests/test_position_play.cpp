@@ -123,7 +123,7 @@ TEST(PositionPlay, PlaysTheCandidateWithTheBestTwoBallScoreAndEachLeaveIsReprodu
     }
     EXPECT_EQ(r.next_target, 2);  // the lowest id left
     ASSERT_EQ(r.plan.alternatives.size(), r.alternative_leaves.size());
-    EXPECT_LE(r.plan.alternatives.size() + 1, kMaxPositionCandidates);
+    EXPECT_LE(r.plan.alternatives.size() + 1, static_cast<std::size_t>(kPositionFinalists));
     // Played: the best score; the alternatives by score.
     for (std::size_t k = 0; k < r.alternative_leaves.size(); ++k) {
       EXPECT_LE(r.alternative_leaves[k].score, r.leave.score);
@@ -393,6 +393,11 @@ TEST(PositionPlay, BadInputNamesTheField) {
   q.depth = 2;
   q.valuation = LeaveValuation::ghost_ball;  // depth 1 only
   EXPECT_EQ(field(q), "depth");
+  q = request_for(1);
+  q.finalists = 0;
+  EXPECT_EQ(field(q), "finalists");
+  q.finalists = kMaxPositionFinalists + 1;
+  EXPECT_EQ(field(q), "finalists");
   q = request_for(5);
   EXPECT_EQ(field(q), "target");
   q = request_for(1);

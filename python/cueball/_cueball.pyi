@@ -1134,6 +1134,7 @@ def plan_shot(
     next_simulations: _Int = 500,
     in_hand: bool = False,
     region: tuple[_Float, _Float, _Float, _Float] | str | None = None,
+    valuation: str = "windows",
 ) -> dict[str, Any]:
     """The strike that pots ball `target`, or any ball of `targets` (the legal targets; give one of
     the two) (cueball plan-shot): the dict of `plan-shot --json`
@@ -1151,7 +1152,9 @@ def plan_shot(
     for 8-ball; instead of next); each shot's dict gains `position` (next, cue_ball, next_feasible, next_success_probability,
     next_kind, next_pocket, next_ball, screened_probability, score). in_hand=True places the cue ball too
     (plan-shot --in-hand; inside region=(x_min, x_max, y_min, y_max) m, or 'kitchen', 'd', 'anywhere', when given): the dict gains
-    `in_hand` (cue_ball, spots, spots_played). Releases the GIL."""
+    `in_hand` (cue_ball, spots, spots_played). valuation: how a leave's next shot is valued,
+    'windows' (the planner's window search) or 'ghost_ball' (the best straight pot's chance from the
+    geometry, no engine run); with position=True or in_hand=True. Releases the GIL."""
 
 def _time_run_scenario(scenario: _Scenario = None, repetitions: _Int = 100) -> float:
     """Benchmark hook: seconds per run of the library's run_scenario(), timed in C++."""

@@ -208,7 +208,8 @@ class _Options:
     """The environments' options, parsed once (names as the constructors take them)."""
 
     def __init__(self, game: str, opponent: Opponent, noise: Any, reward: Any, max_shots: int, action: str,
-                 break_shot: str, seat: int | None, max_speed: float, simulations: int | None):
+                 break_shot: str, seat: int | None, max_speed: float, simulations: int | None,
+                 opponent_seconds: float | None = None):
         if game not in GAMES:
             raise _cueball.InvalidArgument(f"game = {game!r} is not known; allowed: {', '.join(GAMES)}")
         self.game = game
@@ -225,9 +226,17 @@ class _Options:
         self.seat = -1 if seat is None else int(seat)
         self.max_speed = float(max_speed)
         self.simulations = None if simulations is None else int(simulations)
+        self.seconds = None if opponent_seconds is None else float(opponent_seconds)
+        if self.seconds is not None:
+            if not 0.0 <= self.seconds <= 3600.0:
+                raise _cueball.InvalidArgument(f"opponent_seconds = {opponent_seconds!r} is out of range [0, 3600] "
+                                               "(s a decision; None: no time budget)")
+            if self.opponent is None:
+                raise _cueball.InvalidArgument(f"opponent_seconds = {opponent_seconds!r} needs a built-in opponent "
+                                               f"({', '.join(OPPONENTS)}); a callable or self-play takes none")
 
     def native_args(self, opponent: str | None) -> tuple[Any, ...]:
-        return (self.game, opponent, self.simulations, self.noise, self.noise_scale, self.reward, self.action,
+        return (self.game, opponent, self.simulations, self.seconds, self.noise, self.noise_scale, self.reward, self.action,
                 self.break_shot, self.seat, self.max_shots, self.max_speed)
 
 
@@ -303,7 +312,10 @@ class CueballEnv(_EnvBase):  # type: ignore[misc]
     ('raw' or 'target'), ``break_shot`` ('recommended': the engine breaks for whoever breaks;
     'agent'), ``seat`` (0 breaks, 1, or None drawn per episode), ``max_speed`` (m/s of
     strike[0] = 1), ``simulations`` (the opponent's engine runs a decision; None: 300 for a
-    kind's name, the strongest agent's own budget for 'strongest'),
+    kind's name, the strongest agent's own budget for 'strongest'), ``opponent_seconds`` (a
+    built-in opponent's wall-clock budget a decision, AgentOptions::seconds: it plans in rounds up
+    to ``simulations`` while they fit; None: no budget. Its decisions then depend on the machine's
+    speed, so an episode is reproducible from its seed only without it),
     ``render_mode`` (None or 'html': render() returns the episode's viewer page).
     """
 
@@ -312,11 +324,11 @@ class CueballEnv(_EnvBase):  # type: ignore[misc]
     def __init__(self, game: str = "nine_ball", opponent: Opponent = "ghost_ball", noise: Any = None,
                  reward: Any = "win", max_shots: int = 200, action: str = "raw", break_shot: str = "recommended",
                  seat: int | None = 0, max_speed: float = 8.0, simulations: int | None = None,
-                 render_mode: str | None = None):
+                 render_mode: str | None = None, opponent_seconds: float | None = None):
         if render_mode not in (None, "html"):
             raise _cueball.InvalidArgument(f"render_mode = {render_mode!r} is not known; allowed: None, 'html'")
         self.options = _Options(game, opponent, noise, reward, max_shots, action, break_shot, seat, max_speed,
-                                simulations)
+                                simulations, opponent_seconds)
         self.render_mode = render_mode
         self._table = _native.Table(*self.options.native_args(self.options.opponent), render_mode == "html")
         self.observation_space, self.action_space = _spaces(game, 6 if game != "three_cushion" else 0)
@@ -554,17 +566,18 @@ class VectorEnv:
     observation and ``infos['final_observation']`` holds the last one (rows where
     ``infos['_final_observation']``). Table i is seeded ``seed + i``; results do not depend on
     ``threads``. Opponents are the built-in agents or None (self-play); a callable is not
-    supported here (use CueballEnv).
+    supported here (use CueballEnv). ``opponent_seconds`` as CueballEnv's.
     """
 
     def __init__(self, num_envs: int, game: str = "nine_ball", opponent: str | None = "ghost_ball",
                  noise: Any = None, reward: Any = "win", max_shots: int = 200, action: str = "raw",
                  break_shot: str = "recommended", seat: int | None = 0, max_speed: float = 8.0,
-                 simulations: int | None = None, threads: int | None = None, seed: int = 0):
+                 simulations: int | None = None, threads: int | None = None, seed: int = 0,
+                 opponent_seconds: float | None = None):
         if callable(opponent):
             raise _cueball.InvalidArgument("opponent: a callable opponent is not supported by VectorEnv; use CueballEnv")
         self.options = _Options(game, opponent, noise, reward, max_shots, action, break_shot, seat, max_speed,
-                                simulations)
+                                simulations, opponent_seconds)
         self.num_envs = int(num_envs)
         self.threads = int(threads if threads is not None else (os.cpu_count() or 1))
         self._tables = _native.VectorTables(*self.options.native_args(self.options.opponent), self.num_envs,

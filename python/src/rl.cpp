@@ -37,7 +37,7 @@ E named(std::optional<E> value, const std::string& field, const std::string& nam
 
 // The options rl.py parsed (python/cueball/rl.py, _native_options()).
 EnvOptions make_options(const std::string& game, const std::optional<std::string>& opponent,
-                        std::optional<int> simulations,
+                        std::optional<int> simulations, std::optional<double> seconds,
                         const py::object& noise, std::array<double, 2> noise_scale, const py::dict& reward,
                         const std::string& form, const std::string& break_policy, int seat, int max_shots,
                         double max_speed) {
@@ -54,6 +54,10 @@ EnvOptions make_options(const std::string& game, const std::optional<std::string
     o.opponent.kind.reset();
   }
   if (simulations) o.opponent.simulations = *simulations;
+  // A wall-clock budget a decision (AgentOptions::seconds; rl.py checked
+  // that an opponent is named and the range): the opponent's options in full.
+  if (seconds && o.opponent.kind && !o.opponent.agent) o.opponent.agent = cueball::opponent_agent(o.opponent);
+  if (seconds && o.opponent.agent) o.opponent.agent->seconds = *seconds;
   const cueball::GameState probe = cueball::new_game(cueball::default_config(o.game), 0);
   if (const auto n = noise_argument(noise, probe.table.table.ball.radius)) o.noise.base = *n;
   o.noise.scale_min = noise_scale[0];
@@ -247,11 +251,11 @@ void bind_rl(py::module_& m) {
 
   py::class_<NativeTable>(rl, "Table")
       .def(py::init([](const std::string& game, const std::optional<std::string>& opponent, std::optional<int> simulations,
-                       const py::object& noise, std::array<double, 2> noise_scale, const py::dict& reward,
-                       const std::string& form, const std::string& break_policy, int seat, int max_shots,
-                       double max_speed, bool record) {
+                       std::optional<double> seconds, const py::object& noise, std::array<double, 2> noise_scale,
+                       const py::dict& reward, const std::string& form, const std::string& break_policy, int seat,
+                       int max_shots, double max_speed, bool record) {
         NativeTable t;
-        t.options = make_options(game, opponent, simulations, noise, noise_scale, reward, form, break_policy, seat,
+        t.options = make_options(game, opponent, simulations, seconds, noise, noise_scale, reward, form, break_policy, seat,
                                  max_shots, max_speed);
         t.table.record_steps = record;
         return t;
@@ -332,10 +336,10 @@ void bind_rl(py::module_& m) {
 
   py::class_<NativeVector>(rl, "VectorTables")
       .def(py::init([](const std::string& game, const std::optional<std::string>& opponent, std::optional<int> simulations,
-                       const py::object& noise, std::array<double, 2> noise_scale, const py::dict& reward,
-                       const std::string& form, const std::string& break_policy, int seat, int max_shots,
-                       double max_speed, int n, int threads, std::uint64_t seed) {
-        const EnvOptions o = make_options(game, opponent, simulations, noise, noise_scale, reward, form, break_policy,
+                       std::optional<double> seconds, const py::object& noise, std::array<double, 2> noise_scale,
+                       const py::dict& reward, const std::string& form, const std::string& break_policy, int seat,
+                       int max_shots, double max_speed, int n, int threads, std::uint64_t seed) {
+        const EnvOptions o = make_options(game, opponent, simulations, seconds, noise, noise_scale, reward, form, break_policy,
                                           seat, max_shots, max_speed);
         NativeVector v;
         py::gil_scoped_release release;

@@ -110,7 +110,7 @@ void bind_shot_planner(py::module_& m) {
          const py::object& noise, std::uint64_t seed, long long simulations, double side, std::optional<double> height,
          bool position, std::optional<int> next, std::optional<std::vector<std::vector<int>>> next_targets,
          long long next_simulations, bool in_hand,
-         std::optional<std::variant<std::string, std::array<double, 4>>> region) {
+         std::optional<std::variant<std::string, std::array<double, 4>>> region, const std::string& valuation) {
         if (simulations < cueball::kMinPlanSimulations || simulations > cueball::kMaxPlanSimulations)
           throw cueball::InvalidArgument("simulations", static_cast<double>(simulations),
                                          "[" + std::to_string(cueball::kMinPlanSimulations) + ", " +
@@ -135,6 +135,13 @@ void bind_shot_planner(py::module_& m) {
         if (!position_play && next_targets)
           throw cueball::InvalidArgument("next_targets", "next_targets needs position=True");
         if (!in_hand && region) throw cueball::InvalidArgument("region", "region needs in_hand=True");
+        const std::optional<cueball::LeaveValuation> leave_valuation = cueball::leave_valuation_from_string(valuation);
+        if (!leave_valuation)
+          throw cueball::InvalidArgument("valuation", "valuation = " + cueball::quote_input(valuation) +
+                                                          " is not known; allowed: " + cueball::leave_valuation_names());
+        if (!position_play && *leave_valuation != cueball::LeaveValuation::windows)
+          throw cueball::InvalidArgument("valuation", "valuation = " + cueball::quote_input(valuation) +
+                                                          " needs position=True or in_hand=True");
         if (next_simulations < cueball::kMinPlanSimulations || next_simulations > cueball::kMaxPlanSimulations)
           throw cueball::InvalidArgument("next_simulations", static_cast<double>(next_simulations),
                                          "[" + std::to_string(cueball::kMinPlanSimulations) + ", " +
@@ -151,6 +158,7 @@ void bind_shot_planner(py::module_& m) {
             p.next_target = next;
             if (next_targets) p.next_targets = *next_targets;
             p.next_simulations = static_cast<int>(next_simulations);
+            p.valuation = *leave_valuation;
             if (in_hand) {
               cueball::BallInHandRequest h{p, std::nullopt};
               if (region) h.region = placement_region(*region);
@@ -182,6 +190,7 @@ void bind_shot_planner(py::module_& m) {
       "kinds"_a = std::vector<std::string>{"direct", "bank"}, "noise"_a = "tournament", "seed"_a = 0,
       "simulations"_a = 4000, "side"_a = 0.0, "height"_a = py::none(), "position"_a = false, "next"_a = py::none(),
       "next_targets"_a = py::none(), "next_simulations"_a = cueball::kMinPlanSimulations, "in_hand"_a = false, "region"_a = py::none(),
+      "valuation"_a = "windows",
       "Plans the strike that pots ball `target` (cueball plan-shot, shot_planner.hpp), or any ball of\n"
       "`targets` (a list of ids, the legal targets: plan-shot --targets; give one of the two; each\n"
       "shot's dict says its `target`): ghost-ball\n"
@@ -211,6 +220,8 @@ void bind_shot_planner(py::module_& m) {
       "next: the next ball's id (None: the lowest id left); next_targets: the next shots' legal targets\n"
       "in turn, a list of lists of ids (9-ball [[2], [3], ...]; 8-ball [[9, ..., 15], [8]]: the next shot\n"
       "pots any ball of the first list left on the table; instead of next); next_simulations: each next plan's budget;\n"
+      "valuation: how a leave's next shot is valued, 'windows' (the planner's window search) or 'ghost_ball' (the\n"
+      "best straight pot's chance under the aim noise from the geometry alone, no engine run; position_play.hpp);\n"
       "each shot's dict then has `position` (next, cue_ball, next_feasible, next_success_probability,\n"
       "next_kind, next_pocket, next_ball, screened_probability, score). in_hand=True: ball in hand (ball_in_hand.hpp;\n"
       "plan-shot --in-hand), the cue ball placed (its place in the scenario ignored) where the shot, played for\n"

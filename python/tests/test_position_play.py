@@ -109,8 +109,21 @@ class PositionPlayTest(unittest.TestCase):
             self.assertEqual(cli["cue"], plan["cue"])
             self.assertEqual(json.dumps(without_python_only(plan)), json.dumps(without_python_only(cli)))
 
+    def test_a_ghost_ball_valuation_is_the_clis_plan_with_fewer_runs(self) -> None:
+        quick = cueball.plan_shot(CUT, 1, simulations=1000, position=True, valuation="ghost_ball")
+        self.assertLess(quick["simulations"], self.plan["simulations"])
+        self.assertIn(quick["position"]["next_kind"], ("direct", ""))  # the next shot: a straight pot or none
+        binary = os.environ.get("CUEBALL_BIN")
+        if binary:
+            out = subprocess.run([binary, "plan-shot", str(CUT), "--ball", "1", "--simulations", "1000", "--position",
+                                  "--valuation", "ghost_ball", "--json"], check=True, capture_output=True,
+                                 text=True).stdout
+            self.assertEqual(json.dumps(without_python_only(quick)), json.dumps(without_python_only(json.loads(out))))
+
     def test_bad_input_names_the_argument(self) -> None:
         for kwargs, field in (({"position": True, "next": 7}, "next"),
+                              ({"position": True, "valuation": "geometry"}, "valuation"),
+                              ({"valuation": "ghost_ball"}, "valuation"),
                               ({"position": True, "next": 1}, "next"),
                               ({"next": 9}, "next"),
                               ({"position": True, "next_simulations": 10}, "next_simulations"),

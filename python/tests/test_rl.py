@@ -163,6 +163,32 @@ class CueballEnvTest(unittest.TestCase):
             rl.CueballEnv(opponent="shark")
         self.assertIn("strongest", str(e.exception))
 
+    def test_an_opponent_on_a_time_budget(self):
+        # opponent_seconds: the planner opponent plans in rounds within its
+        # budget (AgentOptions::seconds), so at a million runs a plan (hours
+        # a decision without the budget) it still replies until the learner
+        # is to act; a callable, self-play or a value out of range are refused.
+        env = rl.CueballEnv(opponent="planner", seat=1, simulations=1_000_000, opponent_seconds=0.05)
+        obs, info = env.reset(seed=4)
+        self.assertEqual(info["to_shoot"], 1)
+        opponent_shots = 0
+        for _ in range(20):
+            obs, reward, terminated, truncated, info = env.step(env.action_space.sample())
+            self.assertTrue(terminated or truncated or info["to_shoot"] == 1)
+            opponent_shots += info["players"].count(0)
+            if terminated or truncated or opponent_shots > 0:
+                break
+        self.assertGreater(opponent_shots, 0)
+        vec = rl.VectorEnv(2, opponent="ghost_ball", opponent_seconds=0.05, threads=1)
+        self.assertEqual(vec.reset()[0].shape[0], 2)
+        for kwargs in ({"opponent_seconds": -1.0}, {"opponent_seconds": 4000.0},
+                       {"opponent": None, "opponent_seconds": 0.1},
+                       {"opponent": lambda obs, info: {}, "opponent_seconds": 0.1}):
+            with self.assertRaises(cueball.InvalidArgument) as e:
+                rl.CueballEnv(**kwargs)
+            self.assertIn("opponent_seconds", str(e.exception))
+            self.assertEqual(len(str(e.exception).splitlines()), 1)
+
     def test_bad_options_name_the_option(self):
         for kwargs, word in (({"game": "pool"}, "game"), ({"opponent": "shark"}, "opponent"),
                              ({"reward": "money"}, "reward"), ({"max_shots": 0}, "max_shots"),

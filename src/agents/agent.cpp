@@ -69,6 +69,9 @@ void validate(const AgentOptions& options) {
   if (options.position_depth < 1 || options.position_depth > kMaxPositionDepth)
     throw InvalidArgument("position_depth", std::to_string(options.position_depth) + " is out of range [1, " +
                                                 std::to_string(kMaxPositionDepth) + "]");
+  if (options.position_finalists < 1 || options.position_finalists > kMaxPositionFinalists)
+    throw InvalidArgument("position_finalists", std::to_string(options.position_finalists) + " is out of range [1, " +
+                                                    std::to_string(kMaxPositionFinalists) + "]");
   if (options.position_valuation == LeaveValuation::ghost_ball && options.position_depth != 1)
     throw InvalidArgument("position_depth", std::to_string(options.position_depth) +
                                                 " is out of range [1, 1] with position_valuation ghost_ball");

@@ -135,6 +135,7 @@ Pot plan_pot(const Turn& t, const std::vector<ShotKind>& kinds) {
       p.noisy_leaves = t.options.position_noisy_leaves;
       p.depth = t.options.position_depth;
       p.valuation = t.options.position_valuation;
+      p.finalists = t.options.position_finalists;
       PositionPlanResult pr;
       if (in_hand) {
         BallInHandRequest h{p, std::nullopt};

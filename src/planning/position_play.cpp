@@ -200,16 +200,17 @@ double kth_largest(std::vector<double> scores, std::size_t k) {
 
 // Step 2: each leave scored by window probabilities alone (no noisy shot):
 // this shot's, times the best next shot's on the table it leaves; the
-// kMaxPositionCandidates best kept. The candidates come best window first
+// PositionRequest::finalists best kept. The candidates come best window first
 // and the next shot's window is at most 1, so a leave whose own window is
-// no more than the kMaxPositionCandidates-th score so far cannot be kept
+// no more than the finalists-th score so far cannot be kept
 // (nor can any after it; an equal score keeps the earlier leave): the
 // scoring stops there, and the leaves kept are those of scoring them all.
 void score_leaves_by_windows(Lookahead& la, std::vector<Candidate>& candidates) {
+  const auto finalists = static_cast<std::size_t>(la.q.finalists);
   std::vector<double> scores;
   std::size_t scored = 0;
   for (Candidate& c : candidates) {
-    if (c.shot.window_probability <= kth_largest(scores, kMaxPositionCandidates)) break;
+    if (c.shot.window_probability <= kth_largest(scores, finalists)) break;
     ++scored;
     c.leave.cue_ball = cue_ball_end(c.shot, la.cue_id);
     c.left = table_left_by(la.s, c.shot);
@@ -225,7 +226,7 @@ void score_leaves_by_windows(Lookahead& la, std::vector<Candidate>& candidates) 
   std::stable_sort(candidates.begin(), candidates.end(), [](const Candidate& a, const Candidate& b) {
     return a.shot.window_probability * a.next_window > b.shot.window_probability * b.next_window;
   });
-  if (candidates.size() > kMaxPositionCandidates) candidates.resize(kMaxPositionCandidates);
+  if (candidates.size() > finalists) candidates.resize(finalists);
 }
 
 // Depth 2's value of a leave (PositionRequest::depth): the best over the
@@ -379,6 +380,9 @@ PositionPlanResult plan_shot_for_position(const Scenario& table_state, const Pos
   if (q.depth < 1 || q.depth > kMaxPositionDepth)
     throw InvalidArgument("depth", static_cast<double>(q.depth), "[1, " + std::to_string(kMaxPositionDepth) + "]",
                           "shots looked ahead");
+  if (q.finalists < 1 || q.finalists > kMaxPositionFinalists)
+    throw InvalidArgument("finalists", static_cast<double>(q.finalists),
+                          "[1, " + std::to_string(kMaxPositionFinalists) + "]", "candidates screened under noise");
   if (q.valuation == LeaveValuation::ghost_ball && q.depth != 1)
     throw InvalidArgument("depth", static_cast<double>(q.depth), "[1, 1] with valuation ghost_ball",
                           "shots looked ahead");

@@ -93,6 +93,8 @@ struct AgentOptions {
   /// Position play and ball in hand: how a leave is valued
   /// (PositionRequest::valuation); ghost_ball needs position_depth 1.
   LeaveValuation position_valuation = LeaveValuation::windows;
+  /// Position play: the finalists screened under noise (PositionRequest::finalists).
+  int position_finalists = kPositionFinalists;
   /// The execution noise the agent plans under (planner). None: the game's
   /// (GameConfig::noise), or tournament_noise() when the game has none (a
   /// plan under no noise cannot tell a safe pot from a thin one).

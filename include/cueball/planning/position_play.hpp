@@ -23,7 +23,7 @@
 //      default 9-ball's: the lowest id; a shot that pots it too is scored on
 //      the ball after it (the lowest id left), and with no ball left on its
 //      window probability alone.
-//   3. The kMaxPositionCandidates best by that score are the finalists: each
+//   3. The PositionRequest::finalists best by that score are the finalists: each
 //      is screened on the same noisy draws (a kPositionScreenFraction-th of
 //      the request's budget: common random numbers, a paired comparison),
 //      and the next target's shot planned in full with plan_shot() on the
@@ -91,8 +91,10 @@ inline constexpr int kPositionVariantBudgets = 3;
 inline constexpr double kPositionKeepFraction = 0.5;
 /// Most candidates whose leave is scored by window probabilities.
 inline constexpr std::size_t kPositionLeaves = 24;
-/// Most candidates whose leave is evaluated in full (the finalists).
-inline constexpr std::size_t kMaxPositionCandidates = 3;
+/// Candidates whose leave is evaluated in full (the finalists), by default
+/// (PositionRequest::finalists), and the most allowed.
+inline constexpr int kPositionFinalists = 3;
+inline constexpr int kMaxPositionFinalists = 16;
 /// The finalists' noisy successes whose leaves are scored (step 3), at
 /// most, by default (PositionRequest::noisy_leaves), and the most allowed.
 inline constexpr int kPositionNoisyLeaves = 4;
@@ -163,6 +165,10 @@ struct PositionRequest {
   /// How a leave's next shot is valued in steps 2 and 3 (LeaveValuation);
   /// ghost_ball needs depth 1.
   LeaveValuation valuation = LeaveValuation::windows;
+  /// The finalists of step 3, [1, kMaxPositionFinalists]: each screened
+  /// under the noise (a kPositionScreenFraction-th of the budget more
+  /// engine runs each) and its noisy leaves valued.
+  int finalists = kPositionFinalists;
 };
 
 /// What a candidate leaves for the next shot.

@@ -725,10 +725,11 @@ void usage() {
       "  --position N             run-outs played for position (plan_shot_for_position), N engine runs per\n"
       "                           next-shot plan, [%d, %d] (default: the agent's; strongest 1000)\n"
       "  --noisy-leaves N         position play: noisy outcomes of each finalist whose leaves are scored,\n"
-      "                           [0, %d] (default %d; 0: the noise-free leave alone)\n"
+      "                           [0, %d] (default: the agent's, %d; strongest %d; 0: the noise-free leave alone)\n"
       "  --depth D                position play: shots looked ahead, [1, %d] (default: the agent's, 1)\n"
       "  --valuation V            position play and ball in hand: how a leave is valued, windows (the planner's\n"
-      "                           window search; the agents' default) or ghost_ball (no engine run; depth 1)\n"
+      "                           window search) or ghost_ball (no engine run; depth 1) (default: the agent's;\n"
+      "                           strongest ghost_ball, the others windows)\n"
       "  --finalists F            position play: the candidates screened under noise, [1, %d] (default: the agent's, 3)\n"
       "  --seconds S              the run-outs' decisions under a wall-clock budget, [0, 3600] s\n"
       "                           (AgentOptions::seconds: rounds from 500 runs up to the agent's; default 0: none)\n"
@@ -751,7 +752,7 @@ void usage() {
       "                           cue: the balls at rest, tournament noise), for cueball plan-shot --ball 1\n"
       "Exit status: 0 done, 1 an engine error, 2 bad flags.\n",
       kMinPlanSimulations, kMaxPlanSimulations, kMinPlanSimulations, kMaxPlanSimulations, kMaxPositionNoisyLeaves,
-      kPositionNoisyLeaves, kMaxPositionDepth, kMaxPositionFinalists);
+      kPositionNoisyLeaves, kStrongestNoisyLeaves, kMaxPositionDepth, kMaxPositionFinalists);
 }
 
 std::vector<ShotKind> kinds_flag(const std::string& flag, const std::string& value) {

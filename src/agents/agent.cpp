@@ -41,6 +41,8 @@ AgentOptions strongest_agent() {
   o.kind = AgentKind::safety_planner;
   o.simulations = kStrongestSimulations;
   o.position_simulations = kStrongestPositionSimulations;
+  o.position_valuation = LeaveValuation::ghost_ball;
+  o.position_noisy_leaves = kStrongestNoisyLeaves;
   o.fallback_kinds = {ShotKind::kick};
   return o;
 }

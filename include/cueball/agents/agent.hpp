@@ -140,11 +140,19 @@ TimedRounds plan_in_time(const AgentOptions& options, const std::function<void(c
 /// The strongest pool player of the agents (issue 27), and what the
 /// planner benchmark's run-out suite measures by default: the safety
 /// planner with each pot planned at kStrongestSimulations runs, played for
-/// position (kStrongestPositionSimulations runs of each next-shot plan), a
-/// kick when nothing else pots; three-cushion: carom_search at the same
-/// budget, without position play (which did not gain at equal runs).
+/// position with each leave valued by its ghost-ball chance
+/// (LeaveValuation::ghost_ball) over kStrongestNoisyLeaves noisy leaves of
+/// each finalist, a kick when nothing else pots; three-cushion:
+/// carom_search at the same budget, without position play (which did not
+/// gain at equal runs). The ghost-ball valuation ran out as many 9-ball
+/// racks as the planner's window search (33 and 31 of 90) and split 40
+/// games with it 19-21, at a quarter of the time a decision
+/// (docs/planner-benchmark.md, "Leaves valued by the ghost ball").
+/// kStrongestPositionSimulations, the runs of a next-shot plan, are spent
+/// only with the windows valuation; position play is on while they are > 0.
 inline constexpr int kStrongestSimulations = 4000;
 inline constexpr int kStrongestPositionSimulations = 1000;
+inline constexpr int kStrongestNoisyLeaves = 16;
 AgentOptions strongest_agent();
 
 /// An agent by the name a user gives (the CLI's --players, Python's

@@ -237,7 +237,9 @@ void run_plan_shot(const PlanShotFlags& f, std::ostream& out, std::ostream& err)
     std::string line = "leaves the cue ball at (" + fixed(l.cue_ball.x, 3) + ", " + fixed(l.cue_ball.y, 3) + ")";
     if (position.next_target < 0) return line + "; no ball left after this one";
     line += ": ball " + std::to_string(position.next_target) + " next, ";
-    line += l.next_feasible ? "P = " + fixed(l.next_success_probability, 3) + " (" + l.next_kind + " into " +
+    const bool by_ghost_ball = f.valuation == to_string(LeaveValuation::ghost_ball);
+    line += l.next_feasible ? (by_ghost_ball ? "ghost-ball P = " : "P = ") + fixed(l.next_success_probability, 3) +
+                                  " (" + l.next_kind + " into " +
                                   l.next_pocket + ")"
                             : "no feasible shot";
     if (l.noisy_leaves > 0)

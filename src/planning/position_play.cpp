@@ -198,8 +198,9 @@ double kth_largest(std::vector<double> scores, std::size_t k) {
   return scores[k - 1];
 }
 
-// Step 2: each leave scored by window probabilities alone (no noisy shot):
-// this shot's, times the best next shot's on the table it leaves; the
+// Step 2: each leave scored without a noisy shot: this shot's window
+// probability times the next shot's value on the table it leaves
+// (next_shot_value(): its best window probability, or ghost-ball chance); the
 // PositionRequest::finalists best kept. The candidates come best window first
 // and the next shot's window is at most 1, so a leave whose own window is
 // no more than the finalists-th score so far cannot be kept

@@ -3,8 +3,9 @@
 // breaks, fouls, ball in hand, push-outs, calls, nominations, decisions and
 // innings), each agent's action passes validate_action() and play() never
 // throws InvalidArgument for it. The cheap agents (random, ghost-ball) act in
-// every state; the searching ones (planner, safety planner, carom search) at
-// their smallest budgets in a stride of them, so that the file runs in
+// every state; the searching ones (planner, safety planner, carom search,
+// and the strongest agent's position play and ball in hand) at their
+// smallest budgets in a stride of them, so that the file runs in
 // seconds in Release and a tenth of it under the sanitizers
 // (support/test_scale.hpp, spread_sample()).
 #include <gtest/gtest.h>
@@ -74,7 +75,7 @@ std::vector<GameState> spread_sample(const std::vector<GameState>& states, int e
 
 // What a discipline's states asked of the agents.
 struct Tally {
-  int states = 0, searched = 0, safeties = 0;
+  int states = 0, searched = 0, safeties = 0, strongest = 0;
   int in_hand = 0, decisions = 0, calls = 0, nominations = 0, push_outs = 0;
 };
 
@@ -130,6 +131,15 @@ Tally check_agents(const Discipline& d, const std::vector<GameState>& states) {
       continue;
     }
     expect_legal(s, planner_action(smallest(AgentKind::planner), s, seed), seed, where + "planner");
+    if (in_hand || k % static_cast<std::size_t>(4 * d.stride) == 0) {
+      // The strongest agent's options at the smallest budgets: position
+      // play (leaves by the ghost ball), its ball in hand and its calls.
+      AgentOptions strongest = strongest_agent();
+      strongest.simulations = kMinPlanSimulations;
+      strongest.position_simulations = kMinPlanSimulations;
+      expect_legal(s, choose_action(strongest, s, seed), seed, where + "strongest");
+      ++t.strongest;
+    }
     if (strided && k % static_cast<std::size_t>(2 * d.stride) != 0) continue;
     const PlannerChoice c = safety_planner_choice(smallest(AgentKind::safety_planner), s, seed);
     expect_legal(s, c.action, seed, where + "safety_planner: " + c.detail);
@@ -156,6 +166,9 @@ TEST(AgentLegality, EveryAgentIsLegalInRandomStatesOfEveryDiscipline) {
     const Tally t = check_agents(d, states);
     EXPECT_GE(t.states, count / every);
     EXPECT_GT(t.searched, 0);
+    if (d.kind != GameKind::three_cushion) {
+      EXPECT_GT(t.strongest, 0);
+    }
     all.in_hand += t.in_hand;
     all.decisions += t.decisions;
     all.calls += t.calls;

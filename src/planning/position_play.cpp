@@ -171,9 +171,10 @@ void plan_without_lookahead(const Lookahead& la, PositionPlanResult& result) {
 }
 
 // Step 1's candidates: every shot and variant found, once per strike, at
-// least kPositionKeepFraction of the best's window probability, best first,
-// at most kPositionLeaves.
-std::vector<Candidate> candidate_leaves(std::vector<PlannedShot>& every) {
+// least kPositionKeepFraction of the best's window probability, best first;
+// at most kPositionLeaves when their leaves are valued by window searches
+// (a ghost-ball chance costs no engine run: then every one).
+std::vector<Candidate> candidate_leaves(std::vector<PlannedShot>& every, LeaveValuation valuation) {
   std::vector<Candidate> candidates;
   double best_window = 0.0;
   for (const PlannedShot& shot : every) best_window = std::max(best_window, shot.window_probability);
@@ -186,7 +187,7 @@ std::vector<Candidate> candidate_leaves(std::vector<PlannedShot>& every) {
   std::stable_sort(candidates.begin(), candidates.end(), [](const Candidate& a, const Candidate& b) {
     return a.shot.window_probability > b.shot.window_probability;
   });
-  if (candidates.size() > kPositionLeaves) candidates.resize(kPositionLeaves);
+  if (valuation == LeaveValuation::windows && candidates.size() > kPositionLeaves) candidates.resize(kPositionLeaves);
   return candidates;
 }
 
@@ -407,7 +408,7 @@ PositionPlanResult plan_shot_for_position(const Scenario& table_state, const Pos
   la.simulations = found.plan.simulations;
   result.plan.rejected = std::move(found.plan.rejected);
   result.plan.cue_ball = la.cue_id;
-  std::vector<Candidate> candidates = candidate_leaves(found.every);
+  std::vector<Candidate> candidates = candidate_leaves(found.every, q.valuation);
   score_leaves_by_windows(la, candidates);                       // 2.
   screen_finalists(la, candidates);                              // 3.
   play_best(la, candidates, result);                             // 4.

@@ -10,7 +10,8 @@
 //      request's budget more engine runs for these. Every shot and variant
 //      found, with the noise-free end of every ball (PlannedShot::predicted),
 //      is a candidate; those whose window probability is at least
-//      kPositionKeepFraction of the best's are kept, at most kPositionLeaves,
+//      kPositionKeepFraction of the best's are kept (valued by windows, at
+//      most kPositionLeaves; by the ghost ball, every one),
 //      best first.
 //   2. Each candidate's leave is scored without a noisy shot: its window
 //      probability times the best window probability of the next target's
@@ -89,7 +90,8 @@ inline constexpr std::array<double, 6> kPositionSpeedFactors{0.6, 0.8, 1.0, 1.3,
 inline constexpr int kPositionVariantBudgets = 3;
 /// Candidates whose window probability is under this fraction of the best's are not played for position.
 inline constexpr double kPositionKeepFraction = 0.5;
-/// Most candidates whose leave is scored by window probabilities.
+/// Most candidates whose leave is scored by window probabilities
+/// (LeaveValuation::windows; by ghost-ball chances every candidate is).
 inline constexpr std::size_t kPositionLeaves = 24;
 /// Candidates whose leave is evaluated in full (the finalists), by default
 /// (PositionRequest::finalists), and the most allowed.

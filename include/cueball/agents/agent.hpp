@@ -145,8 +145,8 @@ TimedRounds plan_in_time(const AgentOptions& options, const std::function<void(c
 /// each finalist, a kick when nothing else pots; three-cushion:
 /// carom_search at the same budget, without position play (which did not
 /// gain at equal runs). The ghost-ball valuation ran out as many 9-ball
-/// racks as the planner's window search (33 and 31 of 90) and split 40
-/// games with it 19-21, at a quarter of the time a decision
+/// racks as the planner's window search (36 and 31 of 90) and played it
+/// even (18-22 in 40 games), at a quarter of the time a decision
 /// (docs/planner-benchmark.md, "Leaves valued by the ghost ball").
 /// kStrongestPositionSimulations, the runs of a next-shot plan, are spent
 /// only with the windows valuation; position play is on while they are > 0.

@@ -207,7 +207,7 @@ double kth_largest(std::vector<double> scores, std::size_t k) {
 // no more than the finalists-th score so far cannot be kept
 // (nor can any after it; an equal score keeps the earlier leave): the
 // scoring stops there, and the leaves kept are those of scoring them all.
-void score_leaves_by_windows(Lookahead& la, std::vector<Candidate>& candidates) {
+void score_leaves_without_noise(Lookahead& la, std::vector<Candidate>& candidates) {
   const auto finalists = static_cast<std::size_t>(la.q.finalists);
   std::vector<double> scores;
   std::size_t scored = 0;
@@ -409,7 +409,7 @@ PositionPlanResult plan_shot_for_position(const Scenario& table_state, const Pos
   result.plan.rejected = std::move(found.plan.rejected);
   result.plan.cue_ball = la.cue_id;
   std::vector<Candidate> candidates = candidate_leaves(found.every, q.valuation);
-  score_leaves_by_windows(la, candidates);                       // 2.
+  score_leaves_without_noise(la, candidates);                       // 2.
   screen_finalists(la, candidates);                              // 3.
   play_best(la, candidates, result);                             // 4.
   result.plan.simulations = la.simulations;

@@ -728,7 +728,7 @@ void usage() {
       "                           [0, %d] (default: the agent's, %d; strongest %d; 0: the noise-free leave alone)\n"
       "  --depth D                position play: shots looked ahead, [1, %d] (default: the agent's, 1)\n"
       "  --valuation V            position play and ball in hand: how a leave is valued, windows (the planner's\n"
-      "                           window search) or ghost_ball (no engine run; depth 1) (default: the agent's;\n"
+      "                           window search) or ghost_ball (no engine run at depth 1) (default: the agent's;\n"
       "                           strongest ghost_ball, the others windows)\n"
       "  --finalists F            position play: the candidates screened under noise, [1, %d] (default: the agent's, 3)\n"
       "  --seconds S              the run-outs' decisions under a wall-clock budget, [0, 3600] s\n"

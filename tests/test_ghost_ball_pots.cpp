@@ -1,8 +1,8 @@
 // Tests of the ghost-ball pots (src/planning/ghost_ball.cpp): a straight-in
-// pot's ghost ball, score and chance against their closed forms; a ball on
-// either path or a cut beyond kMaxCutDeg removes a pot; on random layouts
-// every pot returned meets the definition, best first, and every pocket
-// left out fails it.
+// pot's ghost ball, score, window and chance against their closed forms; a
+// ball on either path or a cut beyond kMaxCutDeg removes a pot; on random
+// layouts every pot returned meets the definition, best first, and every
+// pocket left out fails it.
 #include "cueball/planning/ghost_ball.hpp"
 
 #include <gtest/gtest.h>
@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "ball_layout.hpp"
+#include "cueball/planning/pocket_windows.hpp"
 #include "cueball/planning/shot_planner.hpp"
 
 namespace cueball {
@@ -39,12 +40,19 @@ TEST(GhostBallPots, AStraightInPotIsTheClosedForm) {
   EXPECT_NEAR(best.ghost.y, G.y, 1e-15);
   // Straight in: cos(cut) = 1, score 1 / (|CG| |OP|).
   EXPECT_NEAR(best.score, 1.0 / (norm(G - Vec2{0.8, 0.8}) * norm(P - O)), 1e-9);
-  const double chance = ghost_ball_pot_chance(best.score, R, kAim);
-  EXPECT_NEAR(chance, std::erf(2.0 * R * kPotTolerance * best.score / (kAim * std::numbers::sqrt2)), 1e-15);
+  // Head on into the corner: its window's half-width, wider than the 25 mm
+  // a ball's centre has inside the 4.5 in mouth (the jaws turn balls in).
+  EXPECT_EQ(best.window, pocket_window_half_width(*pocket_windows(s), static_cast<std::size_t>(best.pocket), u));
+  EXPECT_GT(best.window, 0.030);
+  EXPECT_LT(best.window, 0.040);
+  EXPECT_NEAR(best.aim_tolerance, 2.0 * R * best.window * best.score, 1e-15);
+  const double chance = ghost_ball_pot_chance(best.aim_tolerance, kAim);
+  EXPECT_NEAR(chance, std::erf(2.0 * R * best.window * best.score / (kAim * std::numbers::sqrt2)), 1e-15);
   EXPECT_GT(chance, 0.9);  // 0.35 m and 0.45 m of path: an easy pot
   EXPECT_EQ(best_ghost_ball_chance(s, 0, {1}, kAim), chance);
-  EXPECT_EQ(ghost_ball_pot_chance(best.score, R, 0.0), 1.0);          // no noise
-  EXPECT_LT(ghost_ball_pot_chance(best.score, R, 4.0 * kAim), chance);  // more noise, less chance
+  EXPECT_EQ(ghost_ball_pot_chance(best.aim_tolerance, 0.0), 1.0);          // no noise
+  EXPECT_LT(ghost_ball_pot_chance(best.aim_tolerance, 4.0 * kAim), chance);  // more noise, less chance
+  EXPECT_EQ(ghost_ball_pot_chance(0.0, kAim), 0.0);                          // a closed window
   // Farther back along the same line: a lower score and chance.
   const Scenario farther = layout({{0, {1.1, 1.1}}, {1, {0.45, 0.45}}});
   EXPECT_LT(best_ghost_ball_chance(farther, 0, {1}, kAim), chance);
@@ -72,7 +80,7 @@ TEST(GhostBallPots, EveryPotMeetsTheDefinitionBestFirstAndEveryPocketLeftOutFail
   const double R = empty.settings.parameters.ball.radius;
   std::mt19937_64 rng(29);
   std::uniform_real_distribution<double> ux(0.1, 2.44), uy(0.1, 1.17);
-  int pots_seen = 0, left_out = 0;
+  int pots_seen = 0, left_out = 0, closed = 0;
   for (int trial = 0; trial < 200; ++trial) {
     std::vector<test::Placed> balls;
     while (balls.size() < 6) {
@@ -84,7 +92,7 @@ TEST(GhostBallPots, EveryPotMeetsTheDefinitionBestFirstAndEveryPocketLeftOutFail
     const Scenario s = layout(balls);
     const std::vector<int> targets{1, 2};
     const std::vector<GhostBallPot> pots = ghost_ball_pots(s, 0, targets);
-    for (std::size_t k = 1; k < pots.size(); ++k) EXPECT_GE(pots[k - 1].score, pots[k].score);
+    for (std::size_t k = 1; k < pots.size(); ++k) EXPECT_GE(pots[k - 1].aim_tolerance, pots[k].aim_tolerance);
     const Vec2 C = balls[0].p;
     for (const int t : targets) {
       const Vec2 O = balls[static_cast<std::size_t>(t)].p;
@@ -104,6 +112,9 @@ TEST(GhostBallPots, EveryPotMeetsTheDefinitionBestFirstAndEveryPocketLeftOutFail
         if (found) {
           ++pots_seen;
           EXPECT_NEAR(found->score, cos_cut / (norm(G - C) * norm(P - O)), 1e-12);
+          EXPECT_EQ(found->window, pocket_window_half_width(*pocket_windows(s), k, u));
+          EXPECT_NEAR(found->aim_tolerance, 2.0 * R * found->window * found->score, 1e-15);
+          closed += found->window == 0.0 ? 1 : 0;
         } else {
           ++left_out;
         }
@@ -112,6 +123,7 @@ TEST(GhostBallPots, EveryPotMeetsTheDefinitionBestFirstAndEveryPocketLeftOutFail
   }
   EXPECT_GT(pots_seen, 200);  // both kinds were exercised
   EXPECT_GT(left_out, 200);
+  EXPECT_GT(closed, 0);  // a side pocket seen from too far along its rail
 }
 
 }  // namespace

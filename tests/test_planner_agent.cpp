@@ -240,8 +240,8 @@ TEST(PlannerAgent, RefusesBadOptions) {
   test::expect_invalid("simulations", [&] { (void)planner_action(o, s, 1); });
   o = cheap();
   o.position_simulations = 500;
-  o.position_depth = 2;
-  o.position_valuation = LeaveValuation::ghost_ball;  // depth 1 only
+  o.position_depth = kMaxPositionDepth + 1;
+  o.position_valuation = LeaveValuation::ghost_ball;
   test::expect_invalid("position_depth", [&] { (void)choose_action(o, s, 1); });
 }
 

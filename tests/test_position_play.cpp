@@ -360,6 +360,79 @@ TEST(PositionPlay, TheGhostBallValuationScoresEachLeaveByItsGhostBallChance) {
   EXPECT_GE(compared, 4);
 }
 
+// Depth 2 by the ghost ball, recomputed here from its definition: the best,
+// over the next shot's three best ghost-ball pots, of its chance times the
+// best ghost-ball chance of the ball after it on the table each stroke
+// (kGhostBallStrokeSpeeds x kGhostBallStrokeHeights) leaves, a scratch
+// scoring 0; where no stroke drops the ball, the tables with it taken off.
+double two_shot_ghost_ball_value(const Scenario& left, int next, int after, double aim_sigma) {
+  const std::vector<GhostBallPot> pots = ghost_ball_pots(left, 0, {next});
+  double value = 0.0;
+  for (std::size_t k = 0; k < pots.size() && k < 3; ++k) {
+    double potted = 0.0, unpotted = 0.0;
+    bool any_potted = false;
+    for (double speed : kGhostBallStrokeSpeeds)
+      for (double height : kGhostBallStrokeHeights) {
+        GhostBallStroke stroke = ghost_ball_stroke(left, 0, pots[k], speed, height);
+        if (stroke.scratched) continue;
+        std::erase_if(stroke.left.balls, [&](const SimulationBall& b) { return b.id == next; });
+        const bool after_on = std::any_of(stroke.left.balls.begin(), stroke.left.balls.end(),
+                                          [&](const SimulationBall& b) { return b.id == after; });
+        const double chance = after_on ? best_ghost_ball_chance(stroke.left, 0, {after}, aim_sigma) : 1.0;
+        if (stroke.potted) {
+          any_potted = true;
+          potted = std::max(potted, chance);
+        } else {
+          unpotted = std::max(unpotted, chance);
+        }
+      }
+    value = std::max(value, ghost_ball_pot_chance(pots[k].aim_tolerance, aim_sigma) * (any_potted ? potted : unpotted));
+  }
+  return value;
+}
+
+// LeaveValuation::ghost_ball at depth 2: each finalist's noise-free leave
+// (noisy_leaves 0) valued by the next two shots' ghost-ball chances, the
+// second after a searched stroke of the first (recomputed above); never more
+// than depth 1's value of the same leave (the first shot's best chance), and
+// below it somewhere (the ball after the next one, or a next shot whose
+// every stroke scratches, counts).
+TEST(PositionPlay, DepthTwoByTheGhostBallValuesTheNextTwoShots) {
+  int compared = 0, lower = 0;
+  for (unsigned seed = 20; seed < 20 + static_cast<unsigned>(test::scaled(6, 2)); ++seed) {
+    SCOPED_TRACE(seed);
+    const Scenario s = random_layout(seed, 4);
+    PositionRequest q = request_for(1);
+    q.valuation = LeaveValuation::ghost_ball;
+    q.noisy_leaves = 0;
+    q.depth = 2;
+    PositionPlanResult r;
+    try {
+      r = plan_shot_for_position(s, q);
+    } catch (const NoFeasibleShot&) {
+      continue;
+    }
+    const auto check = [&](const PlannedShot& shot, const Leave& leave) {
+      const Scenario left = table_left_by(s, shot);
+      const auto on = [&](int id) {
+        return std::any_of(left.balls.begin(), left.balls.end(), [&](const SimulationBall& b) { return b.id == id; });
+      };
+      if (!on(2)) return;
+      const double two = two_shot_ghost_ball_value(left, 2, 3, q.shot.noise.aim);
+      const double one = best_ghost_ball_chance(left, 0, {2}, q.shot.noise.aim);
+      EXPECT_EQ(leave.noisy_next_window, two);
+      EXPECT_DOUBLE_EQ(leave.score, leave.screened_probability * two);
+      EXPECT_LE(two, one);
+      lower += two < one - 1e-3 ? 1 : 0;
+      ++compared;
+    };
+    check(r.plan.shot, r.leave);
+    for (std::size_t k = 0; k < r.plan.alternatives.size(); ++k) check(r.plan.alternatives[k], r.alternative_leaves[k]);
+  }
+  EXPECT_GE(compared, 2);
+  EXPECT_GE(lower, 1);
+}
+
 TEST(PositionPlay, BadInputNamesTheField) {
   const Scenario s = random_layout(3);
   const auto field = [&](PositionRequest q) -> std::string {
@@ -390,8 +463,7 @@ TEST(PositionPlay, BadInputNamesTheField) {
   EXPECT_EQ(field(q), "depth");
   q.depth = kMaxPositionDepth + 1;
   EXPECT_EQ(field(q), "depth");
-  q.depth = 2;
-  q.valuation = LeaveValuation::ghost_ball;  // depth 1 only
+  q.valuation = LeaveValuation::ghost_ball;
   EXPECT_EQ(field(q), "depth");
   q = request_for(1);
   q.finalists = 0;

@@ -74,9 +74,6 @@ void validate(const AgentOptions& options) {
   if (options.position_finalists < 1 || options.position_finalists > kMaxPositionFinalists)
     throw InvalidArgument("position_finalists", std::to_string(options.position_finalists) + " is out of range [1, " +
                                                     std::to_string(kMaxPositionFinalists) + "]");
-  if (options.position_valuation == LeaveValuation::ghost_ball && options.position_depth != 1)
-    throw InvalidArgument("position_depth", std::to_string(options.position_depth) +
-                                                " is out of range [1, 1] with position_valuation ghost_ball");
   if (!(options.seconds >= 0.0 && options.seconds <= kMaxAgentSeconds))
     throw InvalidArgument("seconds", std::to_string(options.seconds) + " is out of range [0, 3600] (0: no time budget)");
   if (options.noise) validate(*options.noise);

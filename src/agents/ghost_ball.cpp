@@ -71,11 +71,9 @@ Action ghost_shot(const LegalActions& legal, const Scenario& table, const std::v
   return a;
 }
 
-}  // namespace
-
-std::optional<GhostBallShot> ghost_ball_shot(const Scenario& table, int cue_ball, const std::vector<int>& targets,
-                                             double speed) {
-  const std::vector<GhostBallPot> pots = ghost_ball_pots(table, cue_ball, targets);  // best score first
+// The first of `pots` whose cue clears at one of lowest_clear_elevation_deg()'s elevations.
+std::optional<GhostBallShot> first_clear(const Scenario& table, int cue_ball, const std::vector<GhostBallPot>& pots,
+                                         double speed) {
   if (pots.empty()) return std::nullopt;
   const Vec2 C = find_ball(table.balls, cue_ball)->state.position;
   for (const GhostBallPot& pot : pots) {
@@ -85,9 +83,30 @@ std::optional<GhostBallShot> ghost_ball_shot(const Scenario& table, int cue_ball
     const std::optional<double> elevation = lowest_clear_elevation_deg(table, cue_ball, a);
     if (!elevation) continue;
     a.elevation_deg = *elevation;
-    return GhostBallShot{pot.target, pot.pocket, a, pot.score};
+    return GhostBallShot{pot.target, pot.pocket, a, pot.score, pot.aim_tolerance};
   }
   return std::nullopt;
+}
+
+}  // namespace
+
+std::optional<GhostBallShot> ghost_ball_shot(const Scenario& table, int cue_ball, const std::vector<int>& targets,
+                                             double speed) {
+  // By score (the geometry alone), ties in the targets' order, then the
+  // pockets': the ghost-ball agent's choice before the pocket windows.
+  std::vector<GhostBallPot> pots = ghost_ball_pots(table, cue_ball, targets);
+  const auto order = [&](int id) { return std::find(targets.begin(), targets.end(), id) - targets.begin(); };
+  std::sort(pots.begin(), pots.end(), [&](const GhostBallPot& a, const GhostBallPot& b) {
+    if (a.score != b.score) return a.score > b.score;
+    if (a.target != b.target) return order(a.target) < order(b.target);
+    return a.pocket < b.pocket;
+  });
+  return first_clear(table, cue_ball, pots, speed);
+}
+
+std::optional<GhostBallShot> likeliest_ghost_ball_shot(const Scenario& table, int cue_ball,
+                                                       const std::vector<int>& targets, double speed) {
+  return first_clear(table, cue_ball, ghost_ball_pots(table, cue_ball, targets), speed);
 }
 
 std::optional<Vec2> ghost_ball_in_hand_spot(const Scenario& table, int cue_ball, const std::vector<int>& targets,

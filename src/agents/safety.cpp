@@ -328,9 +328,9 @@ double planned_chance(const GameState& state, const CueStrikeNoise& noise, std::
 double pot_chance(const GameState& state, const CueStrikeNoise& noise) {
   const std::optional<Reply> reply = reply_table(state);
   if (!reply) return 0.0;
-  const std::optional<GhostBallShot> shot = ghost_ball_shot(reply->table, reply->cue_ball, reply->targets);
+  const std::optional<GhostBallShot> shot = likeliest_ghost_ball_shot(reply->table, reply->cue_ball, reply->targets);
   if (!shot) return 0.0;
-  return ghost_ball_pot_chance(shot->score, reply->table.settings.parameters.ball.radius, noise.aim);
+  return ghost_ball_pot_chance(shot->aim_tolerance, noise.aim);
 }
 
 std::optional<SafetyPlan> plan_safety(const GameState& state, const LegalActions& legal, std::optional<Vec2> place,

@@ -196,7 +196,7 @@ double ghost_ball_spot_chance(const Hand& h, const Spot& spot, bool grid) {
   const std::vector<int> ids = grid ? target_ids(h.q.position.shot) : std::vector<int>{spot.target};
   for (const GhostBallPot& pot : ghost_ball_pots(spot.table, h.cue_id, ids))  // best first
     if (grid ? !allowed || pot.pocket == *allowed : pot.pocket == spot.pocket)
-      return ghost_ball_pot_chance(pot.score, h.R, h.q.position.shot.noise.aim);
+      return ghost_ball_pot_chance(pot.aim_tolerance, h.q.position.shot.noise.aim);
   return 0.0;
 }
 

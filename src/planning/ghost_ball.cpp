@@ -6,7 +6,9 @@
 #include <cmath>
 #include <numbers>
 
+#include "cueball/planning/pocket_windows.hpp"
 #include "cueball/planning/shot_planner.hpp"
+#include "cueball/simulation/batch.hpp"
 
 namespace cueball {
 
@@ -17,6 +19,7 @@ std::vector<GhostBallPot> ghost_ball_pots(const Scenario& table, int cue_ball, c
   const double R = table.settings.parameters.ball.radius;
   const double min_cos_cut = std::cos(kMaxCutDeg * std::numbers::pi / 180.0);
   const Vec2 C = cue->state.position;
+  const std::shared_ptr<const PocketWindows> windows = pocket_windows(table);
   for (const int target : targets) {
     const SimulationBall* object = find_ball(table.balls, target);
     if (!object || target == cue_ball) continue;
@@ -36,22 +39,54 @@ std::vector<GhostBallPot> ghost_ball_pots(const Scenario& table, int cue_ball, c
                (distance_to_segment(b.state.position, C, G) < 2.0 * R ||
                 distance_to_segment(b.state.position, O, P) < 2.0 * R);
       });
-      if (!blocked) pots.push_back({target, static_cast<int>(p), G, cos_cut / (cg * op)});
+      if (blocked) continue;
+      const double score = cos_cut / (cg * op);
+      const double window = pocket_window_half_width(*windows, p, u);
+      pots.push_back({target, static_cast<int>(p), G, score, window, 2.0 * R * window * score});
     }
   }
-  std::stable_sort(pots.begin(), pots.end(), [](const GhostBallPot& a, const GhostBallPot& b) { return a.score > b.score; });
+  std::stable_sort(pots.begin(), pots.end(),
+                   [](const GhostBallPot& a, const GhostBallPot& b) { return a.aim_tolerance > b.aim_tolerance; });
   return pots;
 }
 
-double ghost_ball_pot_chance(double score, double radius, double aim_sigma) {
+double ghost_ball_pot_chance(double aim_tolerance, double aim_sigma) {
+  if (aim_tolerance <= 0.0) return 0.0;
   if (aim_sigma <= 0.0) return 1.0;
-  return std::erf(2.0 * radius * kPotTolerance * score / (aim_sigma * std::numbers::sqrt2));
+  return std::erf(aim_tolerance / (aim_sigma * std::numbers::sqrt2));
 }
 
 double best_ghost_ball_chance(const Scenario& table, int cue_ball, const std::vector<int>& targets, double aim_sigma) {
   const std::vector<GhostBallPot> pots = ghost_ball_pots(table, cue_ball, targets);
   if (pots.empty()) return 0.0;
-  return ghost_ball_pot_chance(pots.front().score, table.settings.parameters.ball.radius, aim_sigma);
+  return ghost_ball_pot_chance(pots.front().aim_tolerance, aim_sigma);
+}
+
+GhostBallStroke ghost_ball_stroke(const Scenario& table, int cue_ball, const GhostBallPot& pot, double speed,
+                                  double height) {
+  GhostBallStroke out;
+  const std::size_t cue = index_of(table.balls, cue_ball);
+  if (cue >= table.balls.size()) {
+    out.left = table;
+    out.scratched = true;
+    return out;
+  }
+  const double R = table.settings.parameters.ball.radius;
+  const Vec2 C = table.balls[cue].state.position;
+  const double aim_deg = std::atan2(pot.ghost.y - C.y, pot.ghost.x - C.x) * 180.0 / std::numbers::pi;
+  std::vector<SimulationBall> balls = table.balls;
+  try {
+    balls[cue].state = strike_ball(to_strike(ShotAction{speed, aim_deg, 0.0, 0.0, height}, R), C,
+                                   table.settings.parameters.ball, table.cue_parameters);
+    out.left = table_after(table, simulate_unchecked(table.table, balls, table.settings));
+  } catch (const std::exception&) {  // an event limit or a refused strike: no leave to value
+    out.left = table;
+    out.scratched = true;
+    return out;
+  }
+  out.potted = !find_ball(out.left.balls, pot.target);
+  out.scratched = !find_ball(out.left.balls, cue_ball);
+  return out;
 }
 
 }  // namespace cueball

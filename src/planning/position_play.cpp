@@ -266,13 +266,57 @@ double two_shot_window(Lookahead& la, const Scenario& left, const std::vector<in
   return value;
 }
 
+// Depth 2 by the ghost ball (LeaveValuation::ghost_ball): the best, over
+// the next shot's kPositionSecondShots best ghost-ball pots, of its chance
+// times the best, over the strokes kGhostBallStrokeSpeeds x
+// kGhostBallStrokeHeights played once without noise (ghost_ball_stroke(),
+// one engine run each), of the ghost-ball chance of the shot after it on the
+// table the stroke leaves (1 where it leaves no ball to play); a stroke that
+// scratches scores 0. Where no stroke drops the pot's ball (a level stroke
+// at the ghost ball does not allow for throw), the strokes' tables are
+// valued with that ball taken off. 0 when the next shot has no ghost-ball
+// pot. The same expectimax as two_shot_window(), each chance node the
+// ghost-ball chance, the second shot's stroke searched instead of planned.
+double two_shot_ghost_ball(Lookahead& la, const Scenario& left, const std::vector<int>& ids) {
+  const double aim_sigma = la.next.noise.aim;
+  const std::vector<GhostBallPot> pots = ghost_ball_pots(left, la.cue_id, ids);
+  double value = 0.0;
+  for (std::size_t k = 0; k < pots.size() && k < kPositionSecondShots; ++k) {
+    const GhostBallPot& pot = pots[k];
+    const double chance = ghost_ball_pot_chance(pot.aim_tolerance, aim_sigma);
+    // The shot after it has a chance of at most 1: no gain possible.
+    if (chance <= value) continue;
+    double after_potted = 0.0, after_unpotted = 0.0;  // the best after a stroke that drops the ball, and after one that does not
+    bool any_potted = false;
+    for (const double speed : kGhostBallStrokeSpeeds)
+      for (const double height : kGhostBallStrokeHeights) {
+        GhostBallStroke stroke = ghost_ball_stroke(left, la.cue_id, pot, speed, height);
+        ++la.simulations;
+        if (stroke.scratched) continue;
+        any_potted = any_potted || stroke.potted;
+        if (!stroke.potted)
+          stroke.left.balls.erase(stroke.left.balls.begin() +
+                                  static_cast<std::ptrdiff_t>(index_of(stroke.left.balls, pot.target)));
+        const std::vector<int> after_ids = next_ids_on(stroke.left, la, {});
+        const double after =
+            after_ids.empty() ? 1.0 : best_ghost_ball_chance(stroke.left, la.cue_id, after_ids, aim_sigma);
+        double& best = stroke.potted ? after_potted : after_unpotted;
+        best = std::max(best, after);
+      }
+    value = std::max(value, chance * (any_potted ? after_potted : after_unpotted));
+  }
+  return value;
+}
+
 // A leave's value for the next shots on table `left` (1 where it leaves no
-// ball to play): depth 1, the best next shot's window probability; depth 2,
-// two_shot_window().
+// ball to play): depth 1, the best next shot's window probability or
+// ghost-ball chance; depth 2, two_shot_window() or two_shot_ghost_ball().
 double leave_value(Lookahead& la, const Scenario& left) {
   const std::vector<int> ids = next_ids_on(left, la, {});
   if (ids.empty()) return 1.0;
-  if (la.q.depth >= 2) return two_shot_window(la, left, ids);
+  if (la.q.depth >= 2)
+    return la.q.valuation == LeaveValuation::ghost_ball ? two_shot_ghost_ball(la, left, ids)
+                                                        : two_shot_window(la, left, ids);
   return next_shot_value(la, left, ids);
 }
 
@@ -308,8 +352,7 @@ void ghost_ball_next_shot(const Lookahead& la, Candidate& c) {
   if (pots.empty()) return;
   c.leave.next_feasible = true;
   c.leave.next_ball = pots.front().target;
-  c.leave.next_success_probability =
-      ghost_ball_pot_chance(pots.front().score, c.left.settings.parameters.ball.radius, la.next.noise.aim);
+  c.leave.next_success_probability = ghost_ball_pot_chance(pots.front().aim_tolerance, la.next.noise.aim);
   c.leave.next_kind = to_string(ShotKind::direct);
   c.leave.next_pocket = c.left.table.pockets[static_cast<std::size_t>(pots.front().pocket)].name;
 }
@@ -385,9 +428,6 @@ PositionPlanResult plan_shot_for_position(const Scenario& table_state, const Pos
   if (q.finalists < 1 || q.finalists > kMaxPositionFinalists)
     throw InvalidArgument("finalists", static_cast<double>(q.finalists),
                           "[1, " + std::to_string(kMaxPositionFinalists) + "]", "candidates screened under noise");
-  if (q.valuation == LeaveValuation::ghost_ball && q.depth != 1)
-    throw InvalidArgument("depth", static_cast<double>(q.depth), "[1, 1] with valuation ghost_ball",
-                          "shots looked ahead");
   PositionPlanResult result;
   // The cue ball as plan_shot() takes it (which checks it, the target and the rest).
   Lookahead la{s, q, cue_ball_id(s, q.shot), {}, q.shot, 0};

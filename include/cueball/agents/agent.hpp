@@ -91,7 +91,7 @@ struct AgentOptions {
   /// Position play: shots looked ahead (PositionRequest::depth), [1, kMaxPositionDepth].
   int position_depth = 1;
   /// Position play and ball in hand: how a leave is valued
-  /// (PositionRequest::valuation); ghost_ball needs position_depth 1.
+  /// (PositionRequest::valuation).
   LeaveValuation position_valuation = LeaveValuation::windows;
   /// Position play: the finalists screened under noise (PositionRequest::finalists).
   int position_finalists = kPositionFinalists;
@@ -267,7 +267,8 @@ struct GhostBallShot {
   int target = -1;
   int pocket = -1;     ///< index into table.pockets
   ShotAction strike;   ///< centre ball, the given speed, the lowest clear elevation
-  double score = 0.0;  ///< cos(cut) / (|CG| |OP|): the small-angle aim tolerance, larger is easier
+  double score = 0.0;  ///< cos(cut) / (|CG| |OP|): the geometry's part of the aim tolerance, larger is easier
+  double aim_tolerance = 0.0;  ///< rad, GhostBallPot::aim_tolerance: with the pocket's window
 };
 
 /// The easiest clear ghost-ball pot of any of `targets` (in their order,
@@ -278,6 +279,13 @@ struct GhostBallShot {
 /// pocket qualifies or the cue ball is not on the table.
 std::optional<GhostBallShot> ghost_ball_shot(const Scenario& table, int cue_ball, const std::vector<int>& targets,
                                              double speed = kGhostBallSpeed);
+
+/// The same pots, the largest aim tolerance first (ghost_ball_pots()'s
+/// order: the pocket's window counted), the first whose cue clears: the
+/// likeliest ghost-ball pot, which the safety search's screen reads.
+std::optional<GhostBallShot> likeliest_ghost_ball_shot(const Scenario& table, int cue_ball,
+                                                       const std::vector<int>& targets,
+                                                       double speed = kGhostBallSpeed);
 
 /// The ghost-ball agent's rule for the cue ball in hand: a straight-in on
 /// one of `targets`, the cue ball `back` behind the ghost ball on the line
@@ -373,7 +381,8 @@ PlannerChoice planner_choice(const AgentOptions& options, const GameState& state
 // table (with ball in hand, from ghost_ball_in_hand_spot()), turned into a
 // probability by the ghost-ball aim tolerance (ghost_ball_pot_chance(),
 // planning/ghost_ball.hpp: erf(2R w score / (sigma sqrt 2)) under Gaussian
-// aim noise sigma, w = kPotTolerance, score = GhostBallShot::score). Direct pots
+// aim noise sigma, w the pocket's window for the target's direction,
+// GhostBallShot::aim_tolerance = 2R w score). Direct pots
 // only: a leave that gives a bank counts as safe. Then, for the few
 // finalists, by the planner's own quick search: planned_chance(), plan_shot
 // (direct and bank, kSafetyReplySimulations runs, the same noise) from the

@@ -61,7 +61,14 @@
 // With PositionRequest::valuation ghost_ball, steps 2 and 3 value each
 // leave (noise-free and noisy) by the next shot's best ghost-ball chance
 // instead (ghost_ball.hpp, no engine run) and plan no next shot in full:
-// what a decision on a budget of a tenth of a second can afford.
+// what a decision on a budget of a tenth of a second can afford. At depth 2
+// step 3's leaves are valued two shots deep by the ghost ball: the best,
+// over the next shot's kPositionSecondShots best ghost-ball pots, of its
+// chance times the best ghost-ball chance of the shot after it, over the
+// tables the pot's noise-free strokes kGhostBallStrokeSpeeds x
+// kGhostBallStrokeHeights leave (ghost_ball_stroke(), one engine run each;
+// a stroke that scratches scores 0): a sampled second ply where the
+// windows' depth 2 plans one.
 //
 // By default (valuation windows) the leave's quality is measured on the
 // exact simulation and the real planner, so it includes what the next shot
@@ -123,7 +130,8 @@ enum class LeaveValuation : unsigned char {
   /// (best_ghost_ball_chance(), ghost_ball.hpp): no engine run,
   /// microseconds a leave; straight pots only, without throw, squirt, the
   /// speed or the cue's clearance. For decisions on a budget of a tenth of a
-  /// second. `next_simulations` is not used; depth 1 only.
+  /// second. `next_simulations` is not used; at depth 2 the next shot's
+  /// strokes are played once each instead of planned (header comment).
   ghost_ball,
 };
 /// "windows", "ghost_ball".
@@ -162,10 +170,11 @@ struct PositionRequest {
   /// end): a leave that gives an easy next shot from which the one after is
   /// hard scores less than one that gives two good shots. The same budget
   /// (`next_simulations` runs a plan) for every plan; depth 2 makes about
-  /// kPositionSecondShots + 1 times as many next plans.
+  /// kPositionSecondShots + 1 times as many next plans. With valuation
+  /// ghost_ball the same by ghost-ball chances, the next shot's strokes
+  /// played once each (12 engine runs a next pot, header comment).
   int depth = 1;
-  /// How a leave's next shot is valued in steps 2 and 3 (LeaveValuation);
-  /// ghost_ball needs depth 1.
+  /// How a leave's next shot is valued in steps 2 and 3 (LeaveValuation).
   LeaveValuation valuation = LeaveValuation::windows;
   /// The finalists of step 3, [1, kMaxPositionFinalists]: each screened
   /// under the noise (a kPositionScreenFraction-th of the budget more

@@ -53,9 +53,10 @@ struct Options {
   std::uint64_t seed = 1;
   bool noise = true;
   double seconds = 0.0;  // AgentOptions::seconds of both agents (0: none)
-  // --valuations, --noisy-leaves: each agent's position play, when given (else its own).
+  // --valuations, --noisy-leaves, --depths: each agent's position play, when given (else its own).
   std::array<std::optional<LeaveValuation>, 2> valuations;
   std::array<std::optional<int>, 2> noisy_leaves;
+  std::array<std::optional<int>, 2> depths;
   std::string json;
 };
 
@@ -170,7 +171,7 @@ void usage() {
   std::printf(
       "usage: cueball-agent-benchmark [--game G] [--players A,B] [--games N] [--race R] [--seed S]\n"
       "                               [--noise tournament|none] [--seconds S] [--valuations V,W]\n"
-      "                               [--noisy-leaves N,M] [--json FILE]\n"
+      "                               [--noisy-leaves N,M] [--depths D,E] [--json FILE]\n"
       "Whole games between two agents: games and races won, breaks, break-and-runs, snooker breaks,\n"
       "three-cushion averages, fouls and decision times (docs/planner-benchmark.md, \"Games\").\n"
       "  --game G           %s (default nine_ball)\n"
@@ -184,9 +185,11 @@ void usage() {
       "                     agent's own (AgentOptions::position_valuation; default -,-)\n"
       "  --noisy-leaves N,M each agent's noisy leaves per finalist, [0, %d], - for the agent's own\n"
       "                     (AgentOptions::position_noisy_leaves; default -,-)\n"
+      "  --depths D,E       each agent's shots looked ahead in position play, [1, %d], - for the agent's own\n"
+      "                     (AgentOptions::position_depth; default -,-)\n"
       "  --json FILE        also write the results as JSON\n"
       "Exit status: 0 done, 1 an engine error, 2 bad flags.\n",
-      game_kind_names().c_str(), agent_names().c_str(), kMaxPositionNoisyLeaves);
+      game_kind_names().c_str(), agent_names().c_str(), kMaxPositionNoisyLeaves, kMaxPositionDepth);
 }
 
 Options parse(int argc, char** argv) {
@@ -198,10 +201,10 @@ Options parse(int argc, char** argv) {
       std::exit(0);
     }
     static const char* const known[] = {"--game",    "--players", "--games",      "--race",         "--seed",
-                                        "--noise",   "--seconds", "--valuations", "--noisy-leaves", "--json"};
+                                        "--noise",   "--seconds", "--valuations", "--noisy-leaves", "--depths", "--json"};
     if (std::find_if(std::begin(known), std::end(known), [&](const char* k) { return flag == k; }) == std::end(known))
       kFlags.bad("flag", flag,
-                 "--game, --players, --games, --race, --seed, --noise, --seconds, --valuations, --noisy-leaves, "
+                 "--game, --players, --games, --race, --seed, --noise, --seconds, --valuations, --noisy-leaves, --depths, "
                  "--json, --help");
     if (i + 1 >= argc) kFlags.bad(flag, "", "a value after the flag");
     const std::string value = argv[++i];
@@ -237,6 +240,10 @@ Options parse(int argc, char** argv) {
                                       [&](const std::string& v) {
                                         return static_cast<int>(kFlags.integer(flag, v, 0, kMaxPositionNoisyLeaves));
                                       });
+    } else if (flag == "--depths") {
+      o.depths = pair_flag<int>(flag, value, "[1, " + std::to_string(kMaxPositionDepth) + "]", [&](const std::string& v) {
+        return static_cast<int>(kFlags.integer(flag, v, 1, kMaxPositionDepth));
+      });
     } else {
       if (value.empty()) kFlags.bad(flag, value, "a file path");
       o.json = value;
@@ -254,6 +261,7 @@ int run(const Options& o) {
     agents[k].seconds = o.seconds;
     if (o.valuations[k]) agents[k].position_valuation = *o.valuations[k];
     if (o.noisy_leaves[k]) agents[k].position_noisy_leaves = *o.noisy_leaves[k];
+    if (o.depths[k]) agents[k].position_depth = *o.depths[k];
   }
   std::printf("cueball-agent-benchmark: %s, %s v %s, %d games from seed %llu, %s noise%s\n", to_string(o.game),
               o.names[0].c_str(), o.names[1].c_str(), o.games, static_cast<unsigned long long>(o.seed),
@@ -306,8 +314,10 @@ int run(const Options& o) {
                          static_cast<unsigned long long>(o.seed), o.noise ? "tournament" : "none", o.seconds, won[0], won[1],
                          undecided, share, ci[0], ci[1], wall);
   if (o.race > 0) json += fmt(" \"race_to\": %d, \"matches\": [%d, %d],\n", o.race, matches[0], matches[1]);
-  json += fmt(" \"valuations\": [\"%s\", \"%s\"], \"noisy_leaves\": [%d, %d],\n", to_string(agents[0].position_valuation),
-              to_string(agents[1].position_valuation), agents[0].position_noisy_leaves, agents[1].position_noisy_leaves);
+  json += fmt(" \"valuations\": [\"%s\", \"%s\"], \"noisy_leaves\": [%d, %d], \"depths\": [%d, %d],\n",
+              to_string(agents[0].position_valuation), to_string(agents[1].position_valuation),
+              agents[0].position_noisy_leaves, agents[1].position_noisy_leaves, agents[0].position_depth,
+              agents[1].position_depth);
   json += " \"agents\": [\n";
   for (std::size_t a = 0; a < 2; ++a) {
     const std::vector<int>& v = visits[a];

@@ -726,7 +726,7 @@ void usage() {
       "                           next-shot plan, [%d, %d] (default: the agent's; strongest 1000)\n"
       "  --noisy-leaves N         position play: noisy outcomes of each finalist whose leaves are scored,\n"
       "                           [0, %d] (default: the agent's, %d; strongest %d; 0: the noise-free leave alone)\n"
-      "  --depth D                position play: shots looked ahead, [1, %d] (default: the agent's, 1)\n"
+      "  --depth D                position play: shots looked ahead, [1, %d] (default: the agent's; strongest 2, the others 1)\n"
       "  --valuation V            position play and ball in hand: how a leave is valued, windows (the planner's\n"
       "                           window search) or ghost_ball (no engine run at depth 1) (default: the agent's;\n"
       "                           strongest ghost_ball, the others windows)\n"

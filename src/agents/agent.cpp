@@ -43,6 +43,7 @@ AgentOptions strongest_agent() {
   o.position_simulations = kStrongestPositionSimulations;
   o.position_valuation = LeaveValuation::ghost_ball;
   o.position_noisy_leaves = kStrongestNoisyLeaves;
+  o.position_depth = kStrongestDepth;
   o.fallback_kinds = {ShotKind::kick};
   return o;
 }

@@ -142,17 +142,23 @@ TimedRounds plan_in_time(const AgentOptions& options, const std::function<void(c
 /// planner with each pot planned at kStrongestSimulations runs, played for
 /// position with each leave valued by its ghost-ball chance
 /// (LeaveValuation::ghost_ball) over kStrongestNoisyLeaves noisy leaves of
-/// each finalist, a kick when nothing else pots; three-cushion:
+/// each finalist, kStrongestDepth shots deep (the next pot's strokes played
+/// once each, the ball after it valued by its ghost-ball chance), a kick
+/// when nothing else pots; three-cushion:
 /// carom_search at the same budget, without position play (which did not
 /// gain at equal runs). The ghost-ball valuation ran out as many 9-ball
 /// racks as the planner's window search (36 and 31 of 90) and played it
 /// even (18-22 in 40 games), at a quarter of the time a decision
-/// (docs/planner-benchmark.md, "Leaves valued by the ghost ball").
+/// (docs/planner-benchmark.md, "Leaves valued by the ghost ball"); two
+/// shots deep, with the pockets' windows, it ran out 0.448 of 540 racks
+/// against 0.400 one shot deep with one tolerance for every pocket
+/// (docs/planner-benchmark.md, "The pocket's window, and two shots ahead").
 /// kStrongestPositionSimulations, the runs of a next-shot plan, are spent
 /// only with the windows valuation; position play is on while they are > 0.
 inline constexpr int kStrongestSimulations = 4000;
 inline constexpr int kStrongestPositionSimulations = 1000;
 inline constexpr int kStrongestNoisyLeaves = 16;
+inline constexpr int kStrongestDepth = 2;
 AgentOptions strongest_agent();
 
 /// An agent by the name a user gives (the CLI's --players, Python's

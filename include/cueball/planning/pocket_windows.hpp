@@ -3,12 +3,14 @@
 // the engine (the table's own jaws, facings and capture circle, and its
 // cloth). A ball coming straight into a 9-ft table's corner pocket drops on
 // lines up to 35 mm either side of one through the pocket's centre; one
-// coming 40 deg off the pocket's axis, on a band about half as wide, and no
-// longer centred on it; a side pocket closes from 42 mm either side head on
-// to nothing beyond about 65 deg. This is the "effective target size" of a
+// coming 20 deg off the pocket's axis, on a band 62 mm wide centred 35 mm to
+// the side (a ball sent at the pocket's centre barely drops); a side pocket
+// closes from 42 mm either side head on to nothing beyond about 65 deg.
+// This is the "effective target size" of a
 // pocket by angle of approach (D. G. Alciatore, "The Illustrated Principles
-// of Pool and Billiards", 2004, principle 3.5 and technical proofs TP 3.5
-// and 3.6, for a straight-line model of the jaws), here read from the
+// of Pool and Billiards", 2004, and his technical proofs TP 3.5-3.8 on
+// billiards.colostate.edu, for corner and side pockets, slow and fast
+// shots, from a straight-line model of the jaws), here read from the
 // simulation for any table. The ghost-ball chance (ghost_ball.hpp) takes its
 // aim tolerance from it.
 //

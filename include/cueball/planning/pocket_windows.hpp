@@ -17,11 +17,14 @@
 // The measurement: a lone ball rolling at kPocketWindowSpeed, started
 // kPocketWindowDistance from the pocket's centre on lines in every direction
 // (kPocketWindowAngleStepDeg apart) and at offsets from the centre line
-// kPocketWindowScanStep apart (then each edge bisected to
-// kPocketWindowEdgeTolerance); lines whose start is not on the table are not
-// tried, so a window whose lines run along a rail ends where they leave the
-// table. Built on first use for a table and its settings (about 20,000
-// engine runs, 0.1 s) and cached.
+// kPocketWindowScanStep apart, out to the pocket's radius and a ball's
+// diameter either side; the window runs from the first potting line to the
+// last, each edge bisected outwards to kPocketWindowEdgeTolerance (a gap
+// inside it, which the 9-ft table's pockets do not show at 1 mm, is not
+// looked for). Lines whose start is not on the table a millimetre clear of
+// every cushion are not tried, so a window whose lines run along a rail
+// ends where they leave the table. Built on first use for a table and its
+// settings (about 20,000 engine runs, 0.1 s) and cached.
 #pragma once
 
 #include <memory>

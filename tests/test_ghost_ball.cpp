@@ -9,6 +9,7 @@
 #include <numbers>
 
 #include "cueball/agents/agent.hpp"
+#include "cueball/planning/ghost_ball.hpp"
 #include "cueball/games/break_shot.hpp"
 #include "cueball/core/random.hpp"
 #include "game_actions.hpp"
@@ -63,6 +64,34 @@ TEST(GhostBall, ShotIsTheEasiestClearPocket) {
   // No cue ball on the table: no shot.
   GameState no_cue = in_play({{1, {2.3, 1.05}}, {9, {0.5, 0.3}}});
   EXPECT_FALSE(ghost_ball_shot(no_cue.table, 0, {1}));
+}
+
+// The 1 near the bottom rail, 0.35 m short of the side pocket, the cue ball
+// behind it on the line from that pocket: the straight-in to the side pocket
+// has the best score (the geometry), but the ball comes at it from along the
+// rail, where its window is nearly closed. The ghost-ball agent keeps the
+// score's choice; the likeliest pot (the safety screen's) is another
+// pocket, with the larger aim tolerance.
+TEST(GhostBall, TheLikeliestPotCountsThePocketsWindowTheAgentsChoiceDoesNot) {
+  const Vec2 O{0.92, 0.08};
+  GameState probe = in_play({{1, O}, {9, {2.2, 1.1}}});
+  std::size_t side = 0;
+  for (std::size_t p = 0; p < probe.table.table.pockets.size(); ++p)
+    if (probe.table.table.pockets[p].centre.y < 0.0 &&
+        std::abs(probe.table.table.pockets[p].centre.x - 0.5 * probe.table.table.length) < 0.1)
+      side = p;
+  const Vec2 P = probe.table.table.pockets[side].centre;
+  const Vec2 C = O - 0.3 * ((P - O) / norm(P - O));
+  const GameState s = in_play({{0, C}, {1, O}, {9, {2.2, 1.1}}});
+  const std::optional<GhostBallShot> by_score = ghost_ball_shot(s.table, 0, {1});
+  const std::optional<GhostBallShot> likeliest = likeliest_ghost_ball_shot(s.table, 0, {1});
+  ASSERT_TRUE(by_score && likeliest);
+  EXPECT_EQ(by_score->pocket, static_cast<int>(side));
+  EXPECT_NE(likeliest->pocket, by_score->pocket);
+  EXPECT_GT(by_score->score, likeliest->score);
+  EXPECT_GT(likeliest->aim_tolerance, 4.0 * by_score->aim_tolerance);
+  const CueStrikeNoise noise = tournament_noise();
+  EXPECT_EQ(pot_chance(s, noise), ghost_ball_pot_chance(likeliest->aim_tolerance, noise.aim));
 }
 
 TEST(GhostBall, BallInHandGoesBehindTheGhostBallInsideTheRegion) {

@@ -21,7 +21,7 @@
 // clearance are left out: a screen, not a plan. (On 549 random pots of one
 // ball on the 9-ft table, this chance against the planner's measured success
 // of the same pot: Brier score 0.021, correlation 0.89; with a fixed w of
-// 25 mm for every pocket and direction, as before issue 27's sixth round,
+// 25 mm for every pocket and direction, as before 5 December 2026,
 // 0.033 and 0.82.)
 #pragma once
 

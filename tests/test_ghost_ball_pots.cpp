@@ -1,5 +1,6 @@
 // Tests of the ghost-ball pots (src/planning/ghost_ball.cpp): a straight-in
-// pot's ghost ball, score, window and chance against their closed forms; a
+// pot's ghost ball, score, window and chance against their closed forms; the
+// target sent through the middle of the pocket's window, checked by rolls; a
 // ball on either path or a cut beyond kMaxCutDeg removes a pot; on random
 // layouts every pot returned meets the definition, best first, and every
 // pocket left out fails it.
@@ -36,10 +37,13 @@ TEST(GhostBallPots, AStraightInPotIsTheClosedForm) {
   EXPECT_NEAR(P.x, P.y, 1e-12);  // the corner on the diagonal
   const Vec2 u = (P - O) / norm(P - O);
   const Vec2 G = O - 2.0 * R * u;
-  EXPECT_NEAR(best.ghost.x, G.x, 1e-15);
-  EXPECT_NEAR(best.ghost.y, G.y, 1e-15);
+  // Head on, the corner's window is symmetric to within its measurement:
+  // the 1 is sent within a millimetre of the pocket's centre.
+  EXPECT_LT(norm(best.pocket_aim - P), 1e-3);
+  EXPECT_NEAR(best.ghost.x, G.x, 1e-4);
+  EXPECT_NEAR(best.ghost.y, G.y, 1e-4);
   // Straight in: cos(cut) = 1, score 1 / (|CG| |OP|).
-  EXPECT_NEAR(best.score, 1.0 / (norm(G - Vec2{0.8, 0.8}) * norm(P - O)), 1e-9);
+  EXPECT_NEAR(best.score, 1.0 / (norm(G - Vec2{0.8, 0.8}) * norm(P - O)), 1e-3 * best.score);
   // Head on into the corner: its window's half-width, wider than the 25 mm
   // a ball's centre has inside the 4.5 in mouth (the jaws turn balls in).
   EXPECT_EQ(best.window, pocket_window_half_width(*pocket_windows(s), static_cast<std::size_t>(best.pocket), u));
@@ -56,6 +60,60 @@ TEST(GhostBallPots, AStraightInPotIsTheClosedForm) {
   // Farther back along the same line: a lower score and chance.
   const Scenario farther = layout({{0, {1.1, 1.1}}, {1, {0.45, 0.45}}});
   EXPECT_LT(best_ghost_ball_chance(farther, 0, {1}, kAim), chance);
+}
+
+// Whether a lone ball at O rolling at 1 m/s towards `at` turned by `turn`
+// (rad) drops into pocket k.
+bool rolls_in(const Scenario& s, Vec2 O, Vec2 at, double turn, std::size_t k) {
+  const double R = s.settings.parameters.ball.radius;
+  const double a = std::atan2(at.y - O.y, at.x - O.x) + turn;
+  SimulationBall ball;
+  ball.id = 1;
+  ball.state.position = O;
+  ball.state.velocity = Vec2{std::cos(a), std::sin(a)};
+  ball.state.angular_velocity = Vec3{-ball.state.velocity.y / R, ball.state.velocity.x / R, 0.0};
+  const SimulationResult r = simulate_unchecked(s.table, {ball}, s.settings);
+  return r.balls.front().pocketed && r.balls.front().pocket == static_cast<int>(k);
+}
+
+TEST(GhostBallPots, TheTargetIsSentThroughTheMiddleOfThePocketsWindow) {
+  // The 1 coming 20 degrees off the bottom-left corner's axis (-135 deg):
+  // the middle of the lines that drop it lies well to one side of the
+  // pocket's centre. Sent there, it drops with 80 % of the window's
+  // half-width to spare either side; sent at the centre, it does not.
+  const Scenario s = layout({});
+  const std::size_t corner = 0;
+  const Vec2 centre = s.table.pockets[corner].centre;
+  ASSERT_LT(centre.x, 0.1);
+  ASSERT_LT(centre.y, 0.1);
+  const double a = (-135.0 + 20.0) * std::numbers::pi / 180.0;
+  const Vec2 O = centre - 0.5 * Vec2{std::cos(a), std::sin(a)};
+  const Scenario table = layout({{0, O + 0.6 * Vec2{std::cos(a), std::sin(a)} * -1.0}, {1, O}});
+  const std::vector<GhostBallPot> pots = ghost_ball_pots(table, 0, {1});
+  const GhostBallPot* pot = nullptr;
+  for (const GhostBallPot& p : pots)
+    if (p.pocket == static_cast<int>(corner)) pot = &p;
+  ASSERT_NE(pot, nullptr);
+  EXPECT_GT(norm(pot->pocket_aim - centre), 0.015);
+  const double spare = 0.8 * pot->window / norm(pot->pocket_aim - O);
+  EXPECT_TRUE(rolls_in(table, O, pot->pocket_aim, 0.0, corner));
+  EXPECT_TRUE(rolls_in(table, O, pot->pocket_aim, spare, corner));
+  EXPECT_TRUE(rolls_in(table, O, pot->pocket_aim, -spare, corner));
+  EXPECT_FALSE(rolls_in(table, O, centre, spare, corner) && rolls_in(table, O, centre, -spare, corner));
+  // The textbook rule (the ghost-ball agent's) sends it to the centre, with
+  // the window of that direction.
+  const double R = table.settings.parameters.ball.radius;
+  const Vec2 u = (centre - O) / norm(centre - O);
+  bool seen = false;
+  for (const GhostBallPot& p : ghost_ball_pots(table, 0, {1}, GhostBallAim::pocket_centre))
+    if (p.pocket == static_cast<int>(corner)) {
+      seen = true;
+      EXPECT_EQ(p.pocket_aim.x, centre.x);
+      EXPECT_EQ(p.pocket_aim.y, centre.y);
+      EXPECT_NEAR(norm(p.ghost - (O - 2.0 * R * u)), 0.0, 1e-15);
+      EXPECT_EQ(p.window, pocket_window_half_width(*pocket_windows(table), corner, u));
+    }
+  EXPECT_TRUE(seen);
 }
 
 TEST(GhostBallPots, ABallOnEitherPathOrACutTooThinRemovesThePot) {
@@ -97,7 +155,13 @@ TEST(GhostBallPots, EveryPotMeetsTheDefinitionBestFirstAndEveryPocketLeftOutFail
     for (const int t : targets) {
       const Vec2 O = balls[static_cast<std::size_t>(t)].p;
       for (std::size_t k = 0; k < s.table.pockets.size(); ++k) {
-        const Vec2 P = s.table.pockets[k].centre;
+        // Sent to the middle of the window for its direction, found in two passes.
+        const Vec2 centre = s.table.pockets[k].centre;
+        Vec2 P = centre;
+        for (int pass = 0; pass < 2; ++pass) {
+          const Vec2 d = (P - O) / norm(P - O);
+          P = centre + pocket_window_centre(*pocket_windows(s), k, d) * Vec2{-d.y, d.x};
+        }
         const Vec2 u = (P - O) / norm(P - O);
         const Vec2 G = O - 2.0 * R * u;
         const double cos_cut = dot((G - C) / norm(G - C), u);
@@ -111,6 +175,7 @@ TEST(GhostBallPots, EveryPotMeetsTheDefinitionBestFirstAndEveryPocketLeftOutFail
         EXPECT_EQ(found != nullptr, clear) << "trial " << trial << " ball " << t << " pocket " << k;
         if (found) {
           ++pots_seen;
+          EXPECT_NEAR(norm(found->pocket_aim - P), 0.0, 1e-12);
           EXPECT_NEAR(found->score, cos_cut / (norm(G - C) * norm(P - O)), 1e-12);
           EXPECT_EQ(found->window, pocket_window_half_width(*pocket_windows(s), k, u));
           EXPECT_NEAR(found->aim_tolerance, 2.0 * R * found->window * found->score, 1e-15);

@@ -144,6 +144,38 @@ TEST(PocketWindows, BetweenMeasuredDirectionsTheEdgesAreInterpolated) {
   EXPECT_EQ(pocket_window_half_width(*w, w->pockets.size(), direction(0.0)), 0.0);  // no such pocket
 }
 
+TEST(PocketWindows, TheMiddleIsInterpolatedWhereBothAreOpenAndTheOpenOnesWhereOneIs) {
+  const Scenario s = layout({});
+  const std::shared_ptr<const PocketWindows> w = pocket_windows(s);
+  const PocketWindow& corner = w->pockets[0];
+  const std::size_t n = corner.low.size();
+  const auto open = [&](std::size_t j) { return corner.low[j] <= corner.high[j]; };
+  const auto middle = [&](std::size_t j) { return 0.5 * (corner.low[j] + corner.high[j]); };
+  int both = 0, one = 0, none = 0;
+  for (std::size_t k = 0; k < n; ++k) {
+    const std::size_t k1 = (k + 1) % n;
+    const double got = pocket_window_centre(*w, 0, direction((static_cast<double>(k) + 0.25) * kPocketWindowAngleStepDeg));
+    if (open(k) && open(k1)) {
+      EXPECT_NEAR(got, 0.75 * middle(k) + 0.25 * middle(k1), 1e-12);
+      ++both;
+    } else if (open(k) || open(k1)) {
+      EXPECT_NEAR(got, open(k) ? middle(k) : middle(k1), 1e-12);
+      ++one;
+    } else {
+      EXPECT_EQ(got, 0.0);
+      ++none;
+    }
+  }
+  EXPECT_GT(both, 20);
+  EXPECT_GT(one, 0);  // the edges of the directions a corner takes balls from
+  EXPECT_GT(none, 20);
+  // Head on the corner's window is centred on the pocket; 20 deg off its
+  // axis its middle is well to one side of the centre.
+  EXPECT_LT(std::abs(pocket_window_centre(*w, 0, direction(-135.0))), 1e-3);
+  EXPECT_GT(std::abs(pocket_window_centre(*w, 0, direction(-135.0 + 20.0))), 0.015);
+  EXPECT_EQ(pocket_window_centre(*w, w->pockets.size(), direction(0.0)), 0.0);  // no such pocket
+}
+
 TEST(PocketWindows, AreCachedPerTableAndSettings) {
   const Scenario pool = layout({});
   EXPECT_EQ(pocket_windows(pool).get(), pocket_windows(layout({{1, {0.5, 0.5}}})).get());  // the balls do not count

@@ -12,7 +12,30 @@
 
 namespace cueball {
 
-std::vector<GhostBallPot> ghost_ball_pots(const Scenario& table, int cue_ball, const std::vector<int>& targets) {
+namespace {
+
+// Iterations of the point a ball at O is sent to: the direction to the
+// point moves the window's middle, which moves the point (a few mm; the
+// second pass moves it by microns).
+constexpr int kWindowMiddlePasses = 2;
+
+// The point on the line through the middle of the pocket's window for the
+// direction from O to it, level with the pocket's centre.
+Vec2 window_middle(const PocketWindows& windows, std::size_t pocket, Vec2 O, Vec2 centre) {
+  Vec2 P = centre;
+  for (int pass = 0; pass < kWindowMiddlePasses; ++pass) {
+    const double d = norm(P - O);
+    if (d <= 0.0) break;
+    const Vec2 u = (P - O) / d;
+    P = centre + pocket_window_centre(windows, pocket, u) * Vec2{-u.y, u.x};
+  }
+  return P;
+}
+
+}  // namespace
+
+std::vector<GhostBallPot> ghost_ball_pots(const Scenario& table, int cue_ball, const std::vector<int>& targets,
+                                          GhostBallAim aim) {
   std::vector<GhostBallPot> pots;
   const SimulationBall* cue = find_ball(table.balls, cue_ball);
   if (!cue) return pots;
@@ -25,7 +48,9 @@ std::vector<GhostBallPot> ghost_ball_pots(const Scenario& table, int cue_ball, c
     if (!object || target == cue_ball) continue;
     const Vec2 O = object->state.position;
     for (std::size_t p = 0; p < table.table.pockets.size(); ++p) {
-      const Vec2 P = table.table.pockets[p].centre;
+      const Vec2 centre = table.table.pockets[p].centre;
+      if (norm(centre - O) <= 0.0) continue;
+      const Vec2 P = aim == GhostBallAim::window_middle ? window_middle(*windows, p, O, centre) : centre;
       const double op = norm(P - O);
       if (op <= 0.0) continue;
       const Vec2 u = (P - O) / op;
@@ -42,7 +67,7 @@ std::vector<GhostBallPot> ghost_ball_pots(const Scenario& table, int cue_ball, c
       if (blocked) continue;
       const double score = cos_cut / (cg * op);
       const double window = pocket_window_half_width(*windows, p, u);
-      pots.push_back({target, static_cast<int>(p), G, score, window, 2.0 * R * window * score});
+      pots.push_back({target, static_cast<int>(p), G, score, window, 2.0 * R * window * score, P});
     }
   }
   std::stable_sort(pots.begin(), pots.end(),

@@ -128,16 +128,42 @@ std::shared_ptr<const PocketWindows> pocket_windows(const Scenario& table) {
   return c.entries.back().windows;
 }
 
+namespace {
+
+// The two measured directions either side of `direction` and the fraction
+// of the way from the first to the second.
+struct Bracket {
+  std::size_t k0, k1;
+  double f;
+};
+
+Bracket bracket(std::size_t n, Vec2 direction) {
+  double a = std::atan2(direction.y, direction.x) / kDeg / kPocketWindowAngleStepDeg;
+  if (a < 0.0) a += static_cast<double>(n);
+  const auto k0 = static_cast<std::size_t>(std::floor(a)) % n;
+  return {k0, (k0 + 1) % n, a - std::floor(a)};
+}
+
+}  // namespace
+
 double pocket_window_half_width(const PocketWindows& windows, std::size_t pocket, Vec2 direction) {
   if (pocket >= windows.pockets.size()) return 0.0;
   const PocketWindow& w = windows.pockets[pocket];
-  const std::size_t n = w.low.size();
   const auto half = [&](std::size_t k) { return std::max(0.0, 0.5 * (w.high[k] - w.low[k])); };  // 0: closed
-  double a = std::atan2(direction.y, direction.x) / kDeg / kPocketWindowAngleStepDeg;
-  if (a < 0.0) a += static_cast<double>(n);
-  const double f = a - std::floor(a);
-  const auto k0 = static_cast<std::size_t>(std::floor(a)) % n, k1 = (k0 + 1) % n;
-  return (1.0 - f) * half(k0) + f * half(k1);
+  const Bracket b = bracket(w.low.size(), direction);
+  return (1.0 - b.f) * half(b.k0) + b.f * half(b.k1);
+}
+
+double pocket_window_centre(const PocketWindows& windows, std::size_t pocket, Vec2 direction) {
+  if (pocket >= windows.pockets.size()) return 0.0;
+  const PocketWindow& w = windows.pockets[pocket];
+  const Bracket b = bracket(w.low.size(), direction);
+  const bool open0 = w.low[b.k0] <= w.high[b.k0], open1 = w.low[b.k1] <= w.high[b.k1];
+  const double c0 = 0.5 * (w.low[b.k0] + w.high[b.k0]), c1 = 0.5 * (w.low[b.k1] + w.high[b.k1]);
+  if (open0 && open1) return (1.0 - b.f) * c0 + b.f * c1;
+  if (open0) return c0;
+  if (open1) return c1;
+  return 0.0;
 }
 
 }  // namespace cueball

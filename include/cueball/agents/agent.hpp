@@ -267,7 +267,8 @@ inline constexpr double kGhostBallSpeed = 1.5;
 inline constexpr double kGhostBallInHandBack = 0.3;
 
 /// A ghost-ball pot: the cue ball aimed at the ghost ball G = O - 2R u of
-/// `target` for `pocket` (u from the ball O to the pocket's centre P; D. G.
+/// `target` for `pocket` (u from the ball O to the point P it is sent to,
+/// GhostBallAim; D. G.
 /// Alciatore, "The Illustrated Principles of Pool and Billiards", 2004).
 struct GhostBallShot {
   int target = -1;
@@ -281,14 +282,16 @@ struct GhostBallShot {
 /// then the pockets' order; the first of equal scores): pockets whose cut is
 /// at most kMaxCutDeg, whose straight paths C -> G and O -> P are clear of
 /// every other ball's centre by two radii, and whose cue clears at one of
-/// lowest_clear_elevation_deg()'s elevations, ranked by score. None when no
-/// pocket qualifies or the cue ball is not on the table.
+/// lowest_clear_elevation_deg()'s elevations, ranked by score, sent at the
+/// pocket's centre (GhostBallAim::pocket_centre, the textbook rule). None
+/// when no pocket qualifies or the cue ball is not on the table.
 std::optional<GhostBallShot> ghost_ball_shot(const Scenario& table, int cue_ball, const std::vector<int>& targets,
                                              double speed = kGhostBallSpeed);
 
-/// The same pots, the largest aim tolerance first (ghost_ball_pots()'s
-/// order: the pocket's window counted), the first whose cue clears: the
-/// likeliest ghost-ball pot, which the safety search's screen reads.
+/// The pots sent to the middle of the pockets' windows
+/// (GhostBallAim::window_middle), the largest aim tolerance first
+/// (ghost_ball_pots()'s order), the first whose cue clears: the likeliest
+/// ghost-ball pot, which the safety search's screen reads.
 std::optional<GhostBallShot> likeliest_ghost_ball_shot(const Scenario& table, int cue_ball,
                                                        const std::vector<int>& targets,
                                                        double speed = kGhostBallSpeed);

@@ -7,11 +7,15 @@
 //
 // Geometry (D. G. Alciatore, "The Illustrated Principles of Pool and
 // Billiards", 2004, the ghost ball): the cue ball C aimed at the ghost ball
-// G = O - 2R u of a ball O for a pocket P (u the unit vector from O to P's
-// centre) sends O along u. The chance: an aim error d(theta) of the cue
+// G = O - 2R u of a ball O sends O along u, the unit vector from O to the
+// point P it is sent to. P is the pocket's centre moved sideways onto the
+// middle of the lines that drop a ball coming from O's direction (the
+// pocket's window, pocket_windows.hpp): head on into a corner that is the
+// centre; 20 deg off the corner's axis, 35 mm to its side, where a ball sent
+// at the centre barely drops. The chance: an aim error d(theta) of the cue
 // ball's line moves its contact |CG| d(theta) sideways, which turns the
 // object ball by |CG| d(theta) / (2R cos(cut)), and that must stay within
-// w / |OP| of the centre of the lines that drop it, where w is half the
+// w / |OP| of the middle of the lines that drop it, where w is half the
 // width of the pocket's window for the direction O comes from, measured on
 // the engine for this table (pocket_windows.hpp: up to 35 mm head on into a
 // 9-ft table's corner, none into a side pocket from beyond about 65 deg):
@@ -40,6 +44,13 @@ struct GhostBallPot {
   double score = 0.0;  ///< cos(cut) / (|CG| |OP|), 1/m^2: the geometry's part of the aim tolerance
   double window = 0.0; ///< w, m: half the pocket's window for the target's direction to it (0: none)
   double aim_tolerance = 0.0;  ///< 2R w score, rad: the aim error that still pots, larger is easier
+  Vec2 pocket_aim;      ///< P, where the target is sent: the pocket's centre moved to the middle of its window
+};
+
+/// Where a ghost-ball pot sends its target.
+enum class GhostBallAim {
+  window_middle,  ///< the middle of the pocket's window for the target's direction (the default)
+  pocket_centre,  ///< the pocket's centre, the textbook rule (the ghost-ball agent's, the benchmarks' baseline)
 };
 
 /// Every clear ghost-ball pot of `targets` from the cue ball where it lies:
@@ -49,8 +60,12 @@ struct GhostBallPot {
 /// pockets'). A pocket whose window is closed to the target's direction is
 /// listed with an aim tolerance of 0. Empty when the cue ball is not on the
 /// table. The cue's clearance is not checked. The pocket windows are
-/// measured on the table's first use (pocket_windows()).
-std::vector<GhostBallPot> ghost_ball_pots(const Scenario& table, int cue_ball, const std::vector<int>& targets);
+/// measured on the table's first use (pocket_windows()). `aim` chooses the
+/// point P the target is sent to (see above); with pocket_centre the window
+/// is still the one for the direction to the centre, though a ball sent
+/// there may pass outside it (20 deg off a corner's axis it barely drops).
+std::vector<GhostBallPot> ghost_ball_pots(const Scenario& table, int cue_ball, const std::vector<int>& targets,
+                                          GhostBallAim aim = GhostBallAim::window_middle);
 
 /// The chance of a ghost-ball pot of this aim tolerance (rad,
 /// GhostBallPot::aim_tolerance) under Gaussian aim noise of `aim_sigma`

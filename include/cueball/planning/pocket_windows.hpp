@@ -67,4 +67,12 @@ std::shared_ptr<const PocketWindows> pocket_windows(const Scenario& table);
 /// 0 where both are closed, or for a pocket the table does not have.
 double pocket_window_half_width(const PocketWindows& windows, std::size_t pocket, Vec2 direction);
 
+/// The offset (m, to the left of the travel) from the pocket's centre of
+/// the line through the middle of `pocket`'s window for a ball travelling in
+/// direction `direction`: linear in the angle between the two nearest
+/// measured directions where both are open, the open one's where one is
+/// closed; 0 where both are closed, or for a pocket the table does not have.
+/// A ball sent on this line has the most room for error either side.
+double pocket_window_centre(const PocketWindows& windows, std::size_t pocket, Vec2 direction);
+
 }  // namespace cueball

@@ -2,8 +2,9 @@
 // is where a rolling ball stops dropping (checked by rolls of its own); the
 // windows of a mirror-symmetric table mirror each other; a side pocket is
 // widest head on and closes along its rail, a corner is widest on its axis;
-// the half-width between measured directions is interpolated (a closed
-// window counting 0, so that it does not jump at a measured direction); the windows
+// the half-width and the middle between measured directions are
+// interpolated (a closed window's half-width counting 0, so that it does not
+// jump at a measured direction; its middle not counting); the windows
 // are cached per table and settings, and a snooker table's differ; and the
 // ghost-ball chance by the windows predicts the planner's measured success
 // better than one fixed tolerance for every pocket (ghost_ball.hpp).

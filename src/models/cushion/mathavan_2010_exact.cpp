@@ -108,15 +108,18 @@ Vec2 unit(Vec2 v) { return v / length(v); }
 // contact's slip rate.
 constexpr int kOnsetSamples = 96;
 
-// The angles of the scan below and their unit vectors, computed once (the
-// same values as evaluating cos and sin at each angle in every scan).
+// The angles of the scan below and their unit vectors (cosines and sines
+// apart, so that the scan's samples are worked out two at a time), computed
+// once (the same values as evaluating cos and sin at each angle in every scan).
 struct OnsetSamples {
   std::array<double, kOnsetSamples + 1> phi;
-  std::array<Vec2, kOnsetSamples + 1> u;
+  std::array<double, kOnsetSamples + 1> cos_phi;
+  std::array<double, kOnsetSamples + 1> sin_phi;
   OnsetSamples() {
-    for (int i = 0; i <= kOnsetSamples; ++i) {
-      phi[static_cast<std::size_t>(i)] = -kPi + 2.0 * kPi * i / kOnsetSamples;
-      u[static_cast<std::size_t>(i)] = {std::cos(phi[static_cast<std::size_t>(i)]), std::sin(phi[static_cast<std::size_t>(i)])};
+    for (std::size_t i = 0; i <= kOnsetSamples; ++i) {
+      phi[i] = -kPi + 2.0 * kPi * static_cast<int>(i) / kOnsetSamples;
+      cos_phi[i] = std::cos(phi[i]);
+      sin_phi[i] = std::sin(phi[i]);
     }
   }
 };
@@ -205,10 +208,7 @@ bool slip_onset_direction(RateFor rate_for, Vec2& direction) {
     const Vec2 u{std::cos(phi), std::sin(phi)};
     return cross(u, rate_for(u));
   };
-  auto g_sample = [&](int i) {
-    const Vec2 u = samples.u[static_cast<std::size_t>(i)];
-    return cross(u, rate_for(u));
-  };
+
   OnsetChoice choice;
   choice.direction = direction;
   // Exact axis directions first: symmetric (head-on) impacts slip exactly along them.
@@ -218,16 +218,17 @@ bool slip_onset_direction(RateFor rate_for, Vec2& direction) {
       choice.consider(u, g(phi - 1e-7) >= 0.0 && g(phi + 1e-7) <= 0.0, dot(u, rate_for(u)));
     }
   }
+  std::array<double, kSamples + 1> g_at;  // g at each sample
+  for (std::size_t i = 0; i <= kSamples; ++i) {
+    const Vec2 u{samples.cos_phi[i], samples.sin_phi[i]};
+    g_at[i] = cross(u, rate_for(u));
+  }
   std::array<OnsetBracket, kSamples> brackets;
   std::size_t count = 0;
-  double phi0 = samples.phi[0];
-  double g0 = g_sample(0);
-  for (int i = 1; i <= kSamples; ++i) {
-    const double phi1 = samples.phi[static_cast<std::size_t>(i)];
-    const double g1 = g_sample(i);
-    if ((g0 > 0.0 && g1 < 0.0) || (g0 < 0.0 && g1 > 0.0)) brackets[count++] = {phi0, phi1, g0, g1};
-    phi0 = phi1;
-    g0 = g1;
+  for (std::size_t i = 1; i <= kSamples; ++i) {
+    const double g0 = g_at[i - 1];
+    const double g1 = g_at[i];
+    if ((g0 > 0.0 && g1 < 0.0) || (g0 < 0.0 && g1 > 0.0)) brackets[count++] = {samples.phi[i - 1], samples.phi[i], g0, g1};
   }
   // + to -: the angle flows towards the root (attracting).
   for (bool attracting : {true, false}) {
@@ -504,7 +505,11 @@ inline Vec2 turn_small(Vec2 u, double a) {
 
 // Slip rate of one contact slipping in direction u while the other contact is
 // in mode `other` (slipping in direction w, or sticking).
-Vec2 slip_rate_when_slipping(const Coefficients& k, bool at_cushion, Vec2 u, ContactMode other, Vec2 w) {
+// Inlined where it is called (a slaved direction's Newton iterations call it
+// some eight times with the same contact and mode, which the branches below
+// then fold away).
+[[gnu::always_inline]] inline Vec2 slip_rate_when_slipping(const Coefficients& k, bool at_cushion, Vec2 u,
+                                                          ContactMode other, Vec2 w) {
   return at_cushion ? cushion_slip_rate(k, friction_for(k, kSlip, u, other, w))
                     : bed_slip_rate(k, friction_for(k, other, w, kSlip, u));
 }

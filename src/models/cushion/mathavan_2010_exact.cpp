@@ -108,15 +108,18 @@ Vec2 unit(Vec2 v) { return v / length(v); }
 // contact's slip rate.
 constexpr int kOnsetSamples = 96;
 
-// The angles of the scan below and their unit vectors, computed once (the
-// same values as evaluating cos and sin at each angle in every scan).
+// The angles of the scan below and their unit vectors (cosines and sines
+// apart, so that the scan's samples are worked out two at a time), computed
+// once (the same values as evaluating cos and sin at each angle in every scan).
 struct OnsetSamples {
   std::array<double, kOnsetSamples + 1> phi;
-  std::array<Vec2, kOnsetSamples + 1> u;
+  std::array<double, kOnsetSamples + 1> cos_phi;
+  std::array<double, kOnsetSamples + 1> sin_phi;
   OnsetSamples() {
-    for (int i = 0; i <= kOnsetSamples; ++i) {
-      phi[static_cast<std::size_t>(i)] = -kPi + 2.0 * kPi * i / kOnsetSamples;
-      u[static_cast<std::size_t>(i)] = {std::cos(phi[static_cast<std::size_t>(i)]), std::sin(phi[static_cast<std::size_t>(i)])};
+    for (std::size_t i = 0; i <= kOnsetSamples; ++i) {
+      phi[i] = -kPi + 2.0 * kPi * static_cast<int>(i) / kOnsetSamples;
+      cos_phi[i] = std::cos(phi[i]);
+      sin_phi[i] = std::sin(phi[i]);
     }
   }
 };
@@ -125,6 +128,78 @@ const OnsetSamples& onset_samples() {
   return samples;
 }
 
+// A sign change of g(phi) = cross(u, r(u)) between two neighbouring angles
+// of the scan: a ray lies between them (no initialisers: the scan's array
+// of them is filled only as far as it finds any).
+struct OnsetBracket {
+  double lo;
+  double hi;
+  double g_lo;
+  double g_hi;
+};
+
+// The ray in a bracket, to 1e-15 rad: the Illinois variant of regula falsi
+// (superlinear, and both ends of the bracket close), 6-10 evaluations of g
+// where bisection took 46. Directions within 1e-14 of an axis are put on it.
+template <class G>
+Vec2 onset_ray(G g, OnsetBracket b) {
+  double lo = b.lo;
+  double hi = b.hi;
+  double g_lo = b.g_lo;
+  double g_hi = b.g_hi;
+  int side = 0;
+  for (int it = 0; it < 60 && hi - lo > 1e-15; ++it) {
+    double mid = (lo * g_hi - hi * g_lo) / (g_hi - g_lo);
+    if (!(mid > lo && mid < hi)) mid = 0.5 * (lo + hi);
+    const double g_mid = g(mid);
+    if (g_mid == 0.0) {
+      lo = mid;
+      hi = mid;
+    } else if ((g_mid > 0.0) == (g_lo > 0.0)) {
+      lo = mid;
+      g_lo = g_mid;
+      if (side == -1) g_hi *= 0.5;
+      side = -1;
+    } else {
+      hi = mid;
+      g_hi = g_mid;
+      if (side == 1) g_lo *= 0.5;
+      side = 1;
+    }
+  }
+  const double phi = 0.5 * (lo + hi);
+  Vec2 u{std::cos(phi), std::sin(phi)};
+  if (std::abs(u.x) < 1e-14) u = {0.0, u.y > 0.0 ? 1.0 : -1.0};
+  if (std::abs(u.y) < 1e-14) u = {u.x > 0.0 ? 1.0 : -1.0, 0.0};
+  return u;
+}
+
+// The choice among the rays: an attracting one (a slip direction near it
+// turns towards it) over any repelling one, then the fastest growth (the
+// first of equals, in the order offered); only a growing ray counts.
+struct OnsetChoice {
+  bool found = false;
+  bool attracting = false;
+  double growth = 0.0;
+  Vec2 direction;
+
+  void consider(Vec2 u, bool ray_attracts, double ray_growth) {
+    if (!(ray_growth > 0.0)) return;
+    if (found && attracting && !ray_attracts) return;
+    if (found && attracting == ray_attracts && ray_growth <= growth) return;
+    found = true;
+    attracting = ray_attracts;
+    growth = ray_growth;
+    direction = u;
+  }
+};
+
+// The scan offers the exact axis directions first, then the rays in the
+// order of their angles; the brackets of attracting rays are refined first,
+// and those of repelling rays only when no attracting ray grows: a repelling
+// ray cannot be chosen over a growing attracting one, so the choice is the
+// one the rays in scan order would give (half the refinements of a typical
+// onset, one ray of each kind).
 template <class RateFor>
 bool slip_onset_direction(RateFor rate_for, Vec2& direction) {
   constexpr int kSamples = kOnsetSamples;
@@ -133,73 +208,39 @@ bool slip_onset_direction(RateFor rate_for, Vec2& direction) {
     const Vec2 u{std::cos(phi), std::sin(phi)};
     return cross(u, rate_for(u));
   };
-  auto g_sample = [&](int i) {
-    const Vec2 u = samples.u[static_cast<std::size_t>(i)];
-    return cross(u, rate_for(u));
-  };
-  bool found = false;
-  bool found_attracting = false;
-  double best_growth = 0.0;
-  auto consider = [&](Vec2 u, bool attracting) {
-    const double growth = dot(u, rate_for(u));
-    if (!(growth > 0.0)) return;
-    if (found && found_attracting && !attracting) return;
-    if (found && found_attracting == attracting && growth <= best_growth) return;
-    found = true;
-    found_attracting = attracting;
-    best_growth = growth;
-    direction = u;
-  };
+
+  OnsetChoice choice;
+  choice.direction = direction;
   // Exact axis directions first: symmetric (head-on) impacts slip exactly along them.
   for (const Vec2 u : {Vec2{0.0, 1.0}, Vec2{0.0, -1.0}, Vec2{1.0, 0.0}, Vec2{-1.0, 0.0}}) {
     if (cross(u, rate_for(u)) == 0.0) {
       const double phi = std::atan2(u.y, u.x);
-      consider(u, g(phi - 1e-7) >= 0.0 && g(phi + 1e-7) <= 0.0);
+      choice.consider(u, g(phi - 1e-7) >= 0.0 && g(phi + 1e-7) <= 0.0, dot(u, rate_for(u)));
     }
   }
-  double phi0 = samples.phi[0];
-  double g0 = g_sample(0);
-  for (int i = 1; i <= kSamples; ++i) {
-    const double phi1 = samples.phi[static_cast<std::size_t>(i)];
-    const double g1 = g_sample(i);
-    if ((g0 > 0.0 && g1 < 0.0) || (g0 < 0.0 && g1 > 0.0)) {
-      // The root between the two samples, to 1e-15 rad: the Illinois
-      // variant of regula falsi (superlinear, and both ends of the bracket
-      // close), 6-10 evaluations of g where bisection took 46.
-      double lo = phi0;
-      double hi = phi1;
-      double g_lo = g0;
-      double g_hi = g1;
-      int side = 0;
-      for (int it = 0; it < 60 && hi - lo > 1e-15; ++it) {
-        double mid = (lo * g_hi - hi * g_lo) / (g_hi - g_lo);
-        if (!(mid > lo && mid < hi)) mid = 0.5 * (lo + hi);
-        const double g_mid = g(mid);
-        if (g_mid == 0.0) {
-          lo = mid;
-          hi = mid;
-        } else if ((g_mid > 0.0) == (g_lo > 0.0)) {
-          lo = mid;
-          g_lo = g_mid;
-          if (side == -1) g_hi *= 0.5;
-          side = -1;
-        } else {
-          hi = mid;
-          g_hi = g_mid;
-          if (side == 1) g_lo *= 0.5;
-          side = 1;
-        }
-      }
-      const double phi = 0.5 * (lo + hi);
-      Vec2 u{std::cos(phi), std::sin(phi)};
-      if (std::abs(u.x) < 1e-14) u = {0.0, u.y > 0.0 ? 1.0 : -1.0};
-      if (std::abs(u.y) < 1e-14) u = {u.x > 0.0 ? 1.0 : -1.0, 0.0};
-      consider(u, g0 > 0.0);  // + to -: the angle flows towards the root
-    }
-    phi0 = phi1;
-    g0 = g1;
+  std::array<double, kSamples + 1> g_at;  // g at each sample
+  for (std::size_t i = 0; i <= kSamples; ++i) {
+    const Vec2 u{samples.cos_phi[i], samples.sin_phi[i]};
+    g_at[i] = cross(u, rate_for(u));
   }
-  return found;
+  std::array<OnsetBracket, kSamples> brackets;
+  std::size_t count = 0;
+  for (std::size_t i = 1; i <= kSamples; ++i) {
+    const double g0 = g_at[i - 1];
+    const double g1 = g_at[i];
+    if ((g0 > 0.0 && g1 < 0.0) || (g0 < 0.0 && g1 > 0.0)) brackets[count++] = {samples.phi[i - 1], samples.phi[i], g0, g1};
+  }
+  // + to -: the angle flows towards the root (attracting).
+  for (bool attracting : {true, false}) {
+    if (!attracting && choice.found && choice.attracting) break;
+    for (std::size_t b = 0; b < count; ++b) {
+      if ((brackets[b].g_lo > 0.0) != attracting) continue;
+      const Vec2 u = onset_ray(g, brackets[b]);
+      choice.consider(u, attracting, dot(u, rate_for(u)));
+    }
+  }
+  if (choice.found) direction = choice.direction;
+  return choice.found;
 }
 
 // The bed slipping while the cushion slips along w: the bed's friction is
@@ -464,7 +505,11 @@ inline Vec2 turn_small(Vec2 u, double a) {
 
 // Slip rate of one contact slipping in direction u while the other contact is
 // in mode `other` (slipping in direction w, or sticking).
-Vec2 slip_rate_when_slipping(const Coefficients& k, bool at_cushion, Vec2 u, ContactMode other, Vec2 w) {
+// Inlined where it is called (a slaved direction's Newton iterations call it
+// some eight times with the same contact and mode, which the branches below
+// then fold away).
+[[gnu::always_inline]] inline Vec2 slip_rate_when_slipping(const Coefficients& k, bool at_cushion, Vec2 u,
+                                                          ContactMode other, Vec2 w) {
   return at_cushion ? cushion_slip_rate(k, friction_for(k, kSlip, u, other, w))
                     : bed_slip_rate(k, friction_for(k, other, w, kSlip, u));
 }

@@ -160,7 +160,7 @@ TEST(GhostBallPots, EveryPotMeetsTheDefinitionBestFirstAndEveryPocketLeftOutFail
         Vec2 P = centre;
         for (int pass = 0; pass < 2; ++pass) {
           const Vec2 d = (P - O) / norm(P - O);
-          P = centre + pocket_window_centre(*pocket_windows(s), k, d) * Vec2{-d.y, d.x};
+          P = centre + pocket_window_middle(*pocket_windows(s), k, d) * Vec2{-d.y, d.x};
         }
         const Vec2 u = (P - O) / norm(P - O);
         const Vec2 G = O - 2.0 * R * u;

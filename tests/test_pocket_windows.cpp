@@ -155,7 +155,7 @@ TEST(PocketWindows, TheMiddleIsInterpolatedWhereBothAreOpenAndTheOpenOnesWhereOn
   int both = 0, one = 0, none = 0;
   for (std::size_t k = 0; k < n; ++k) {
     const std::size_t k1 = (k + 1) % n;
-    const double got = pocket_window_centre(*w, 0, direction((static_cast<double>(k) + 0.25) * kPocketWindowAngleStepDeg));
+    const double got = pocket_window_middle(*w, 0, direction((static_cast<double>(k) + 0.25) * kPocketWindowAngleStepDeg));
     if (open(k) && open(k1)) {
       EXPECT_NEAR(got, 0.75 * middle(k) + 0.25 * middle(k1), 1e-12);
       ++both;
@@ -172,9 +172,9 @@ TEST(PocketWindows, TheMiddleIsInterpolatedWhereBothAreOpenAndTheOpenOnesWhereOn
   EXPECT_GT(none, 20);
   // Head on the corner's window is centred on the pocket; 20 deg off its
   // axis its middle is well to one side of the centre.
-  EXPECT_LT(std::abs(pocket_window_centre(*w, 0, direction(-135.0))), 1e-3);
-  EXPECT_GT(std::abs(pocket_window_centre(*w, 0, direction(-135.0 + 20.0))), 0.015);
-  EXPECT_EQ(pocket_window_centre(*w, w->pockets.size(), direction(0.0)), 0.0);  // no such pocket
+  EXPECT_LT(std::abs(pocket_window_middle(*w, 0, direction(-135.0))), 1e-3);
+  EXPECT_GT(std::abs(pocket_window_middle(*w, 0, direction(-135.0 + 20.0))), 0.015);
+  EXPECT_EQ(pocket_window_middle(*w, w->pockets.size(), direction(0.0)), 0.0);  // no such pocket
 }
 
 TEST(PocketWindows, AreCachedPerTableAndSettings) {

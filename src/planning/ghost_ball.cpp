@@ -27,7 +27,7 @@ Vec2 window_middle(const PocketWindows& windows, std::size_t pocket, Vec2 O, Vec
     const double d = norm(P - O);
     if (d <= 0.0) break;
     const Vec2 u = (P - O) / d;
-    P = centre + pocket_window_centre(windows, pocket, u) * Vec2{-u.y, u.x};
+    P = centre + pocket_window_middle(windows, pocket, u) * Vec2{-u.y, u.x};
   }
   return P;
 }

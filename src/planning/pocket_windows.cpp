@@ -154,7 +154,7 @@ double pocket_window_half_width(const PocketWindows& windows, std::size_t pocket
   return (1.0 - b.f) * half(b.k0) + b.f * half(b.k1);
 }
 
-double pocket_window_centre(const PocketWindows& windows, std::size_t pocket, Vec2 direction) {
+double pocket_window_middle(const PocketWindows& windows, std::size_t pocket, Vec2 direction) {
   if (pocket >= windows.pockets.size()) return 0.0;
   const PocketWindow& w = windows.pockets[pocket];
   const Bracket b = bracket(w.low.size(), direction);

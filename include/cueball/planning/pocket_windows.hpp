@@ -73,6 +73,6 @@ double pocket_window_half_width(const PocketWindows& windows, std::size_t pocket
 /// measured directions where both are open, the open one's where one is
 /// closed; 0 where both are closed, or for a pocket the table does not have.
 /// A ball sent on this line has the most room for error either side.
-double pocket_window_centre(const PocketWindows& windows, std::size_t pocket, Vec2 direction);
+double pocket_window_middle(const PocketWindows& windows, std::size_t pocket, Vec2 direction);
 
 }  // namespace cueball

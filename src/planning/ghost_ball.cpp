@@ -27,7 +27,7 @@ Vec2 window_middle(const PocketWindows& windows, std::size_t pocket, Vec2 O, Vec
     const double d = norm(P - O);
     if (d <= 0.0) break;
     const Vec2 u = (P - O) / d;
-    P = centre + pocket_window_middle(windows, pocket, u) * Vec2{-u.y, u.x};
+    P = centre + pocket_window_middle(windows, pocket, u) * perp(u);
   }
   return P;
 }
@@ -49,7 +49,6 @@ std::vector<GhostBallPot> ghost_ball_pots(const Scenario& table, int cue_ball, c
     const Vec2 O = object->state.position;
     for (std::size_t p = 0; p < table.table.pockets.size(); ++p) {
       const Vec2 centre = table.table.pockets[p].centre;
-      if (norm(centre - O) <= 0.0) continue;
       const Vec2 P = aim == GhostBallAim::window_middle ? window_middle(*windows, p, O, centre) : centre;
       const double op = norm(P - O);
       if (op <= 0.0) continue;

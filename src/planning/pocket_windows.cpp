@@ -34,7 +34,7 @@ struct Roll {
 // left of the pocket's centre drops into the pocket; nullopt when the
 // line's start is not on the table.
 std::optional<bool> pots(const Roll& r, Vec2 d, double offset) {
-  const Vec2 left{-d.y, d.x};
+  const Vec2 left = perp(d);
   const Vec2 start = r.centre - kPocketWindowDistance * d + offset * left;
   if (!ball_on_table(r.s.table, start, r.R + kStartClearance)) return std::nullopt;
   SimulationBall ball;

@@ -675,6 +675,7 @@ struct Options {
   std::optional<int> agent_simulations;     // --planner-simulations
   std::optional<int> position_simulations;  // --position
   std::optional<int> noisy_leaves;          // --noisy-leaves
+  std::optional<int> candidate_noisy_leaves;  // --candidate-noisy-leaves
   std::optional<int> depth;                 // --depth
   std::optional<LeaveValuation> valuation;  // --valuation
   std::optional<int> finalists;             // --finalists
@@ -690,6 +691,7 @@ struct Options {
     if (agent_simulations) a.simulations = *agent_simulations;
     if (position_simulations) a.position_simulations = *position_simulations;
     if (noisy_leaves) a.position_noisy_leaves = *noisy_leaves;
+    if (candidate_noisy_leaves) a.position_candidate_noisy_leaves = *candidate_noisy_leaves;
     if (depth) a.position_depth = *depth;
     if (valuation) a.position_valuation = *valuation;
     if (finalists) a.position_finalists = *finalists;
@@ -709,7 +711,7 @@ void usage() {
       "                                 [--seed S] [--planner-simulations N] [--position N] [--threads T]\n"
       "                                 [--in-hand rule|planner] [--break rule|recommended] [--kinds LIST]\n"
       "                                 [--fallback-kinds LIST] [--agent NAME] [--noisy-leaves N]\n"
-      "                                 [--depth D] [--valuation V] [--finalists F]\n"
+      "                                 [--candidate-noisy-leaves N] [--depth D] [--valuation V] [--finalists F]\n"
       "                                 [--seconds S]\n"
       "                                 [--json FILE] [--layouts-out DIR]\n"
       "The shot planner against a ghost-ball baseline and an exhaustive grid search (docs/planner-benchmark.md).\n"
@@ -726,6 +728,9 @@ void usage() {
       "                           next-shot plan, [%d, %d] (default: the agent's; strongest 1000)\n"
       "  --noisy-leaves N         position play: noisy outcomes of each finalist whose leaves are scored,\n"
       "                           [0, %d] (default: the agent's, %d; strongest %d; 0: the noise-free leave alone)\n"
+      "  --candidate-noisy-leaves N  position play: noisy outcomes of every candidate whose leaves are valued\n"
+      "                           before the finalists are chosen, [0, %d] (default: the agent's; strongest %d,\n"
+      "                           the others 0: the noise-free leave alone)\n"
       "  --depth D                position play: shots looked ahead, [1, %d] (default: the agent's; strongest 2, the others 1)\n"
       "  --valuation V            position play and ball in hand: how a leave is valued, windows (the planner's\n"
       "                           window search) or ghost_ball (no engine run at depth 1) (default: the agent's;\n"
@@ -752,7 +757,8 @@ void usage() {
       "                           cue: the balls at rest, tournament noise), for cueball plan-shot --ball 1\n"
       "Exit status: 0 done, 1 an engine error, 2 bad flags.\n",
       kMinPlanSimulations, kMaxPlanSimulations, kMinPlanSimulations, kMaxPlanSimulations, kMaxPositionNoisyLeaves,
-      kPositionNoisyLeaves, kStrongestNoisyLeaves, kMaxPositionDepth, kMaxPositionFinalists);
+      kPositionNoisyLeaves, kStrongestNoisyLeaves, kMaxPositionNoisyLeaves, kStrongestCandidateNoisyLeaves,
+      kMaxPositionDepth, kMaxPositionFinalists);
 }
 
 std::vector<ShotKind> kinds_flag(const std::string& flag, const std::string& value) {
@@ -778,12 +784,12 @@ Options parse(int argc, char** argv) {
     }
     static const char* const known[] = {"--suite",  "--layouts", "--racks", "--repeats", "--seed", "--planner-simulations",
                                         "--position", "--kinds", "--fallback-kinds", "--threads", "--json", "--layouts-out",
-                                        "--in-hand", "--break", "--agent", "--noisy-leaves", "--depth", "--valuation", "--finalists", "--seconds"};
+                                        "--in-hand", "--break", "--agent", "--noisy-leaves", "--candidate-noisy-leaves", "--depth", "--valuation", "--finalists", "--seconds"};
     if (std::find_if(std::begin(known), std::end(known), [&](const char* k) { return flag == k; }) == std::end(known))
       kFlags.bad("flag", flag,
                "--suite, --layouts, --racks, --repeats, --seed, --planner-simulations, --position, --kinds, "
                "--fallback-kinds, --threads, "
-               "--json, --layouts-out, --in-hand, --break, --agent, --noisy-leaves, --depth, --valuation, --finalists, --seconds, --help");
+               "--json, --layouts-out, --in-hand, --break, --agent, --noisy-leaves, --candidate-noisy-leaves, --depth, --valuation, --finalists, --seconds, --help");
     if (i + 1 >= argc) kFlags.bad(flag, "", "a value after the flag");
     const std::string value = argv[++i];
     if (flag == "--suite") {
@@ -801,6 +807,8 @@ Options parse(int argc, char** argv) {
       o.seed = static_cast<std::uint64_t>(kFlags.integer(flag, value, 0, 1000000000000000000LL));
     } else if (flag == "--noisy-leaves") {
       o.noisy_leaves = static_cast<int>(kFlags.integer(flag, value, 0, kMaxPositionNoisyLeaves));
+    } else if (flag == "--candidate-noisy-leaves") {
+      o.candidate_noisy_leaves = static_cast<int>(kFlags.integer(flag, value, 0, kMaxPositionNoisyLeaves));
     } else if (flag == "--seconds") {
       o.seconds = kFlags.number(flag, value, 0.0, kMaxAgentSeconds, "[0, 3600] s a decision");
     } else if (flag == "--depth") {
@@ -880,11 +888,11 @@ int run(const Options& o) {
   std::string json = "{\n \"tool\": \"cueball-planner-benchmark\",\n";
   const AgentOptions agent = o.runout_agent();
   json += fmt(" \"options\": {\"suite\": \"%s\", \"layouts\": %d, \"racks\": %d, \"repeats\": %d, \"seed\": %llu, "
-              "\"planner_simulations\": %d, \"agent\": \"%s\", \"agent_simulations\": %d, \"position_simulations\": %d, \"noisy_leaves\": %d, \"depth\": %d, \"valuation\": \"%s\", \"finalists\": %d, \"seconds\": %g, "
+              "\"planner_simulations\": %d, \"agent\": \"%s\", \"agent_simulations\": %d, \"position_simulations\": %d, \"noisy_leaves\": %d, \"candidate_noisy_leaves\": %d, \"depth\": %d, \"valuation\": \"%s\", \"finalists\": %d, \"seconds\": %g, "
               "\"in_hand\": \"%s\", \"break\": \"%s\", \"kinds\": \"%s\", "
               "\"fallback_kinds\": \"%s\", \"threads\": %d},\n",
               o.suite.c_str(), o.layouts, o.racks, o.repeats, static_cast<unsigned long long>(o.seed), o.planner_simulations,
-              o.agent_name.c_str(), agent.simulations, agent.position_simulations, agent.position_noisy_leaves, agent.position_depth,
+              o.agent_name.c_str(), agent.simulations, agent.position_simulations, agent.position_noisy_leaves, agent.position_candidate_noisy_leaves, agent.position_depth,
               to_string(agent.position_valuation), agent.position_finalists, agent.seconds, o.in_hand_planner ? "planner" : "rule",
               o.real_break ? "recommended" : "rule", kinds_text(agent.kinds).c_str(), kinds_text(agent.fallback_kinds).c_str(),
               o.threads);

@@ -42,7 +42,8 @@ TEST(CliPlanShotPosition, JsonGivesEveryShotsLeaveAndPlaysTheBestScore) {
   const nlohmann::json& p = j["position"];
   for (const char* key :
        {"next", "cue_ball", "next_feasible", "next_success_probability", "next_kind", "next_pocket", "next_ball",
-        "screened_probability", "noisy_leaves", "noisy_next_window", "score"})
+        "screened_probability", "noisy_leaves", "noisy_next_window", "candidate_noisy_leaves",
+        "candidate_next_window", "score"})
     EXPECT_TRUE(p.contains(key)) << key;
   EXPECT_EQ(p["next"], 2);  // the lowest id left
   if (p["next_feasible"].get<bool>()) {

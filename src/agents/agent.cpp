@@ -43,6 +43,7 @@ AgentOptions strongest_agent() {
   o.position_simulations = kStrongestPositionSimulations;
   o.position_valuation = LeaveValuation::ghost_ball;
   o.position_noisy_leaves = kStrongestNoisyLeaves;
+  o.position_candidate_noisy_leaves = kStrongestCandidateNoisyLeaves;
   o.position_depth = kStrongestDepth;
   o.fallback_kinds = {ShotKind::kick};
   return o;
@@ -69,6 +70,10 @@ void validate(const AgentOptions& options) {
     throw InvalidArgument("position_noisy_leaves", std::to_string(options.position_noisy_leaves) +
                                                        " is out of range [0, " +
                                                        std::to_string(kMaxPositionNoisyLeaves) + "]");
+  if (options.position_candidate_noisy_leaves < 0 || options.position_candidate_noisy_leaves > kMaxPositionNoisyLeaves)
+    throw InvalidArgument("position_candidate_noisy_leaves", std::to_string(options.position_candidate_noisy_leaves) +
+                                                                 " is out of range [0, " +
+                                                                 std::to_string(kMaxPositionNoisyLeaves) + "]");
   if (options.position_depth < 1 || options.position_depth > kMaxPositionDepth)
     throw InvalidArgument("position_depth", std::to_string(options.position_depth) + " is out of range [1, " +
                                                 std::to_string(kMaxPositionDepth) + "]");

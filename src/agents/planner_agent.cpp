@@ -133,6 +133,7 @@ Pot plan_pot(const Turn& t, const std::vector<ShotKind>& kinds) {
       p.next_targets = next_targets_of(t.state, t.targets);
       p.next_simulations = position ? t.options.position_simulations : kInHandNextSimulations;
       p.noisy_leaves = t.options.position_noisy_leaves;
+      p.candidate_noisy_leaves = t.options.position_candidate_noisy_leaves;
       p.depth = t.options.position_depth;
       p.valuation = t.options.position_valuation;
       p.finalists = t.options.position_finalists;

@@ -26,6 +26,8 @@ Json leave_json(const Leave& l, int next) {
   j["screened_probability"] = l.screened_probability;
   j["noisy_leaves"] = l.noisy_leaves;
   j["noisy_next_window"] = l.noisy_next_window;
+  j["candidate_noisy_leaves"] = l.candidate_noisy_leaves;
+  j["candidate_next_window"] = l.candidate_next_window;
   j["score"] = l.score;
   return j;
 }

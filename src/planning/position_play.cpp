@@ -199,29 +199,54 @@ double kth_largest(std::vector<double> scores, std::size_t k) {
   return scores[k - 1];
 }
 
-// Step 2: each leave scored without a noisy shot: this shot's window
-// probability times the next shot's value on the table it leaves
-// (next_shot_value(): its best window probability, or ghost-ball chance); the
+// Step 2's value of a candidate's leave: the next shot's value on the table
+// the noise-free shot leaves (next_shot_value(): its best window
+// probability, or ghost-ball chance; 1 where it leaves no next ball),
+// averaged with its value on the tables the successes among the shot's
+// first PositionRequest::candidate_noisy_leaves noisy repeats leave (the
+// finalists' noise stream: common draws for every candidate). Sets the
+// candidate's next_window and its leave's candidate_* fields.
+void value_candidate_leave(Lookahead& la, Candidate& c) {
+  c.leave.cue_ball = cue_ball_end(c.shot, la.cue_id);
+  c.left = table_left_by(la.s, c.shot);
+  // The next targets on the table it leaves (by default the next ball, or
+  // when the shot pots it too, the lowest ball left); none left: nothing
+  // to score.
+  c.next_ids = next_ids_on(c.left, la, {});
+  c.next_window = 1.0;
+  c.leave.candidate_next_window = 1.0;
+  if (c.next_ids.empty()) return;
+  c.next_window = next_shot_value(la, c.left, c.next_ids);
+  const int repeats = la.q.candidate_noisy_leaves;
+  if (repeats > 0) {
+    const NoisyOutcomes noisy = noisy_outcomes(la.s, la.q.shot, la.cue_id, c.shot, repeats, kScreenFirstShot, repeats);
+    la.simulations += repeats;
+    double sum = c.next_window;
+    for (const Scenario& left : noisy.leaves) {
+      const std::vector<int> ids = next_ids_on(left, la, {});
+      sum += ids.empty() ? 1.0 : next_shot_value(la, left, ids);
+    }
+    c.leave.candidate_noisy_leaves = static_cast<int>(noisy.leaves.size());
+    c.next_window = sum / static_cast<double>(1 + noisy.leaves.size());
+  }
+  c.leave.candidate_next_window = c.next_window;
+}
+
+// Step 2: each leave valued by value_candidate_leave(), scored by this
+// shot's window probability times that value; the
 // PositionRequest::finalists best kept. The candidates come best window first
-// and the next shot's window is at most 1, so a leave whose own window is
+// and a leave's value is at most 1, so a leave whose own window is
 // no more than the finalists-th score so far cannot be kept
 // (nor can any after it; an equal score keeps the earlier leave): the
 // scoring stops there, and the leaves kept are those of scoring them all.
-void score_leaves_without_noise(Lookahead& la, std::vector<Candidate>& candidates) {
+void score_candidate_leaves(Lookahead& la, std::vector<Candidate>& candidates) {
   const auto finalists = static_cast<std::size_t>(la.q.finalists);
   std::vector<double> scores;
   std::size_t scored = 0;
   for (Candidate& c : candidates) {
     if (c.shot.window_probability <= kth_largest(scores, finalists)) break;
     ++scored;
-    c.leave.cue_ball = cue_ball_end(c.shot, la.cue_id);
-    c.left = table_left_by(la.s, c.shot);
-    // The next targets on the table it leaves (by default the next ball, or
-    // when the shot pots it too, the lowest ball left); none left: nothing
-    // to score.
-    c.next_ids = next_ids_on(c.left, la, {});
-    c.next_window = 1.0;
-    if (!c.next_ids.empty()) c.next_window = next_shot_value(la, c.left, c.next_ids);
+    value_candidate_leave(la, c);
     scores.push_back(c.shot.window_probability * c.next_window);
   }
   candidates.resize(scored);
@@ -425,6 +450,9 @@ PositionPlanResult plan_shot_for_position(const Scenario& table_state, const Pos
   if (q.depth < 1 || q.depth > kMaxPositionDepth)
     throw InvalidArgument("depth", static_cast<double>(q.depth), "[1, " + std::to_string(kMaxPositionDepth) + "]",
                           "shots looked ahead");
+  if (q.candidate_noisy_leaves < 0 || q.candidate_noisy_leaves > kMaxPositionNoisyLeaves)
+    throw InvalidArgument("candidate_noisy_leaves", static_cast<double>(q.candidate_noisy_leaves),
+                          "[0, " + std::to_string(kMaxPositionNoisyLeaves) + "]", "noisy leaves valued per candidate");
   if (q.finalists < 1 || q.finalists > kMaxPositionFinalists)
     throw InvalidArgument("finalists", static_cast<double>(q.finalists),
                           "[1, " + std::to_string(kMaxPositionFinalists) + "]", "candidates screened under noise");
@@ -449,7 +477,7 @@ PositionPlanResult plan_shot_for_position(const Scenario& table_state, const Pos
   result.plan.rejected = std::move(found.plan.rejected);
   result.plan.cue_ball = la.cue_id;
   std::vector<Candidate> candidates = candidate_leaves(found.every, q.valuation);
-  score_leaves_without_noise(la, candidates);                       // 2.
+  score_candidate_leaves(la, candidates);                       // 2.
   screen_finalists(la, candidates);                              // 3.
   play_best(la, candidates, result);                             // 4.
   result.plan.simulations = la.simulations;

@@ -13,11 +13,16 @@
 //      kPositionKeepFraction of the best's are kept (valued by windows, at
 //      most kPositionLeaves; by the ghost ball, every one),
 //      best first.
-//   2. Each candidate's leave is scored without a noisy shot: its window
-//      probability times the best window probability of the next target's
-//      shots on the table it leaves (the balls not pocketed, at rest where
-//      the noise-free shot leaves them; plan_shot()'s geometry, aim solve and
-//      windows, `next_simulations` runs at most). The window probability is
+//   2. Each candidate's leave is scored: its window probability times the
+//      best window probability of the next target's shots on the table it
+//      leaves (the balls not pocketed, at rest where the noise-free shot
+//      leaves them; plan_shot()'s geometry, aim solve and windows,
+//      `next_simulations` runs at most). With
+//      PositionRequest::candidate_noisy_leaves, that next value is averaged
+//      with the same on the tables left by the successes among that many
+//      noisy repeats of the candidate (the finalists' draws, common to every
+//      candidate), so that a leave good only where the noise-free shot stops
+//      does not crowd a robust one out of the finalists. The window probability is
 //      the planner's prediction of a shot's success (0.98 correlated with
 //      measured success on the planner benchmark). The next target is the
 //      request's (PositionRequest::next_targets, as a rule gives them), by
@@ -176,6 +181,12 @@ struct PositionRequest {
   int depth = 1;
   /// How a leave's next shot is valued in steps 2 and 3 (LeaveValuation).
   LeaveValuation valuation = LeaveValuation::windows;
+  /// Noisy repeats of every candidate whose successes' leaves are valued in
+  /// step 2 beside the noise-free leave, [0, kMaxPositionNoisyLeaves]; 0
+  /// (the default): the noise-free leave alone, the lookahead before
+  /// 5 December 2026. As many engine runs more a candidate (and next-shot
+  /// valuations: free by the ghost ball, a window search each by windows).
+  int candidate_noisy_leaves = 0;
   /// The finalists of step 3, [1, kMaxPositionFinalists]: each screened
   /// under the noise (a kPositionScreenFraction-th of the budget more
   /// engine runs each) and its noisy leaves valued.
@@ -203,6 +214,12 @@ struct Leave {
   /// probability (at depth 2: of the next two shots' best product, above).
   int noisy_leaves = 0;
   double noisy_next_window = 0.0;
+  /// Step 2's value of the leave: the next shot's value on the noise-free
+  /// leave averaged with it on the leaves of the successes among the
+  /// candidate's PositionRequest::candidate_noisy_leaves noisy repeats
+  /// (candidate_noisy_leaves of them; 0: the noise-free leave alone).
+  int candidate_noisy_leaves = 0;
+  double candidate_next_window = 0.0;
 };
 
 struct PositionPlanResult {

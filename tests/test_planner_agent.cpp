@@ -249,6 +249,33 @@ TEST(PlannerAgent, RefusesBadOptions) {
   test::expect_invalid("position_candidate_noisy_leaves", [&] { (void)choose_action(o, s, 1); });
 }
 
+// An 8-ball table from a match (seed 5004, shot 13) where the aim solver,
+// stepping off the pocket's centre from a local slope near zero, returned
+// a potting aim of 1697 degrees: a candidate the strongest agent's noisy
+// leaves then played through the checked batch, which refused it, and the
+// match stopped. The offsets are now bounded and every solved aim brought
+// into (-180, 180]: the decision is made, and its strike is a legal one.
+TEST(PlannerAgent, TheStrongestAgentPlansATableWhoseOffCentreAimOnceRanAway) {
+  GameState s = new_game(default_config(GameKind::eight_ball));
+  s.config.noise = tournament_noise();
+  s.phase = GamePhase::play;
+  s.ball_in_hand.reset();
+  test::place_balls(s, {{0, {0.4296581800481384, 0.8689354928788358}},
+                        {9, {0.03683094355886656, 0.377518540551229}},
+                        {10, {0.4382181712150013, 1.138468979017901}},
+                        {8, {1.1565799950432396, 1.2232848685245286}},
+                        {15, {0.0054362046879856945, 1.2565178664920877}},
+                        {6, {0.07317805103808972, 0.3306374989400485}}});
+  s.groups = {Group::stripes, Group::solids};
+  s.to_shoot = 0;
+  s.on = {9, 10, 15};
+  AgentChoice c;
+  ASSERT_NO_THROW(c = choose(strongest_agent(), s, 16749438538978399966ULL));
+  EXPECT_GE(c.action.strike.aim_deg, -360.0);
+  EXPECT_LE(c.action.strike.aim_deg, 360.0);
+  EXPECT_NO_THROW((void)play(s, c.action, 1));
+}
+
 TEST(PlannerAgent, PlaysANineBallGameAgainstTheGhostBallToTheEnd) {
   AgentOptions planner = cheap();
   AgentOptions ghost;

@@ -135,12 +135,15 @@ std::optional<double> ExactTrials::solve_aim(ShotAction a, const Candidate& c, b
   const auto off_centre = [&](double root, double slope) -> std::optional<double> {
     if (!std::isfinite(slope) || slope == 0.0) return best;
     const double step = kOffsetFraction * s_.table.pockets[c.pocket].radius;
-    for (int k = 1; k <= kOffsetSteps; ++k)
+    for (int k = 1; k <= kOffsetSteps; ++k) {
+      const double offset = k * step / std::abs(slope);
+      if (offset > kOffsetMostDeg) break;
       for (const double sign : {1.0, -1.0}) {
         double f = kNaN;
-        run(root + sign * k * step / slope, f);
+        run(root + std::copysign(offset, sign * slope), f);
         if (best) return best;
       }
+    }
     return best;
   };
   double x0 = a.aim_deg, f0 = kNaN;

@@ -47,7 +47,7 @@ bool solve_first_aim(ExactTrials& trials, ShotAction& a, const Candidate& c,
       why = "no aim pots it at this speed and spin";
       return false;
     }
-    a.aim_deg = *aim;
+    a.aim_deg = wrapped_deg(*aim);
   }
   for (int tries = 0; tries < 4 && !aim; ++tries) {
     bool short_of_pocket = false;
@@ -59,7 +59,7 @@ bool solve_first_aim(ExactTrials& trials, ShotAction& a, const Candidate& c,
     why = "no aim pots it on the exact simulation";
     return false;
   }
-  a.aim_deg = *aim;
+  a.aim_deg = wrapped_deg(*aim);
   return true;
 }
 
@@ -83,7 +83,7 @@ bool choose_speed(SearchState& st, ShotAction& a, const Candidate& c, bool fixed
     why = "no aim pots it at the chosen speed";
     return false;
   }
-  a.aim_deg = *aim;
+  a.aim_deg = wrapped_deg(*aim);
   return true;
 }
 
@@ -163,7 +163,7 @@ bool clear_the_cue(SearchState& st, ShotAction& a, const Candidate& c, PlannedSh
     why += ", and no aim pots at the elevation that clears it";
     return false;
   }
-  a.aim_deg = *aim;
+  a.aim_deg = wrapped_deg(*aim);
   find_windows(st.trials, a, c, shot);
   return !obstructed();
 }

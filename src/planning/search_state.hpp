@@ -89,8 +89,18 @@ inline constexpr double kLateralTol = 0.5e-3;
 // kOffsetSteps to either side.
 inline constexpr double kOffsetFraction = 0.3;
 inline constexpr int kOffsetSteps = 3;
+// The largest aim change such a miss is tried at, degrees (the secant's own
+// largest step): from a local slope near zero, k steps of the pocket's
+// radius would be degrees or turns away, another shot altogether (an aim of
+// 1697 degrees was once returned).
+inline constexpr double kOffsetMostDeg = 3.0;
 
 inline double angle_deg(Vec2 v) { return std::atan2(v.y, v.x) / kDegree; }
+// An aim in degrees brought into (-180, 180], the same direction.
+inline double wrapped_deg(double aim) {
+  const double w = std::remainder(aim, 360.0);
+  return w == -180.0 ? 180.0 : w;
+}
 
 // One candidate as geometry describes it.
 struct Candidate {

@@ -159,7 +159,7 @@ TimedRounds plan_in_time(const AgentOptions& options, const std::function<void(c
 /// shots deep, with the pockets' windows, it ran out 0.448 of 540 racks
 /// against 0.400 one shot deep with one tolerance for every pocket
 /// (docs/planner-benchmark.md, "The pocket's window, and two shots ahead");
-/// with the candidates' noisy leaves, 0.557 of the same racks against 0.480
+/// with the candidates' noisy leaves, 0.546 of the same racks against 0.480
 /// without (docs/planner-benchmark.md, "Every candidate's leave valued under
 /// the noise").
 /// kStrongestPositionSimulations, the runs of a next-shot plan, are spent

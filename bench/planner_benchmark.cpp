@@ -679,6 +679,7 @@ struct Options {
   std::optional<int> depth;                 // --depth
   std::optional<LeaveValuation> valuation;  // --valuation
   std::optional<int> finalists;             // --finalists
+  std::optional<int> varied_shots;          // --varied-shots
   double seconds = 0.0;                     // --seconds: AgentOptions::seconds (0: none)
   bool in_hand_planner = true;   // the run-outs' first cue ball placed by plan_ball_in_hand, not by the rule
   bool real_break = false;       // --break recommended: the game's own break, the run-out only after a made one
@@ -695,6 +696,7 @@ struct Options {
     if (depth) a.position_depth = *depth;
     if (valuation) a.position_valuation = *valuation;
     if (finalists) a.position_finalists = *finalists;
+    if (varied_shots) a.position_varied_shots = *varied_shots;
     a.seconds = seconds;
     if (kinds) a.kinds = *kinds;
     if (fallback_kinds) a.fallback_kinds = *fallback_kinds;
@@ -712,7 +714,7 @@ void usage() {
       "                                 [--in-hand rule|planner] [--break rule|recommended] [--kinds LIST]\n"
       "                                 [--fallback-kinds LIST] [--agent NAME] [--noisy-leaves N]\n"
       "                                 [--candidate-noisy-leaves N] [--depth D] [--valuation V] [--finalists F]\n"
-      "                                 [--seconds S]\n"
+      "                                 [--varied-shots N] [--seconds S]\n"
       "                                 [--json FILE] [--layouts-out DIR]\n"
       "The shot planner against a ghost-ball baseline and an exhaustive grid search (docs/planner-benchmark.md).\n"
       "  --suite S                single, runout or all (default all)\n"
@@ -735,7 +737,10 @@ void usage() {
       "  --valuation V            position play and ball in hand: how a leave is valued, windows (the planner's\n"
       "                           window search) or ghost_ball (no engine run at depth 1) (default: the agent's;\n"
       "                           strongest ghost_ball, the others windows)\n"
-      "  --finalists F            position play: the candidates screened under noise, [1, %d] (default: the agent's, 3)\n"
+      "  --finalists F            position play: the candidates screened under noise, [1, %d] (default: the agent's;\n"
+      "                           strongest %d, the others 3)\n"
+      "  --varied-shots N         position play: the feasible shots whose spin and speed variants are candidate\n"
+      "                           leaves, [1, %d] (default: the agent's; strongest %d, the others 3)\n"
       "  --seconds S              the run-outs' decisions under a wall-clock budget, [0, 3600] s\n"
       "                           (AgentOptions::seconds: rounds from 500 runs up to the agent's; default 0: none)\n"
       "  --in-hand H              the run-outs' cue ball in hand after the break: planner (plan_ball_in_hand,\n"
@@ -758,7 +763,7 @@ void usage() {
       "Exit status: 0 done, 1 an engine error, 2 bad flags.\n",
       kMinPlanSimulations, kMaxPlanSimulations, kMinPlanSimulations, kMaxPlanSimulations, kMaxPositionNoisyLeaves,
       kPositionNoisyLeaves, kStrongestNoisyLeaves, kMaxPositionNoisyLeaves, kStrongestCandidateNoisyLeaves,
-      kMaxPositionDepth, kMaxPositionFinalists);
+      kMaxPositionDepth, kMaxPositionFinalists, kStrongestFinalists, kMaxPositionVariedShots, kStrongestVariedShots);
 }
 
 std::vector<ShotKind> kinds_flag(const std::string& flag, const std::string& value) {
@@ -784,12 +789,12 @@ Options parse(int argc, char** argv) {
     }
     static const char* const known[] = {"--suite",  "--layouts", "--racks", "--repeats", "--seed", "--planner-simulations",
                                         "--position", "--kinds", "--fallback-kinds", "--threads", "--json", "--layouts-out",
-                                        "--in-hand", "--break", "--agent", "--noisy-leaves", "--candidate-noisy-leaves", "--depth", "--valuation", "--finalists", "--seconds"};
+                                        "--in-hand", "--break", "--agent", "--noisy-leaves", "--candidate-noisy-leaves", "--depth", "--valuation", "--finalists", "--varied-shots", "--seconds"};
     if (std::find_if(std::begin(known), std::end(known), [&](const char* k) { return flag == k; }) == std::end(known))
       kFlags.bad("flag", flag,
                "--suite, --layouts, --racks, --repeats, --seed, --planner-simulations, --position, --kinds, "
                "--fallback-kinds, --threads, "
-               "--json, --layouts-out, --in-hand, --break, --agent, --noisy-leaves, --candidate-noisy-leaves, --depth, --valuation, --finalists, --seconds, --help");
+               "--json, --layouts-out, --in-hand, --break, --agent, --noisy-leaves, --candidate-noisy-leaves, --depth, --valuation, --finalists, --varied-shots, --seconds, --help");
     if (i + 1 >= argc) kFlags.bad(flag, "", "a value after the flag");
     const std::string value = argv[++i];
     if (flag == "--suite") {
@@ -815,6 +820,8 @@ Options parse(int argc, char** argv) {
       o.depth = static_cast<int>(kFlags.integer(flag, value, 1, kMaxPositionDepth));
     } else if (flag == "--finalists") {
       o.finalists = static_cast<int>(kFlags.integer(flag, value, 1, kMaxPositionFinalists));
+    } else if (flag == "--varied-shots") {
+      o.varied_shots = static_cast<int>(kFlags.integer(flag, value, 1, kMaxPositionVariedShots));
     } else if (flag == "--valuation") {
       o.valuation = leave_valuation_from_string(value);
       if (!o.valuation) kFlags.bad(flag, value, leave_valuation_names());
@@ -888,12 +895,12 @@ int run(const Options& o) {
   std::string json = "{\n \"tool\": \"cueball-planner-benchmark\",\n";
   const AgentOptions agent = o.runout_agent();
   json += fmt(" \"options\": {\"suite\": \"%s\", \"layouts\": %d, \"racks\": %d, \"repeats\": %d, \"seed\": %llu, "
-              "\"planner_simulations\": %d, \"agent\": \"%s\", \"agent_simulations\": %d, \"position_simulations\": %d, \"noisy_leaves\": %d, \"candidate_noisy_leaves\": %d, \"depth\": %d, \"valuation\": \"%s\", \"finalists\": %d, \"seconds\": %g, "
+              "\"planner_simulations\": %d, \"agent\": \"%s\", \"agent_simulations\": %d, \"position_simulations\": %d, \"noisy_leaves\": %d, \"candidate_noisy_leaves\": %d, \"depth\": %d, \"valuation\": \"%s\", \"finalists\": %d, \"varied_shots\": %d, \"seconds\": %g, "
               "\"in_hand\": \"%s\", \"break\": \"%s\", \"kinds\": \"%s\", "
               "\"fallback_kinds\": \"%s\", \"threads\": %d},\n",
               o.suite.c_str(), o.layouts, o.racks, o.repeats, static_cast<unsigned long long>(o.seed), o.planner_simulations,
               o.agent_name.c_str(), agent.simulations, agent.position_simulations, agent.position_noisy_leaves, agent.position_candidate_noisy_leaves, agent.position_depth,
-              to_string(agent.position_valuation), agent.position_finalists, agent.seconds, o.in_hand_planner ? "planner" : "rule",
+              to_string(agent.position_valuation), agent.position_finalists, agent.position_varied_shots, agent.seconds, o.in_hand_planner ? "planner" : "rule",
               o.real_break ? "recommended" : "rule", kinds_text(agent.kinds).c_str(), kinds_text(agent.fallback_kinds).c_str(),
               o.threads);
   const CueStrikeNoise& n = st.base.noise;

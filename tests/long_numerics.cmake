@@ -73,4 +73,7 @@ set(CUEBALL_LONG_SEARCHES
   CliPlanShotPosition.InHandTakesARegionByName
   # An explicit next target (PositionPlay.NineBallsNextTargetsGivenExplicitly-
   # AreTheDefaultPlan).
-  PositionPlay.AnExplicitNextTargetIsPlayedFor)
+  PositionPlay.AnExplicitNextTargetIsPlayedFor
+  # Nine layouts planned with 3 and 6 shots varied (PlannerAgent.TheStrongest-
+  # AgentPlansATableWhoseOffCentreAimOnceRanAway: the strongest agent's 6).
+  PositionPlay.VaryingMoreShotsAddsCandidateLeavesAndFindsBetterOnes)

@@ -247,6 +247,10 @@ TEST(PlannerAgent, RefusesBadOptions) {
   o.position_simulations = 500;
   o.position_candidate_noisy_leaves = kMaxPositionNoisyLeaves + 1;
   test::expect_invalid("position_candidate_noisy_leaves", [&] { (void)choose_action(o, s, 1); });
+  o = cheap();
+  o.position_simulations = 500;
+  o.position_varied_shots = 0;
+  test::expect_invalid("position_varied_shots", [&] { (void)choose_action(o, s, 1); });
 }
 
 // An 8-ball table from a match (seed 5004, shot 13) where the aim solver,

@@ -45,6 +45,8 @@ AgentOptions strongest_agent() {
   o.position_noisy_leaves = kStrongestNoisyLeaves;
   o.position_candidate_noisy_leaves = kStrongestCandidateNoisyLeaves;
   o.position_depth = kStrongestDepth;
+  o.position_finalists = kStrongestFinalists;
+  o.position_varied_shots = kStrongestVariedShots;
   o.fallback_kinds = {ShotKind::kick};
   return o;
 }
@@ -77,6 +79,10 @@ void validate(const AgentOptions& options) {
   if (options.position_depth < 1 || options.position_depth > kMaxPositionDepth)
     throw InvalidArgument("position_depth", std::to_string(options.position_depth) + " is out of range [1, " +
                                                 std::to_string(kMaxPositionDepth) + "]");
+  if (options.position_varied_shots < 1 || options.position_varied_shots > kMaxPositionVariedShots)
+    throw InvalidArgument("position_varied_shots", std::to_string(options.position_varied_shots) +
+                                                       " is out of range [1, " +
+                                                       std::to_string(kMaxPositionVariedShots) + "]");
   if (options.position_finalists < 1 || options.position_finalists > kMaxPositionFinalists)
     throw InvalidArgument("position_finalists", std::to_string(options.position_finalists) + " is out of range [1, " +
                                                     std::to_string(kMaxPositionFinalists) + "]");

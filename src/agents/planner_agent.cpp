@@ -137,6 +137,7 @@ Pot plan_pot(const Turn& t, const std::vector<ShotKind>& kinds) {
       p.depth = t.options.position_depth;
       p.valuation = t.options.position_valuation;
       p.finalists = t.options.position_finalists;
+      p.varied_shots = t.options.position_varied_shots;
       PositionPlanResult pr;
       if (in_hand) {
         BallInHandRequest h{p, std::nullopt};

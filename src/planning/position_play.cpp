@@ -148,6 +148,7 @@ ShotSearch wide_search(const PositionRequest& q) {
   wide.vary_easy = true;
   wide.keep_every = true;
   wide.variant_runs = kPositionVariantBudgets * q.shot.simulations;
+  wide.varied_shots = static_cast<std::size_t>(q.varied_shots);
   return wide;
 }
 
@@ -456,6 +457,9 @@ PositionPlanResult plan_shot_for_position(const Scenario& table_state, const Pos
   if (q.finalists < 1 || q.finalists > kMaxPositionFinalists)
     throw InvalidArgument("finalists", static_cast<double>(q.finalists),
                           "[1, " + std::to_string(kMaxPositionFinalists) + "]", "candidates screened under noise");
+  if (q.varied_shots < 1 || q.varied_shots > kMaxPositionVariedShots)
+    throw InvalidArgument("varied_shots", static_cast<double>(q.varied_shots),
+                          "[1, " + std::to_string(kMaxPositionVariedShots) + "]", "feasible shots whose variants are searched");
   PositionPlanResult result;
   // The cue ball as plan_shot() takes it (which checks it, the target and the rest).
   Lookahead la{s, q, cue_ball_id(s, q.shot), {}, q.shot, 0};

@@ -45,7 +45,8 @@ inline constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 // feasible shots kept.
 inline constexpr int kBaseScreenShots = 16;
 inline constexpr std::size_t kMaxScreened = 12;
-// Spin and speed variants (step 4 of the header): of the kVariantCandidates
+// Spin and speed variants (step 4 of the header): of the
+// ShotSearch::varied_shots (kVariantCandidates by default, shot_search.hpp)
 // best feasible shots by window probability, each tip height of
 // ShotSearch::variant_heights (ball radii: draw, centre, follow) at each
 // cue-speed factor of its variant_speeds on the shot's own speed, one more step along the speed
@@ -55,7 +56,6 @@ inline constexpr std::size_t kMaxScreened = 12;
 // the speed chosen for it); a variant's search may take kVariantRuns runs
 // or so. A shot whose window probability is kNothingToGain or more is not
 // varied. (ShotSearch's defaults: shot_search.hpp).
-inline constexpr std::size_t kVariantCandidates = 3;
 inline constexpr double kVariantSide = 0.2;
 inline constexpr double kVariantFirmFactor = 4.0;
 inline constexpr double kNothingToGain = 0.999;
@@ -280,7 +280,7 @@ void keep_most_screened(SearchState& st);
 // more); the budgets of the finalists' screen and the final estimate set.
 void screen_feasible(SearchState& st);
 
-// The kVariantCandidates best by window probability tried again at other
+// The ShotSearch::varied_shots best by window probability tried again at other
 // tip heights, speeds and sides (unless the request gives the tip height).
 void vary_best(SearchState& st);
 

@@ -13,10 +13,16 @@
 
 namespace cueball {
 
+/// The feasible shots plan_shot() varies (ShotSearch::varied_shots).
+inline constexpr std::size_t kVariantCandidates = 3;
+
 /// What plan_shot()'s step 4 tries (shot_planner.hpp); the defaults are plan_shot()'s own.
 struct ShotSearch {
   std::vector<double> variant_heights{-0.3, 0.0, 0.3};  ///< tip heights of the variants, ball radii
   std::vector<double> variant_speeds{0.7, 1.0, 1.8};    ///< cue-speed factors of the variants
+  /// The best feasible shots by window probability whose variants are
+  /// searched.
+  std::size_t varied_shots = kVariantCandidates;
   /// Vary a shot even when its window probability leaves nothing to gain
   /// (position play wants the spin and speed that leave the cue ball well).
   bool vary_easy = false;

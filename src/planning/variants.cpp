@@ -115,7 +115,7 @@ void vary_best(SearchState& st) {
   for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
   std::stable_sort(order.begin(), order.end(),
                    [&](std::size_t a, std::size_t b) { return better_by_window(st.feasible, a, b); });
-  const std::size_t variant_candidates = std::min(kVariantCandidates, order.size());
+  const std::size_t variant_candidates = std::min(st.o.varied_shots, order.size());
   // What the variants may spend: the finalists' screen and the final
   // estimate's reserve stay free.
   st.variant_cap = st.q.simulations + st.o.variant_runs - st.final_reserve -

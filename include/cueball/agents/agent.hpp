@@ -99,6 +99,9 @@ struct AgentOptions {
   LeaveValuation position_valuation = LeaveValuation::windows;
   /// Position play: the finalists screened under noise (PositionRequest::finalists).
   int position_finalists = kPositionFinalists;
+  /// Position play: the feasible shots whose spin and speed variants are
+  /// candidate leaves (PositionRequest::varied_shots).
+  int position_varied_shots = kPositionVariedShots;
   /// The execution noise the agent plans under (planner). None: the game's
   /// (GameConfig::noise), or tournament_noise() when the game has none (a
   /// plan under no noise cannot tell a safe pot from a thin one).
@@ -146,9 +149,10 @@ TimedRounds plan_in_time(const AgentOptions& options, const std::function<void(c
 /// planner with each pot planned at kStrongestSimulations runs, played for
 /// position with each leave valued by its ghost-ball chance
 /// (LeaveValuation::ghost_ball) over kStrongestNoisyLeaves noisy leaves of
-/// each finalist, the finalists chosen with every candidate's leave valued
-/// over kStrongestCandidateNoisyLeaves noisy outcomes besides the
-/// noise-free one, kStrongestDepth shots deep (the next pot's strokes played
+/// each of kStrongestFinalists finalists, the finalists chosen with every
+/// candidate's leave valued over kStrongestCandidateNoisyLeaves noisy
+/// outcomes besides the noise-free one, the candidates the spin and speed
+/// variants of the kStrongestVariedShots best shots, kStrongestDepth shots deep (the next pot's strokes played
 /// once each, the ball after it valued by its ghost-ball chance), a kick
 /// when nothing else pots; three-cushion:
 /// carom_search at the same budget, without position play (which did not
@@ -161,7 +165,9 @@ TimedRounds plan_in_time(const AgentOptions& options, const std::function<void(c
 /// (docs/planner-benchmark.md, "The pocket's window, and two shots ahead");
 /// with the candidates' noisy leaves, 0.546 of the same racks against 0.480
 /// without (docs/planner-benchmark.md, "Every candidate's leave valued under
-/// the noise").
+/// the noise"); with 6 finalists of the variants of 6 shots instead of 3 of
+/// 3, 0.591 against 0.546 (docs/planner-benchmark.md, "More shots varied,
+/// more finalists").
 /// kStrongestPositionSimulations, the runs of a next-shot plan, are spent
 /// only with the windows valuation; position play is on while they are > 0.
 inline constexpr int kStrongestSimulations = 4000;
@@ -169,6 +175,8 @@ inline constexpr int kStrongestPositionSimulations = 1000;
 inline constexpr int kStrongestNoisyLeaves = 16;
 inline constexpr int kStrongestCandidateNoisyLeaves = 8;
 inline constexpr int kStrongestDepth = 2;
+inline constexpr int kStrongestFinalists = 6;
+inline constexpr int kStrongestVariedShots = 6;
 AgentOptions strongest_agent();
 
 /// An agent by the name a user gives (the CLI's --players, Python's

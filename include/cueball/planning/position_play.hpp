@@ -5,8 +5,9 @@
 //   1. The shot is planned with a wide variant search: plan_shot()'s step 4
 //      (shot_planner.hpp) with the tip heights kPositionHeights at the cue
 //      speeds kPositionSpeedFactors x the shot's own (kept inside its speed
-//      window), side +-0.2 at the best, for the three best shots even when
-//      they leave nothing to gain in potting; kPositionVariantBudgets x the
+//      window), side +-0.2 at the best, for the PositionRequest::varied_shots
+//      best shots (three by default) even when they leave nothing to gain
+//      in potting; kPositionVariantBudgets x the
 //      request's budget more engine runs for these. Every shot and variant
 //      found, with the noise-free end of every ball (PlannedShot::predicted),
 //      is a candidate; those whose window probability is at least
@@ -100,6 +101,11 @@ inline constexpr std::array<double, 5> kPositionHeights{-0.4, -0.2, 0.0, 0.2, 0.
 inline constexpr std::array<double, 6> kPositionSpeedFactors{0.6, 0.8, 1.0, 1.3, 1.8, 2.5};
 /// Engine runs of the wide variant search, in budgets of the request's.
 inline constexpr int kPositionVariantBudgets = 3;
+/// The feasible shots the wide variant search varies, by default
+/// (PositionRequest::varied_shots: plan_shot()'s three best by window
+/// probability), and the most allowed.
+inline constexpr int kPositionVariedShots = 3;
+inline constexpr int kMaxPositionVariedShots = 16;
 /// Candidates whose window probability is under this fraction of the best's are not played for position.
 inline constexpr double kPositionKeepFraction = 0.5;
 /// Most candidates whose leave is scored by window probabilities
@@ -191,6 +197,12 @@ struct PositionRequest {
   /// under the noise (a kPositionScreenFraction-th of the budget more
   /// engine runs each) and its noisy leaves valued.
   int finalists = kPositionFinalists;
+  /// The feasible shots of step 1 whose spin and speed variants are
+  /// searched, the best by window probability, [1, kMaxPositionVariedShots]:
+  /// each shot more (another pocket, a bank) adds its tip heights x speeds
+  /// as candidate leaves, up to kPositionVariantBudgets x the budget in
+  /// engine runs. The default, 3, is plan_shot()'s own.
+  int varied_shots = kPositionVariedShots;
 };
 
 /// What a candidate leaves for the next shot.

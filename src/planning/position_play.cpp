@@ -140,6 +140,9 @@ double next_shot_value(Lookahead& la, const Scenario& left, const std::vector<in
   return best_window_probability(left, next_request(la, ids), la.simulations);
 }
 
+// PositionRequest::varied_shots' default is plan_shot()'s own.
+static_assert(kPositionVariedShots == static_cast<int>(kVariantCandidates));
+
 // Step 1's search: plan_shot()'s step 4 widened (every shot and variant kept).
 ShotSearch wide_search(const PositionRequest& q) {
   ShotSearch wide;

@@ -17,6 +17,7 @@
 #include "cueball/simulation/scenario.hpp"
 #include "cueball/simulation/simulator.hpp"
 #include "cueball/io/scenario_json.hpp"
+#include "cueball/planning/ghost_ball.hpp"
 #include "cueball/table/rack.hpp"
 
 namespace cueball {
@@ -156,6 +157,40 @@ TEST(BallInHand, ATargetWithEveryPathBlockedHasNoSpotOnTheGridEither) {
     EXPECT_NE(std::string(e.what()).find("no spot for the cue ball pots ball 1 ("), std::string::npos) << e.what();
     EXPECT_NE(std::string(e.what()).find("places on a grid tried"), std::string::npos) << e.what();
   }
+}
+
+// The 1 with a ball on its straight path to each of the six pockets, 0.2 m
+// out, and the cue ball in the corner.
+Scenario every_straight_path_blocked() {
+  const Scenario empty = layout({});
+  const Vec2 O{1.9, 0.5};
+  std::vector<test::Placed> balls{{0, {0.2, 0.2}}, {1, O}};
+  for (std::size_t k = 0; k < empty.table.pockets.size(); ++k) {
+    const Vec2 P = empty.table.pockets[k].centre;
+    balls.push_back({2 + static_cast<int>(k), O + 0.2 * (P - O) / norm(P - O)});
+  }
+  return layout(balls);
+}
+
+// The ghost-ball chance sees straight pots only: where there is none from
+// anywhere, the grid's places are scored by the engine's window search
+// instead, and the bank it finds is played (before, no spot was found and
+// the strongest agent played safe with ball in hand).
+TEST(BallInHand, WithNoStraightPotTheGhostBallValuationFallsBackToTheWindowSearch) {
+  const Scenario s = every_straight_path_blocked();
+  BallInHandRequest q = request_for(1);
+  q.position.valuation = LeaveValuation::ghost_ball;
+  // No straight pot from here, nor from anywhere: each of the 1's paths to a pocket is blocked.
+  EXPECT_TRUE(ghost_ball_pots(s, 0, {1}).empty());
+  const BallInHandResult r = plan_ball_in_hand(s, q);
+  EXPECT_NE(r.plan.plan.shot.kind, ShotKind::direct);
+  EXPECT_GT(r.plan.plan.shot.success_probability, 0.0);
+  EXPECT_TRUE(ball_on_table(s.table, r.cue_ball, s.settings.parameters.ball.radius));
+  const SimulationResult played = run_scenario(scenario_with_shot(r.table, 0, r.plan.plan.shot, CueStrikeNoise{}));
+  for (const BallTrajectory& b : played.balls) EXPECT_EQ(b.pocketed, b.id == 1) << "ball " << b.id;
+  // The window search's spot, as the windows valuation scores the grid.
+  q.position.valuation = LeaveValuation::windows;
+  EXPECT_NO_THROW(plan_ball_in_hand(s, q));
 }
 
 TEST(BallInHand, AmongLegalTargetsPlacesTheCueBallForTheOneThatCanBePotted) {

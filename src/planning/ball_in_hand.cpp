@@ -204,9 +204,10 @@ double ghost_ball_spot_chance(const Hand& h, const Spot& spot, bool grid) {
 // shot asked for) scored by its window probability, noise-free (by
 // LeaveValuation::ghost_ball: its ghost-ball chance); the kInHandSpots best
 // kept, at most two a pocket (grid spots: no such limit).
-std::vector<const Spot*> kept_spots(const Hand& h, std::vector<Spot>& spots, bool grid, int& simulations) {
+std::vector<const Spot*> kept_spots(const Hand& h, std::vector<Spot>& spots, bool grid, LeaveValuation valuation,
+                                   int& simulations) {
   for (Spot& spot : spots) {
-    if (h.q.position.valuation == LeaveValuation::ghost_ball) {
+    if (valuation == LeaveValuation::ghost_ball) {
       spot.window = ghost_ball_spot_chance(h, spot, grid);
       continue;
     }
@@ -274,16 +275,25 @@ BallInHandResult plan_ball_in_hand(const Scenario& table_state, const BallInHand
   const Hand h = hand_of(table_state, q);
   // 1. Spots behind the ghost ball of each clear pocket, else on a grid.
   std::vector<Spot> spots = ghost_ball_spots(h);
-  const bool grid = spots.empty();
+  bool grid = spots.empty();
   if (grid) spots = grid_spots(h);
-  BallInHandResult result;
-  result.spots = static_cast<int>(spots.size());
   if (spots.empty())
     throw NoFeasibleShot(std::string("no spot for the cue ball: no free place") + (q.region ? " inside the region" : "") +
                          " on a grid of " + std::to_string(kInHandGrid[0] * kInHandGrid[1]) + " places");
   // 2. Each spot scored noise-free; the best kept.
   int simulations = 0;
-  const std::vector<const Spot*> kept = kept_spots(h, spots, grid, simulations);
+  std::vector<const Spot*> kept = kept_spots(h, spots, grid, q.position.valuation, simulations);
+  // 2b. None scored above 0, where the score saw only straight pots (a
+  // ghost-ball chance, or a direct shot into the spot's pocket): the grid's
+  // places scored by the engine's window search of every shot asked for (a
+  // bank, a kick), which they may still allow.
+  if (kept.empty() && (!grid || q.position.valuation == LeaveValuation::ghost_ball)) {
+    spots = grid_spots(h);
+    grid = true;
+    kept = kept_spots(h, spots, grid, LeaveValuation::windows, simulations);
+  }
+  BallInHandResult result;
+  result.spots = static_cast<int>(spots.size());
   if (kept.empty())
     throw NoFeasibleShot("no spot for the cue ball pots " + targets_text(target_ids(q.position.shot)) + " (" +
                          std::to_string(spots.size()) + (grid ? " places on a grid" : " spots behind ghost balls") +

@@ -29,7 +29,11 @@
 //      spots: no such limit). With PositionRequest::valuation ghost_ball
 //      the spot's score is its ghost-ball chance instead (ghost_ball.hpp:
 //      the straight pot into its pocket, a grid spot's into any pocket
-//      allowed; no engine run).
+//      allowed; no engine run). Where no spot scores above 0 on a score
+//      that sees straight pots only (every ghost-ball chance, or every
+//      spot's direct shot, is 0), the grid's places are scored by the
+//      window search of every shot asked for instead, as a bank or a kick
+//      may still pot the target from them.
 //   3. On each kept spot the shot is played for position
 //      (plan_shot_for_position(), the request's budgets, any pocket the
 //      request allows); the spot whose leave scores best (P(this pot) x

@@ -1,9 +1,10 @@
 // Tests of ball in hand (src/planning/ball_in_hand.cpp): the spot is a legal place
 // with the shot planned from it potting the target, it scores at least as
 // well as a straight-in placed by hand, it stays in the region given, it is
-// deterministic, and bad input and layouts with no spot say why. The grid
-// of spots where no straight pot exists is exercised by the run-outs of
-// cueball-planner-benchmark --in-hand planner (docs/planner-benchmark.md).
+// deterministic, and bad input and layouts with no spot say why; where no
+// straight pot exists, the ghost-ball valuation falls back to the window
+// search of the grid and finds the bank. The grid is also exercised by the
+// run-outs of cueball-planner-benchmark (docs/planner-benchmark.md).
 #include "cueball/planning/ball_in_hand.hpp"
 
 #include <gtest/gtest.h>

@@ -140,6 +140,13 @@ double next_shot_value(Lookahead& la, const Scenario& left, const std::vector<in
   return best_window_probability(left, next_request(la, ids), la.simulations);
 }
 
+// next_shot_value() on table `left` for the next targets on it; 1 where it
+// leaves no ball to play.
+double next_value_on(Lookahead& la, const Scenario& left) {
+  const std::vector<int> ids = next_ids_on(left, la, {});
+  return ids.empty() ? 1.0 : next_shot_value(la, left, ids);
+}
+
 // PositionRequest::varied_shots' default is plan_shot()'s own.
 static_assert(kPositionVariedShots == static_cast<int>(kVariantCandidates));
 
@@ -226,10 +233,7 @@ void value_candidate_leave(Lookahead& la, Candidate& c) {
     const NoisyOutcomes noisy = noisy_outcomes(la.s, la.q.shot, la.cue_id, c.shot, repeats, kScreenFirstShot, repeats);
     la.simulations += repeats;
     double sum = c.next_window;
-    for (const Scenario& left : noisy.leaves) {
-      const std::vector<int> ids = next_ids_on(left, la, {});
-      sum += ids.empty() ? 1.0 : next_shot_value(la, left, ids);
-    }
+    for (const Scenario& left : noisy.leaves) sum += next_value_on(la, left);
     c.leave.candidate_noisy_leaves = static_cast<int>(noisy.leaves.size());
     c.next_window = sum / static_cast<double>(1 + noisy.leaves.size());
   }
@@ -341,12 +345,11 @@ double two_shot_ghost_ball(Lookahead& la, const Scenario& left, const std::vecto
 // ball to play): depth 1, the best next shot's window probability or
 // ghost-ball chance; depth 2, two_shot_window() or two_shot_ghost_ball().
 double leave_value(Lookahead& la, const Scenario& left) {
+  if (la.q.depth < 2) return next_value_on(la, left);
   const std::vector<int> ids = next_ids_on(left, la, {});
   if (ids.empty()) return 1.0;
-  if (la.q.depth >= 2)
-    return la.q.valuation == LeaveValuation::ghost_ball ? two_shot_ghost_ball(la, left, ids)
-                                                        : two_shot_window(la, left, ids);
-  return next_shot_value(la, left, ids);
+  return la.q.valuation == LeaveValuation::ghost_ball ? two_shot_ghost_ball(la, left, ids)
+                                                      : two_shot_window(la, left, ids);
 }
 
 // The mean over the tables some noisy successes leave of leave_value(); 0

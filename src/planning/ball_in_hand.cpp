@@ -288,7 +288,7 @@ BallInHandResult plan_ball_in_hand(const Scenario& table_state, const BallInHand
   // places scored by the engine's window search of every shot asked for (a
   // bank, a kick), which they may still allow.
   if (kept.empty() && (!grid || q.position.valuation == LeaveValuation::ghost_ball)) {
-    spots = grid_spots(h);
+    if (!grid) spots = grid_spots(h);  // the grid already: its places rescored
     grid = true;
     kept = kept_spots(h, spots, grid, LeaveValuation::windows, simulations);
   }

@@ -185,7 +185,7 @@ void usage() {
       "                     agent's own (AgentOptions::position_valuation; default -,-)\n"
       "  --noisy-leaves N,M each agent's noisy leaves per finalist, [0, %d], - for the agent's own\n"
       "                     (AgentOptions::position_noisy_leaves; default -,-)\n"
-      "  --depths D,E       each agent's shots looked ahead in position play, [1, %d], - for the agent's own\n"
+      "  --depths D,E       each agent's shots looked ahead in position play, [1, %d] (3: ghost_ball only), - for the agent's own\n"
       "                     (AgentOptions::position_depth; default -,-)\n"
       "  --json FILE        also write the results as JSON\n"
       "Exit status: 0 done, 1 an engine error, 2 bad flags.\n",
@@ -248,6 +248,16 @@ Options parse(int argc, char** argv) {
       if (value.empty()) kFlags.bad(flag, value, "a file path");
       o.json = value;
     }
+  }
+  // Three shots deep by the ghost ball only (position_play.hpp, kMaxWindowsDepth).
+  for (std::size_t k = 0; k < 2; ++k) {
+    if (!o.depths[k] || *o.depths[k] <= kMaxWindowsDepth) continue;
+    const std::optional<AgentOptions> agent = agent_named(o.names[k]);
+    const LeaveValuation valuation = o.valuations[k] ? *o.valuations[k] : agent ? agent->position_valuation
+                                                                               : LeaveValuation::windows;
+    if (valuation == LeaveValuation::windows)
+      kFlags.bad("--depths", std::to_string(*o.depths[k]) + " (" + o.names[k] + ")",
+                 "[1, " + std::to_string(kMaxWindowsDepth) + "] with valuation windows (deeper: --valuations ghost_ball)");
   }
   return o;
 }

@@ -737,7 +737,7 @@ void usage() {
       "  --candidate-noisy-leaves N  position play: noisy outcomes of every candidate whose leaves are valued\n"
       "                           before the finalists are chosen, [0, %d] (default: the agent's; strongest %d,\n"
       "                           the others 0: the noise-free leave alone)\n"
-      "  --depth D                position play: shots looked ahead, [1, %d] (default: the agent's; strongest 2, the others 1)\n"
+      "  --depth D                position play: shots looked ahead, [1, %d] (3: --valuation ghost_ball only) (default: the agent's; strongest 2, the others 1)\n"
       "  --valuation V            position play and ball in hand: how a leave is valued, windows (the planner's\n"
       "                           window search) or ghost_ball (no engine run at depth 1) (default: the agent's;\n"
       "                           strongest ghost_ball, the others windows)\n"
@@ -859,6 +859,10 @@ Options parse(int argc, char** argv) {
       o.json = value;
     }
   }
+  // Three shots deep by the ghost ball only (position_play.hpp, kMaxWindowsDepth).
+  if (o.depth && *o.depth > kMaxWindowsDepth && o.runout_agent().position_valuation == LeaveValuation::windows)
+    kFlags.bad("--depth", std::to_string(*o.depth),
+               "[1, " + std::to_string(kMaxWindowsDepth) + "] with valuation windows (deeper: --valuation ghost_ball)");
   return o;
 }
 

@@ -243,6 +243,9 @@ TEST(PlannerAgent, RefusesBadOptions) {
   o.position_depth = kMaxPositionDepth + 1;
   o.position_valuation = LeaveValuation::ghost_ball;
   test::expect_invalid("position_depth", [&] { (void)choose_action(o, s, 1); });
+  o.position_depth = kMaxWindowsDepth + 1;  // three shots deep by the ghost ball only
+  o.position_valuation = LeaveValuation::windows;
+  test::expect_invalid("position_depth", [&] { (void)choose_action(o, s, 1); });
   o = cheap();
   o.position_simulations = 500;
   o.position_candidate_noisy_leaves = kMaxPositionNoisyLeaves + 1;

@@ -495,13 +495,22 @@ TEST(PositionPlay, VaryingMoreShotsAddsCandidateLeavesAndFindsBetterOnes) {
   EXPECT_GE(better, 2);
 }
 
-// Depth 2 by the ghost ball, recomputed here from its definition: the best,
-// over the next shot's three best ghost-ball pots, of its chance times the
-// best ghost-ball chance of the ball after it on the table each stroke
-// (kGhostBallStrokeSpeeds x kGhostBallStrokeHeights) leaves, a scratch
-// scoring 0; where no stroke drops the ball, the tables with it taken off.
-double two_shot_ghost_ball_value(const Scenario& left, int next, int after, double aim_sigma) {
-  const std::vector<GhostBallPot> pots = ghost_ball_pots(left, 0, {next});
+// Depth 2 and 3 by the ghost ball, recomputed here from their definition
+// without the branch and bound: `shots` shots on `left`, the next ball the
+// first of `order` on the table (none: 1); one shot, its best ghost-ball
+// chance; more, the best over its three best ghost-ball pots of the pot's
+// chance times the best, over the tables its strokes
+// (kGhostBallStrokeSpeeds x kGhostBallStrokeHeights) leave (a scratch
+// scoring 0; where no stroke drops the ball, the tables with it taken off),
+// of the shots - 1 after it.
+double ghost_ball_shots_value(const Scenario& left, const std::vector<int>& order, int shots, double aim_sigma) {
+  const auto on = [](const Scenario& t, int id) {
+    return std::any_of(t.balls.begin(), t.balls.end(), [&](const SimulationBall& b) { return b.id == id; });
+  };
+  const auto next = std::find_if(order.begin(), order.end(), [&](int id) { return on(left, id); });
+  if (next == order.end()) return 1.0;
+  if (shots == 1) return best_ghost_ball_chance(left, 0, {*next}, aim_sigma);
+  const std::vector<GhostBallPot> pots = ghost_ball_pots(left, 0, {*next});
   double value = 0.0;
   for (std::size_t k = 0; k < pots.size() && k < 3; ++k) {
     double potted = 0.0, unpotted = 0.0;
@@ -510,55 +519,49 @@ double two_shot_ghost_ball_value(const Scenario& left, int next, int after, doub
       for (double height : kGhostBallStrokeHeights) {
         GhostBallStroke stroke = ghost_ball_stroke(left, 0, pots[k], speed, height);
         if (stroke.scratched) continue;
-        std::erase_if(stroke.left.balls, [&](const SimulationBall& b) { return b.id == next; });
-        const bool after_on = std::any_of(stroke.left.balls.begin(), stroke.left.balls.end(),
-                                          [&](const SimulationBall& b) { return b.id == after; });
-        const double chance = after_on ? best_ghost_ball_chance(stroke.left, 0, {after}, aim_sigma) : 1.0;
-        if (stroke.potted) {
-          any_potted = true;
-          potted = std::max(potted, chance);
-        } else {
-          unpotted = std::max(unpotted, chance);
-        }
+        std::erase_if(stroke.left.balls, [&](const SimulationBall& b) { return b.id == *next; });
+        const double after = ghost_ball_shots_value(stroke.left, order, shots - 1, aim_sigma);
+        any_potted = any_potted || stroke.potted;
+        double& best = stroke.potted ? potted : unpotted;
+        best = std::max(best, after);
       }
     value = std::max(value, ghost_ball_pot_chance(pots[k].aim_tolerance, aim_sigma) * (any_potted ? potted : unpotted));
   }
   return value;
 }
 
-// LeaveValuation::ghost_ball at depth 2: each finalist's noise-free leave
-// (noisy_leaves 0) valued by the next two shots' ghost-ball chances, the
-// second after a searched stroke of the first (recomputed above); never more
-// than depth 1's value of the same leave (the first shot's best chance), and
-// below it somewhere (the ball after the next one, or a next shot whose
-// every stroke scratches, counts).
-TEST(PositionPlay, DepthTwoByTheGhostBallValuesTheNextTwoShots) {
+// LeaveValuation::ghost_ball at `depth` on random layouts of the cue ball
+// and balls 1..balls-1: each finalist's noise-free leave (noisy_leaves 0)
+// valued exactly as ghost_ball_shots_value() values it, never more than one
+// shot less deep values the same leave, and below it somewhere (the ball
+// after, or a next shot whose every stroke scratches, counts).
+void expect_ghost_ball_depth(int depth, std::size_t balls) {
   int compared = 0, lower = 0;
+  std::vector<int> order;
+  for (int id = 2; id < static_cast<int>(balls); ++id) order.push_back(id);
   for (unsigned seed = 20; seed < 20 + static_cast<unsigned>(test::scaled(6, 2)); ++seed) {
     SCOPED_TRACE(seed);
-    const Scenario s = random_layout(seed, 4);
+    const Scenario s = random_layout(seed, balls);
     PositionRequest q = request_for(1);
     q.valuation = LeaveValuation::ghost_ball;
     q.noisy_leaves = 0;
-    q.depth = 2;
+    q.depth = depth;
     PositionPlanResult r;
     try {
       r = plan_shot_for_position(s, q);
     } catch (const NoFeasibleShot&) {
       continue;
     }
+    const double aim = q.shot.noise.aim;
     const auto check = [&](const PlannedShot& shot, const Leave& leave) {
       const Scenario left = table_left_by(s, shot);
-      const auto on = [&](int id) {
-        return std::any_of(left.balls.begin(), left.balls.end(), [&](const SimulationBall& b) { return b.id == id; });
-      };
-      if (!on(2)) return;
-      const double two = two_shot_ghost_ball_value(left, 2, 3, q.shot.noise.aim);
-      const double one = best_ghost_ball_chance(left, 0, {2}, q.shot.noise.aim);
-      EXPECT_EQ(leave.noisy_next_window, two);
-      EXPECT_DOUBLE_EQ(leave.score, leave.screened_probability * two);
-      EXPECT_LE(two, one);
-      lower += two < one - 1e-3 ? 1 : 0;
+      if (std::none_of(left.balls.begin(), left.balls.end(), [](const SimulationBall& b) { return b.id == 2; })) return;
+      const double value = ghost_ball_shots_value(left, order, depth, aim);
+      const double shallower = ghost_ball_shots_value(left, order, depth - 1, aim);
+      EXPECT_EQ(leave.noisy_next_window, value);
+      EXPECT_DOUBLE_EQ(leave.score, leave.screened_probability * value);
+      EXPECT_LE(value, shallower);
+      lower += value < shallower - 1e-3 ? 1 : 0;
       ++compared;
     };
     check(r.plan.shot, r.leave);
@@ -567,6 +570,16 @@ TEST(PositionPlay, DepthTwoByTheGhostBallValuesTheNextTwoShots) {
   EXPECT_GE(compared, 2);
   EXPECT_GE(lower, 1);
 }
+
+// Depth 2: the next two shots' ghost-ball chances, the second after a
+// searched stroke of the first; at most depth 1's value (the first shot's
+// best chance).
+TEST(PositionPlay, DepthTwoByTheGhostBallValuesTheNextTwoShots) { expect_ghost_ball_depth(2, 4); }
+
+// Depth 3: the next three shots', by a branch and bound that drops nothing
+// that could count (the same value as the search without pruning, bit for
+// bit); at most depth 2's value.
+TEST(PositionPlay, DepthThreeByTheGhostBallIsTheUnprunedSearchOfTheNextThreeShots) { expect_ghost_ball_depth(3, 5); }
 
 TEST(PositionPlay, BadInputNamesTheField) {
   const Scenario s = random_layout(3);
@@ -599,6 +612,9 @@ TEST(PositionPlay, BadInputNamesTheField) {
   q.depth = kMaxPositionDepth + 1;
   EXPECT_EQ(field(q), "depth");
   q.valuation = LeaveValuation::ghost_ball;
+  EXPECT_EQ(field(q), "depth");
+  q.valuation = LeaveValuation::windows;  // three shots deep by the ghost ball only
+  q.depth = kMaxWindowsDepth + 1;
   EXPECT_EQ(field(q), "depth");
   q = request_for(1);
   q.candidate_noisy_leaves = -1;

@@ -79,6 +79,10 @@ void validate(const AgentOptions& options) {
   if (options.position_depth < 1 || options.position_depth > kMaxPositionDepth)
     throw InvalidArgument("position_depth", std::to_string(options.position_depth) + " is out of range [1, " +
                                                 std::to_string(kMaxPositionDepth) + "]");
+  if (options.position_depth > kMaxWindowsDepth && options.position_valuation == LeaveValuation::windows)
+    throw InvalidArgument("position_depth", std::to_string(options.position_depth) + " is out of range [1, " +
+                                                std::to_string(kMaxWindowsDepth) +
+                                                "] with position_valuation windows (deeper: ghost_ball)");
   if (options.position_varied_shots < 1 || options.position_varied_shots > kMaxPositionVariedShots)
     throw InvalidArgument("position_varied_shots", std::to_string(options.position_varied_shots) +
                                                        " is out of range [1, " +

@@ -299,56 +299,77 @@ double two_shot_window(Lookahead& la, const Scenario& left, const std::vector<in
   return value;
 }
 
-// Depth 2 by the ghost ball (LeaveValuation::ghost_ball): the best, over
-// the next shot's kPositionSecondShots best ghost-ball pots, of its chance
-// times the best, over the strokes kGhostBallStrokeSpeeds x
-// kGhostBallStrokeHeights played once without noise (ghost_ball_stroke(),
-// one engine run each), of the ghost-ball chance of the shot after it on the
-// table the stroke leaves (1 where it leaves no ball to play); a stroke that
-// scratches scores 0. Where no stroke drops the pot's ball (a level stroke
-// at the ghost ball does not allow for throw), the strokes' tables are
-// valued with that ball taken off. 0 when the next shot has no ghost-ball
-// pot. The same expectimax as two_shot_window(), each chance node the
-// ghost-ball chance, the second shot's stroke searched instead of planned.
-double two_shot_ghost_ball(Lookahead& la, const Scenario& left, const std::vector<int>& ids) {
-  const double aim_sigma = la.next.noise.aim;
+// A table a next pot's stroke leaves, its bound and its next targets.
+struct StrokeLeave {
+  double bound = 0.0;    // the best ghost-ball chance of the shot after the pot on it (1: no ball left)
+  Scenario left;
+  std::vector<int> ids;  // the next targets on it; empty: none left
+};
+
+// The tables the strokes kGhostBallStrokeSpeeds x kGhostBallStrokeHeights
+// of `pot` leave, played once each without noise (ghost_ball_stroke(), one
+// engine run each), best bound first: those that drop the pot's ball, or
+// where none does (a level stroke at the ghost ball does not allow for
+// throw), every one with that ball taken off. A stroke that scratches
+// leaves none.
+std::vector<StrokeLeave> stroke_leaves(Lookahead& la, const Scenario& left, const GhostBallPot& pot) {
+  std::vector<StrokeLeave> potted, unpotted;
+  for (const double speed : kGhostBallStrokeSpeeds)
+    for (const double height : kGhostBallStrokeHeights) {
+      GhostBallStroke stroke = ghost_ball_stroke(left, la.cue_id, pot, speed, height);
+      ++la.simulations;
+      if (stroke.scratched) continue;
+      if (!stroke.potted)
+        stroke.left.balls.erase(stroke.left.balls.begin() +
+                                static_cast<std::ptrdiff_t>(index_of(stroke.left.balls, pot.target)));
+      StrokeLeave leave{1.0, std::move(stroke.left), {}};
+      leave.ids = next_ids_on(leave.left, la, {});
+      if (!leave.ids.empty()) leave.bound = best_ghost_ball_chance(leave.left, la.cue_id, leave.ids, la.next.noise.aim);
+      (stroke.potted ? potted : unpotted).push_back(std::move(leave));
+    }
+  std::vector<StrokeLeave>& leaves = potted.empty() ? unpotted : potted;
+  std::stable_sort(leaves.begin(), leaves.end(),
+                   [](const StrokeLeave& a, const StrokeLeave& b) { return a.bound > b.bound; });
+  return std::move(leaves);
+}
+
+// Depth 2 and 3 by the ghost ball (LeaveValuation::ghost_ball), `shots`
+// shots on table `left` for the balls `ids`: one, the best ghost-ball
+// chance; more, the best over the next shot's kPositionSecondShots best
+// ghost-ball pots of its chance times the best, over the tables its
+// strokes leave (stroke_leaves()), of the value of the shots - 1 after it
+// (1 where it leaves no ball to play); 0 when the next shot has no
+// ghost-ball pot. The expectimax of PickPocket (Smith 2007) `shots` plies
+// deep, each chance node the ghost-ball chance, each later shot's stroke
+// searched instead of planned. Exact branch and bound: a value is a product
+// of chances, so no more than its first factor, and a pot (or a table)
+// whose chance (bound) is no more than the best value found cannot raise it.
+double ghost_ball_shots(Lookahead& la, const Scenario& left, const std::vector<int>& ids, int shots) {
+  if (shots <= 1) return best_ghost_ball_chance(left, la.cue_id, ids, la.next.noise.aim);
   const std::vector<GhostBallPot> pots = ghost_ball_pots(left, la.cue_id, ids);
   double value = 0.0;
   for (std::size_t k = 0; k < pots.size() && k < kPositionSecondShots; ++k) {
-    const GhostBallPot& pot = pots[k];
-    const double chance = ghost_ball_pot_chance(pot.aim_tolerance, aim_sigma);
-    // The shot after it has a chance of at most 1: no gain possible.
+    const double chance = ghost_ball_pot_chance(pots[k].aim_tolerance, la.next.noise.aim);
     if (chance <= value) continue;
-    double after_potted = 0.0, after_unpotted = 0.0;  // the best after a stroke that drops the ball, and after one that does not
-    bool any_potted = false;
-    for (const double speed : kGhostBallStrokeSpeeds)
-      for (const double height : kGhostBallStrokeHeights) {
-        GhostBallStroke stroke = ghost_ball_stroke(left, la.cue_id, pot, speed, height);
-        ++la.simulations;
-        if (stroke.scratched) continue;
-        any_potted = any_potted || stroke.potted;
-        if (!stroke.potted)
-          stroke.left.balls.erase(stroke.left.balls.begin() +
-                                  static_cast<std::ptrdiff_t>(index_of(stroke.left.balls, pot.target)));
-        const std::vector<int> after_ids = next_ids_on(stroke.left, la, {});
-        const double after =
-            after_ids.empty() ? 1.0 : best_ghost_ball_chance(stroke.left, la.cue_id, after_ids, aim_sigma);
-        double& best = stroke.potted ? after_potted : after_unpotted;
-        best = std::max(best, after);
-      }
-    value = std::max(value, chance * (any_potted ? after_potted : after_unpotted));
+    double after = 0.0;
+    for (const StrokeLeave& leave : stroke_leaves(la, left, pots[k])) {
+      if (leave.bound <= after) break;  // best bound first: none after it can gain
+      after = std::max(after, leave.ids.empty() ? 1.0 : ghost_ball_shots(la, leave.left, leave.ids, shots - 1));
+    }
+    value = std::max(value, chance * after);
   }
   return value;
 }
 
 // A leave's value for the next shots on table `left` (1 where it leaves no
 // ball to play): depth 1, the best next shot's window probability or
-// ghost-ball chance; depth 2, two_shot_window() or two_shot_ghost_ball().
+// ghost-ball chance; depth 2, two_shot_window() or ghost_ball_shots();
+// depth 3, ghost_ball_shots() (the windows' depth stops at 2).
 double leave_value(Lookahead& la, const Scenario& left) {
   if (la.q.depth < 2) return next_value_on(la, left);
   const std::vector<int> ids = next_ids_on(left, la, {});
   if (ids.empty()) return 1.0;
-  return la.q.valuation == LeaveValuation::ghost_ball ? two_shot_ghost_ball(la, left, ids)
+  return la.q.valuation == LeaveValuation::ghost_ball ? ghost_ball_shots(la, left, ids, la.q.depth)
                                                       : two_shot_window(la, left, ids);
 }
 
@@ -457,6 +478,9 @@ PositionPlanResult plan_shot_for_position(const Scenario& table_state, const Pos
   if (q.depth < 1 || q.depth > kMaxPositionDepth)
     throw InvalidArgument("depth", static_cast<double>(q.depth), "[1, " + std::to_string(kMaxPositionDepth) + "]",
                           "shots looked ahead");
+  if (q.depth > kMaxWindowsDepth && q.valuation == LeaveValuation::windows)
+    throw InvalidArgument("depth", static_cast<double>(q.depth), "[1, " + std::to_string(kMaxWindowsDepth) + "]",
+                          "shots looked ahead with valuation windows (deeper: ghost_ball)");
   if (q.candidate_noisy_leaves < 0 || q.candidate_noisy_leaves > kMaxPositionNoisyLeaves)
     throw InvalidArgument("candidate_noisy_leaves", static_cast<double>(q.candidate_noisy_leaves),
                           "[0, " + std::to_string(kMaxPositionNoisyLeaves) + "]", "noisy leaves valued per candidate");

@@ -74,7 +74,14 @@
 // tables the pot's noise-free strokes kGhostBallStrokeSpeeds x
 // kGhostBallStrokeHeights leave (ghost_ball_stroke(), one engine run each;
 // a stroke that scratches scores 0): a sampled second ply where the
-// windows' depth 2 plans one.
+// windows' depth 2 plans one. At depth 3 the shot after the next is valued
+// so in turn on each of those tables: the next three shots' chances, each
+// later shot's stroke searched, by a branch and bound that searches a
+// table only where its next chance exceeds the best value found (the value
+// is a product of chances, so no more than that chance): 7-16 % more time
+// a decision than depth 2 on the run-out suite, and no more run-outs within
+// the noise (docs/planner-benchmark.md, "Three shots ahead by the ghost
+// ball"), so the strongest agent stays at depth 2.
 //
 // By default (valuation windows) the leave's quality is measured on the
 // exact simulation and the real planner, so it includes what the next shot
@@ -120,10 +127,16 @@ inline constexpr int kMaxPositionFinalists = 16;
 inline constexpr int kPositionNoisyLeaves = 4;
 inline constexpr int kMaxPositionNoisyLeaves = 64;
 /// Lookahead depths (PositionRequest::depth): 1, the next shot; 2, the next
-/// two. At depth 2 a leave's next shot is valued by its kPositionSecondShots
-/// best shots (noise-free, by window probability), each times the best
-/// window of the shot after it on the table it leaves.
-inline constexpr int kMaxPositionDepth = 2;
+/// two; 3, the next three (valuation ghost_ball only). At depth 2 a leave's
+/// next shot is valued by its kPositionSecondShots best shots (noise-free,
+/// by window probability), each times the best window of the shot after it
+/// on the table it leaves; at depth 3 by the ghost ball, the shot after it
+/// valued so in turn.
+inline constexpr int kMaxPositionDepth = 3;
+/// The deepest lookahead with valuation windows (a full window search per
+/// shot of every ply: deeper costs kPositionSecondShots + 1 times as much
+/// again).
+inline constexpr int kMaxWindowsDepth = 2;
 inline constexpr std::size_t kPositionSecondShots = 3;
 /// The finalists' common screen takes the request's budget over this; the
 /// final estimate of the one played, the budget over kPositionEstimateFraction.
@@ -183,7 +196,11 @@ struct PositionRequest {
   /// (`next_simulations` runs a plan) for every plan; depth 2 makes about
   /// kPositionSecondShots + 1 times as many next plans. With valuation
   /// ghost_ball the same by ghost-ball chances, the next shot's strokes
-  /// played once each (12 engine runs a next pot, header comment).
+  /// played once each (12 engine runs a next pot, header comment); 3
+  /// (ghost_ball only, [1, kMaxWindowsDepth] with windows): the shot after
+  /// the next valued two shots deep in turn on each table its strokes
+  /// leave, by an exact branch and bound (a table whose next chance is no
+  /// more than the best value so far is not searched).
   int depth = 1;
   /// How a leave's next shot is valued in steps 2 and 3 (LeaveValuation).
   LeaveValuation valuation = LeaveValuation::windows;

@@ -49,6 +49,7 @@
 #include "cueball/core/errors.hpp"
 #include "cueball/core/random.hpp"
 #include "cueball/planning/shot_planner.hpp"
+#include "core/angles.hpp"
 
 namespace cueball {
 
@@ -129,15 +130,13 @@ void try_strike(Search& s, const ShotAction& strike) {
   s.pool.push_back(c);
 }
 
-double wrap_deg(double aim) { return aim > 180.0 ? aim - 360.0 : (aim < -180.0 ? aim + 360.0 : aim); }
-
 // Step 1.
 void scan(Search& s, int shots) {
   RandomStream rng(stream_seed(s.seed, 1));
   const double start = rng.uniform(-180.0, 180.0);
   for (int i = 0; i < shots; ++i) {
     ShotAction a;
-    a.aim_deg = wrap_deg(start + 360.0 * static_cast<double>(i) / static_cast<double>(shots));
+    a.aim_deg = wrapped_deg(start + 360.0 * static_cast<double>(i) / static_cast<double>(shots));
     a.speed = kSpeeds[static_cast<std::size_t>(rng.integer(0, static_cast<int>(kSpeeds.size()) - 1))];
     a.side = kSides[static_cast<std::size_t>(rng.integer(0, static_cast<int>(kSides.size()) - 1))];
     a.height = kHeights[static_cast<std::size_t>(rng.integer(0, static_cast<int>(kHeights.size()) - 1))];
@@ -151,7 +150,7 @@ std::vector<ShotAction> nudges(const ShotAction& a) {
   for (const double d : kAimNudgesDeg) {
     for (const double sign : {-1.0, 1.0}) {
       ShotAction n = a;
-      n.aim_deg = wrap_deg(a.aim_deg + sign * d);
+      n.aim_deg = wrapped_deg(a.aim_deg + sign * d);
       out.push_back(n);
     }
   }
@@ -194,7 +193,7 @@ double support(const Search& s, const Candidate& c) {
   int scored = 0;
   for (const Candidate& o : s.pool) {
     if (&o == &c || !same_stroke(o.strike, c.strike)) continue;
-    if (std::abs(wrap_deg(o.strike.aim_deg - c.strike.aim_deg)) > kNeighbourAimDeg) continue;
+    if (std::abs(wrapped_deg(o.strike.aim_deg - c.strike.aim_deg)) > kNeighbourAimDeg) continue;
     near += 1;
     scored += o.point ? 1 : 0;
   }
@@ -290,7 +289,7 @@ std::size_t centre(Search& s, std::size_t chosen) {
     for (double d = kCentreStepDeg; d <= kCentreReachDeg; d += kCentreStepDeg) {
       if (s.budget - s.used < 2 + s.pool[chosen].noisy_tries) return chosen;
       ShotAction n = start;
-      n.aim_deg = wrap_deg(start.aim_deg + sign * d);
+      n.aim_deg = wrapped_deg(start.aim_deg + sign * d);
       if (!point_quiet(s, n)) break;
       edge[side] = sign * d;
     }
@@ -299,7 +298,7 @@ std::size_t centre(Search& s, std::size_t chosen) {
   if (std::abs(shift) < 0.5 * kCentreStepDeg) return chosen;
   Candidate c;
   c.strike = start;
-  c.strike.aim_deg = wrap_deg(start.aim_deg + shift);
+  c.strike.aim_deg = wrapped_deg(start.aim_deg + shift);
   c.point = true;
   c.score = kPointScore;
   s.pool.push_back(c);

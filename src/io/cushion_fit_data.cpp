@@ -12,12 +12,12 @@
 
 #include "cueball/core/errors.hpp"
 #include "cueball/physics/cloth_motion.hpp"
+#include "core/angles.hpp"
 
 namespace cueball {
 
 namespace {
 
-constexpr double kDegree = std::numbers::pi / 180.0;
 
 // A cell's value in [lo, hi], or InvalidArgument naming the file, the line
 // and the cell as the CLI names a flag ("data.csv:3: v0 = 40 is outside the

@@ -4,6 +4,7 @@
 #include <numbers>
 
 #include "io/json_output.hpp"
+#include "core/angles.hpp"
 
 namespace cueball {
 
@@ -11,7 +12,6 @@ namespace {
 
 using Json = nlohmann::ordered_json;
 
-constexpr double kDegree = std::numbers::pi / 180.0;
 
 Json sample_json(const CushionImpactSample& s) {
   return {{"P", s.normal_impulse},

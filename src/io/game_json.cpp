@@ -18,13 +18,13 @@
 #include "cueball/io/scenario_json.hpp"
 #include "io/json_input.hpp"
 #include "io/json_output.hpp"
+#include "core/angles.hpp"
 
 namespace cueball {
 
 namespace {
 
 using Json = nlohmann::json;
-constexpr double kDegree = std::numbers::pi / 180.0;
 
 constexpr std::array kKinds{GameKind::nine_ball, GameKind::eight_ball, GameKind::ten_ball, GameKind::snooker,
                             GameKind::three_cushion};

@@ -11,6 +11,7 @@
 #include "cueball/core/errors.hpp"
 #include "cueball/io/table_json.hpp"
 #include "cueball/simulation/shot_facts.hpp"
+#include "core/angles.hpp"
 #include "io/json_output.hpp"
 
 namespace cueball {
@@ -18,7 +19,6 @@ namespace cueball {
 namespace {
 
 using Json = nlohmann::json;
-constexpr double kDegree = std::numbers::pi / 180.0;
 
 }  // namespace
 

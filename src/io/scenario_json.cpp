@@ -20,6 +20,7 @@
 #include "cueball/table/rack.hpp"
 #include "io/json_input.hpp"
 #include "io/json_output.hpp"
+#include "core/angles.hpp"
 
 namespace cueball {
 
@@ -27,7 +28,6 @@ namespace {
 
 
 using Json = nlohmann::json;
-constexpr double kDegree = std::numbers::pi / 180.0;
 
 // Reads one JSON object, tracking its path for error messages.
 class Reader {

@@ -12,13 +12,12 @@
 
 #include "cueball/core/errors.hpp"
 #include "cueball/planning/ghost_ball.hpp"
+#include "core/angles.hpp"
 #include "planning/shot_search.hpp"
 
 namespace cueball {
 
 namespace {
-
-constexpr double kDegree = std::numbers::pi / 180.0;
 
 // A spot behind a ghost ball, and what step 2 makes of it.
 struct Spot {

@@ -32,13 +32,13 @@
 #include <utility>
 #include <vector>
 
+#include "core/angles.hpp"
 #include "planning/shot_search.hpp"
 
 namespace cueball {
 
 namespace planning {
 
-inline constexpr double kDegree = std::numbers::pi / 180.0;
 inline constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
 // Shots of the brief noisy screen of every feasible shot, and the most
@@ -96,11 +96,6 @@ inline constexpr int kOffsetSteps = 3;
 inline constexpr double kOffsetMostDeg = 3.0;
 
 inline double angle_deg(Vec2 v) { return std::atan2(v.y, v.x) / kDegree; }
-// An aim in degrees brought into (-180, 180], the same direction.
-inline double wrapped_deg(double aim) {
-  const double w = std::remainder(aim, 360.0);
-  return w == -180.0 ? 180.0 : w;
-}
 
 // One candidate as geometry describes it.
 struct Candidate {

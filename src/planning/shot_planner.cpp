@@ -135,8 +135,8 @@ std::string shot_kind_names(std::string_view quote) {
 CueStrikeNoise tournament_noise() {
   CueStrikeNoise n;
   n.speed = 0.075;
-  n.aim = 0.125 * planning::kDegree;
-  n.elevation = 0.1 * planning::kDegree;
+  n.aim = 0.125 * kDegree;
+  n.elevation = 0.1 * kDegree;
   n.side_offset = 0.0005;
   n.height_offset = 0.0005;
   return n;

@@ -251,11 +251,8 @@ Options parse(int argc, char** argv) {
   }
   // Three shots deep by the ghost ball only (position_play.hpp, kMaxWindowsDepth).
   for (std::size_t k = 0; k < 2; ++k) {
-    if (!o.depths[k] || *o.depths[k] <= kMaxWindowsDepth) continue;
-    const std::optional<AgentOptions> agent = agent_named(o.names[k]);
-    const LeaveValuation valuation = o.valuations[k] ? *o.valuations[k] : agent ? agent->position_valuation
-                                                                               : LeaveValuation::windows;
-    if (valuation == LeaveValuation::windows)
+    const LeaveValuation valuation = o.valuations[k] ? *o.valuations[k] : agent_named(o.names[k])->position_valuation;
+    if (o.depths[k] && *o.depths[k] > max_position_depth(valuation))
       kFlags.bad("--depths", std::to_string(*o.depths[k]) + " (" + o.names[k] + ")",
                  "[1, " + std::to_string(kMaxWindowsDepth) + "] with valuation windows (deeper: --valuations ghost_ball)");
   }

@@ -860,7 +860,7 @@ Options parse(int argc, char** argv) {
     }
   }
   // Three shots deep by the ghost ball only (position_play.hpp, kMaxWindowsDepth).
-  if (o.depth && *o.depth > kMaxWindowsDepth && o.runout_agent().position_valuation == LeaveValuation::windows)
+  if (o.depth && *o.depth > max_position_depth(o.runout_agent().position_valuation))
     kFlags.bad("--depth", std::to_string(*o.depth),
                "[1, " + std::to_string(kMaxWindowsDepth) + "] with valuation windows (deeper: --valuation ghost_ball)");
   return o;

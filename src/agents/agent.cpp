@@ -79,7 +79,7 @@ void validate(const AgentOptions& options) {
   if (options.position_depth < 1 || options.position_depth > kMaxPositionDepth)
     throw InvalidArgument("position_depth", std::to_string(options.position_depth) + " is out of range [1, " +
                                                 std::to_string(kMaxPositionDepth) + "]");
-  if (options.position_depth > kMaxWindowsDepth && options.position_valuation == LeaveValuation::windows)
+  if (options.position_depth > max_position_depth(options.position_valuation))
     throw InvalidArgument("position_depth", std::to_string(options.position_depth) + " is out of range [1, " +
                                                 std::to_string(kMaxWindowsDepth) +
                                                 "] with position_valuation windows (deeper: ghost_ball)");

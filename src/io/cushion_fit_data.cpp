@@ -5,7 +5,6 @@
 #include <cerrno>
 #include <cmath>
 #include <cstdlib>
-#include <numbers>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -17,7 +16,6 @@
 namespace cueball {
 
 namespace {
-
 
 // A cell's value in [lo, hi], or InvalidArgument naming the file, the line
 // and the cell as the CLI names a flag ("data.csv:3: v0 = 40 is outside the

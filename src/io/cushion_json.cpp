@@ -1,7 +1,6 @@
 // The cushion commands' JSON (io/cushion_json.hpp).
 #include "cueball/io/cushion_json.hpp"
 
-#include <numbers>
 
 #include "io/json_output.hpp"
 #include "core/angles.hpp"
@@ -11,7 +10,6 @@ namespace cueball {
 namespace {
 
 using Json = nlohmann::ordered_json;
-
 
 Json sample_json(const CushionImpactSample& s) {
   return {{"P", s.normal_impulse},

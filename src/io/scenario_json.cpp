@@ -8,7 +8,6 @@
 #include <cstdio>
 #include <initializer_list>
 #include <limits>
-#include <numbers>
 #include <optional>
 #include <set>
 
@@ -25,7 +24,6 @@
 namespace cueball {
 
 namespace {
-
 
 using Json = nlohmann::json;
 

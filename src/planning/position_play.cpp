@@ -478,7 +478,7 @@ PositionPlanResult plan_shot_for_position(const Scenario& table_state, const Pos
   if (q.depth < 1 || q.depth > kMaxPositionDepth)
     throw InvalidArgument("depth", static_cast<double>(q.depth), "[1, " + std::to_string(kMaxPositionDepth) + "]",
                           "shots looked ahead");
-  if (q.depth > kMaxWindowsDepth && q.valuation == LeaveValuation::windows)
+  if (q.depth > max_position_depth(q.valuation))
     throw InvalidArgument("depth", static_cast<double>(q.depth), "[1, " + std::to_string(kMaxWindowsDepth) + "]",
                           "shots looked ahead with valuation windows (deeper: ghost_ball)");
   if (q.candidate_noisy_leaves < 0 || q.candidate_noisy_leaves > kMaxPositionNoisyLeaves)

@@ -158,6 +158,12 @@ enum class LeaveValuation : unsigned char {
   /// strokes are played once each instead of planned (header comment).
   ghost_ball,
 };
+
+/// The deepest lookahead a valuation allows: kMaxWindowsDepth with windows,
+/// kMaxPositionDepth with ghost_ball.
+inline constexpr int max_position_depth(LeaveValuation valuation) {
+  return valuation == LeaveValuation::windows ? kMaxWindowsDepth : kMaxPositionDepth;
+}
 /// "windows", "ghost_ball".
 const char* to_string(LeaveValuation valuation);
 std::optional<LeaveValuation> leave_valuation_from_string(std::string_view name);

@@ -684,6 +684,7 @@ struct Options {
   std::optional<LeaveValuation> valuation;  // --valuation
   std::optional<int> finalists;             // --finalists
   std::optional<int> varied_shots;          // --varied-shots
+  std::optional<bool> game_ball_combinations;  // --game-ball-combinations
   double seconds = 0.0;                     // --seconds: AgentOptions::seconds (0: none)
   bool in_hand_planner = true;   // the run-outs' first cue ball placed by plan_ball_in_hand, not by the rule
   bool real_break = false;       // --break recommended: the game's own break, the run-out only after a made one
@@ -701,6 +702,7 @@ struct Options {
     if (valuation) a.position_valuation = *valuation;
     if (finalists) a.position_finalists = *finalists;
     if (varied_shots) a.position_varied_shots = *varied_shots;
+    if (game_ball_combinations) a.game_ball_combinations = *game_ball_combinations;
     a.seconds = seconds;
     if (kinds) a.kinds = *kinds;
     if (fallback_kinds) a.fallback_kinds = *fallback_kinds;
@@ -718,7 +720,7 @@ void usage() {
       "                                 [--in-hand rule|planner] [--break rule|recommended] [--kinds LIST]\n"
       "                                 [--fallback-kinds LIST] [--agent NAME] [--noisy-leaves N]\n"
       "                                 [--candidate-noisy-leaves N] [--depth D] [--valuation V] [--finalists F]\n"
-      "                                 [--varied-shots N] [--seconds S]\n"
+      "                                 [--varied-shots N] [--seconds S] [--game-ball-combinations on|off]\n"
       "                                 [--json FILE] [--layouts-out DIR]\n"
       "The shot planner against a ghost-ball baseline and an exhaustive grid search (docs/planner-benchmark.md).\n"
       "  --suite S                single, runout or all (default all)\n"
@@ -745,6 +747,9 @@ void usage() {
       "                           strongest %d, the others 3)\n"
       "  --varied-shots N         position play: the feasible shots whose spin and speed variants are candidate\n"
       "                           leaves, [1, %d] (default: the agent's; strongest %d, the others 3)\n"
+      "  --game-ball-combinations on|off  the 9 by a combination through the ball on where it beats the\n"
+      "                           run-out (AgentOptions::game_ball_combinations) (default: the agent's;\n"
+      "                           strongest on, the others off)\n"
       "  --seconds S              the run-outs' decisions under a wall-clock budget, [0, 3600] s\n"
       "                           (AgentOptions::seconds: rounds from 500 runs up to the agent's; default 0: none)\n"
       "  --in-hand H              the run-outs' cue ball in hand after the break: planner (plan_ball_in_hand,\n"
@@ -793,7 +798,8 @@ Options parse(int argc, char** argv) {
     }
     static const char* const known[] = {"--suite",  "--layouts", "--racks", "--repeats", "--seed", "--planner-simulations",
                                         "--position", "--kinds", "--fallback-kinds", "--threads", "--json", "--layouts-out",
-                                        "--in-hand", "--break", "--agent", "--noisy-leaves", "--candidate-noisy-leaves", "--depth", "--valuation", "--finalists", "--varied-shots", "--seconds"};
+                                        "--in-hand", "--break", "--agent", "--noisy-leaves", "--candidate-noisy-leaves", "--depth", "--valuation", "--finalists", "--varied-shots", "--seconds",
+                                        "--game-ball-combinations"};
     if (std::find_if(std::begin(known), std::end(known), [&](const char* k) { return flag == k; }) == std::end(known))
       kFlags.bad("flag", flag,
                "--suite, --layouts, --racks, --repeats, --seed, --planner-simulations, --position, --kinds, "
@@ -826,6 +832,9 @@ Options parse(int argc, char** argv) {
       o.finalists = static_cast<int>(kFlags.integer(flag, value, 1, kMaxPositionFinalists));
     } else if (flag == "--varied-shots") {
       o.varied_shots = static_cast<int>(kFlags.integer(flag, value, 1, kMaxPositionVariedShots));
+    } else if (flag == "--game-ball-combinations") {
+      if (value != "on" && value != "off") kFlags.bad(flag, value, "on, off");
+      o.game_ball_combinations = value == "on";
     } else if (flag == "--valuation") {
       o.valuation = leave_valuation_from_string(value);
       if (!o.valuation) kFlags.bad(flag, value, leave_valuation_names());

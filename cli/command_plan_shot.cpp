@@ -28,6 +28,7 @@ struct PlanShotFlags {
   std::string scenario;
   std::optional<int> ball;
   std::string targets;            // "1,3,5": the legal targets, instead of --ball
+  std::optional<int> ball_on;     // PlanRequest::ball_on: the ball the cue ball must meet first
   std::string pocket = "any";
   std::string kinds = "direct,bank";
   std::string noise = "tournament";
@@ -118,6 +119,7 @@ void run_plan_shot(const PlanShotFlags& f, std::ostream& out, std::ostream& err)
   else throw UsageError("--noise = " + quote_input(f.noise) + " is not known; allowed: tournament, none, scenario");
   q.noise = with_sigma_flags(f.sigma, q.noise, s.settings.parameters.ball.radius);
   q.call_shot = f.pocket == "called";
+  q.ball_on = f.ball_on;
   if (f.pocket != "any" && f.pocket != "called") {
     std::string names;
     for (std::size_t k = 0; k < s.table.pockets.size(); ++k) {
@@ -206,6 +208,7 @@ void run_plan_shot(const PlanShotFlags& f, std::ostream& out, std::ostream& err)
     // The library's "target = 4 ..." is the flag's "--ball = 4 ...", "next = ..." is "--next = ...".
     const std::string message = e.what();
     if (e.field() == "target" && message.rfind("target", 0) == 0) throw UsageError("--ball" + message.substr(6));
+    if (e.field() == "ball_on" && message.rfind("ball_on", 0) == 0) throw UsageError("--ball-on" + message.substr(7));
     if (e.field() == "targets") throw UsageError("--targets = " + quote_input(f.targets) + ": " + message);
     if (e.field() == "next" && message.rfind("next", 0) == 0) throw UsageError("--next" + message.substr(4));
     if (e.field() == "region") throw UsageError("--region = " + quote_input(f.region) + ": " + message);
@@ -293,6 +296,10 @@ Command add_plan_shot_command(CLI::App& app) {
   sub->add_option("--targets", flags->targets,
                   "Ids of the legal targets, comma-separated (e.g. 1,3,5), instead of --ball: the plan pots any one\n"
                   "of them, the best shot of all");
+  sub->add_option("--ball-on", flags->ball_on,
+                  "Id of the ball the cue ball must meet first (9-ball's and 10-ball's lowest ball, WPA 6.2): the\n"
+                  "ball pots by the kinds asked for but combination, another target only by a combination through\n"
+                  "it (give --kinds combination)");
   sub->add_option("--pocket", flags->pocket,
                   "Pocket name (e.g. top-right); any (a pot in any pocket counts, as in 9-ball); or called (any\n"
                   "pocket may be planned, but each shot's pot counts only in its own pocket: a call shot, WPA 1.6)")

@@ -263,6 +263,28 @@ TEST(CliPlanShot, KindsKickAndCombinationArePlannedAndSaidInTheJson) {
   EXPECT_NE(text.out.find("kick off the "), std::string::npos) << text.out;
 }
 
+TEST(CliPlanShot, BallOnPlaysTheTargetOnlyThroughIt) {
+  const TempDir dir;
+  const std::string scenario = dir.write("walled.json", kWalled);
+  const CliRun free = run_cli({"plan-shot", scenario, "--ball", "1", "--kinds", "combination", "--simulations",
+                               "1000", "--json"});
+  ASSERT_EQ(free.status, 0) << free.err;
+  const int via = nlohmann::json::parse(free.out)["intermediate_ball"].get<int>();
+  const CliRun r = run_cli({"plan-shot", scenario, "--ball", "1", "--kinds", "combination", "--ball-on",
+                            std::to_string(via), "--simulations", "1000", "--json"});
+  ASSERT_EQ(r.status, 0) << r.err;
+  const nlohmann::json j = nlohmann::json::parse(r.out);
+  EXPECT_EQ(j["intermediate_ball"], via);
+  for (const auto& a : j["alternatives"]) EXPECT_EQ(a["intermediate_ball"], via);
+  // The 1 itself the ball on: no combination may meet another ball first.
+  const CliRun none = run_cli({"plan-shot", scenario, "--ball", "1", "--kinds", "combination", "--ball-on", "1"});
+  EXPECT_EQ(none.status, 3) << none.err;
+  const CliRun bad = run_cli({"plan-shot", scenario, "--ball", "1", "--ball-on", "42"});
+  EXPECT_EQ(bad.status, 2) << bad.err;
+  EXPECT_EQ(count_lines(bad.err), 1) << bad.err;
+  EXPECT_NE(bad.err.find("--ball-on = 42 is not the id of a ball on the table"), std::string::npos) << bad.err;
+}
+
 TEST(CliPlanShot, AnInfeasibleLayoutExits3WithOneLine) {
   const TempDir dir;
   const std::string scenario = dir.write("boxed.json", kBoxedIn);

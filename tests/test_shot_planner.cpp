@@ -572,6 +572,56 @@ TEST(ShotPlanner, ACombinationsSuccessNeedsTheIntermediateBallFirst) {
   EXPECT_LE(std::abs(p - independent), 3.0 * se + 1e-9) << p << " vs " << independent;
 }
 
+// PlanRequest::ball_on (the rotation games' lowest ball, WPA 6.2): the same
+// dead combination. With the 2 the ball on, the 1 is played only through
+// the 2, and every shot found (the chosen and each alternative) meets the
+// 2 first; the 1 by its other kinds alone has nothing; with the 1 the ball
+// on, the combination through the 2 (which the plain request finds) is
+// refused, since the cue ball would meet the 2 first.
+TEST(ShotPlanner, TheBallOnIsMetFirstAndOtherTargetsGoOnlyByACombinationThroughIt) {
+  const Scenario table = layout({});
+  const Vec2 u = unit(Vec2{1.0, 1.0}), n{-u.y, u.x};
+  const Vec2 O = pocket_centre(table, "top-right") - 0.35 * u;
+  const Vec2 A = O - 0.15 * u + 0.004 * n;
+  const Vec2 C = A - 0.5 * rotated(u, 10.0);
+  const Scenario s = layout({{0, C}, {1, O}, {2, A}});
+  PlanRequest q;
+  q.target = 1;
+  q.kinds = {ShotKind::direct, ShotKind::bank, ShotKind::combination};
+  q.ball_on = 2;
+  q.seed = 6;
+  const ShotPlanResult plan = plan_shot(s, q);
+  ASSERT_EQ(plan.shot.kind, ShotKind::combination);
+  EXPECT_EQ(plan.shot.intermediate_ball, 2);
+  for (const PlannedShot& alt : plan.alternatives) {
+    EXPECT_EQ(alt.kind, ShotKind::combination);
+    EXPECT_EQ(alt.intermediate_ball, 2);
+  }
+  EXPECT_EQ(first_contact(replay(s, plan, q), 0).ball, 2);
+  q.kinds = {ShotKind::direct, ShotKind::bank};
+  EXPECT_THROW(plan_shot(s, q), NoFeasibleShot);
+  q.ball_on = 1;
+  q.kinds = {ShotKind::combination};
+  try {
+    plan_shot(s, q);
+    ADD_FAILURE() << "expected no combination through the 2 with the 1 the ball on";
+  } catch (const NoFeasibleShot& e) {
+    EXPECT_NE(std::string(e.what()).find("no candidate of the requested kinds"), std::string::npos) << e.what();
+    EXPECT_EQ(e.simulations(), 0);
+  }
+  q.ball_on.reset();
+  EXPECT_EQ(plan_shot(s, q).shot.intermediate_ball, 2);
+}
+
+TEST(ShotPlanner, ABallOnNotOnTheTableOrTheCueBallIsRefusedNamingTheField) {
+  const Scenario s = corner_shot(0.0);
+  PlanRequest q;
+  q.ball_on = 7;
+  expect_invalid(s, q, "ball_on");
+  q.ball_on = 0;
+  expect_invalid(s, q, "ball_on");
+}
+
 // Regression (docs/planner-benchmark.md, run-out rack 270): the 1 ball lies
 // frozen to the right rail, so its bank off that rail has a bank point on
 // the ball itself; the ghost ball's direction was 0/0 and plan_shot threw

@@ -1135,6 +1135,7 @@ def plan_shot(
     in_hand: bool = False,
     region: tuple[_Float, _Float, _Float, _Float] | str | None = None,
     valuation: str = "windows",
+    ball_on: _Int | None = None,
 ) -> dict[str, Any]:
     """The strike that pots ball `target`, or any ball of `targets` (the legal targets; give one of
     the two) (cueball plan-shot): the dict of `plan-shot --json`
@@ -1145,7 +1146,8 @@ def plan_shot(
     only), predicted, alternatives, rejected) and `scenario`, the one key the CLI has not: the Scenario with the
     planned cue (in each alternative too). pocket 'any' (a pot in any pocket counts), 'called' (a call
     shot as in 8-ball and 10-ball: each shot's pot counts only in the pocket it aims at), a pocket's name
-    or index. noise 'tournament', 'none', 'scenario' or a dict of sigmas
+    or index. ball_on: the ball the cue ball must meet first (9-ball's and 10-ball's lowest; another
+    target is then played only by a combination through it). noise 'tournament', 'none', 'scenario' or a dict of sigmas
     as the scenario's "noise" (speed m/s, aim_deg, elevation_deg, side, height ball radii); raises
     NoFeasibleShot when nothing pots. position=True plays for position (plan-shot --position):
     next_targets: the next shots' legal targets in turn ([[2], [3], ...] for 9-ball, [[9, ..., 15], [8]]

@@ -110,7 +110,8 @@ void bind_shot_planner(py::module_& m) {
          const py::object& noise, std::uint64_t seed, long long simulations, double side, std::optional<double> height,
          bool position, std::optional<int> next, std::optional<std::vector<std::vector<int>>> next_targets,
          long long next_simulations, bool in_hand,
-         std::optional<std::variant<std::string, std::array<double, 4>>> region, const std::string& valuation) {
+         std::optional<std::variant<std::string, std::array<double, 4>>> region, const std::string& valuation,
+         std::optional<int> ball_on) {
         if (simulations < cueball::kMinPlanSimulations || simulations > cueball::kMaxPlanSimulations)
           throw cueball::InvalidArgument("simulations", static_cast<double>(simulations),
                                          "[" + std::to_string(cueball::kMinPlanSimulations) + ", " +
@@ -123,6 +124,7 @@ void bind_shot_planner(py::module_& m) {
         set_targets(target, targets, q);
         q.pocket = pocket_index(pocket, *s);
         q.call_shot = py::isinstance<py::str>(pocket) && pocket.cast<std::string>() == "called";
+        q.ball_on = ball_on;
         q.kinds = shot_kinds(kinds);
         q.noise = noise_model(noise, *s);
         q.seed = seed;
@@ -190,7 +192,7 @@ void bind_shot_planner(py::module_& m) {
       "kinds"_a = std::vector<std::string>{"direct", "bank"}, "noise"_a = "tournament", "seed"_a = 0,
       "simulations"_a = 4000, "side"_a = 0.0, "height"_a = py::none(), "position"_a = false, "next"_a = py::none(),
       "next_targets"_a = py::none(), "next_simulations"_a = cueball::kMinPlanSimulations, "in_hand"_a = false, "region"_a = py::none(),
-      "valuation"_a = "windows",
+      "valuation"_a = "windows", "ball_on"_a = py::none(),
       "Plans the strike that pots ball `target` (cueball plan-shot, shot_planner.hpp), or any ball of\n"
       "`targets` (a list of ids, the legal targets: plan-shot --targets; give one of the two; each\n"
       "shot's dict says its `target`): ghost-ball\n"
@@ -200,7 +202,9 @@ void bind_shot_planner(py::module_& m) {
       "simulations. scenario: as simulate()'s (its own cue strike is ignored; None: the built-in\n"
       "rack); pocket: 'any', 'called' (a call shot, WPA 1.6: each shot's pot counts only in the pocket\n"
       "it aims at, as 8-ball and 10-ball score it), a pocket's name or index; kinds: any of 'direct', 'bank', 'kick',\n"
-      "'combination'; noise: 'tournament'\n"
+      "'combination'; ball_on: the id of the ball the cue ball must meet first (9-ball's and 10-ball's\n"
+      "lowest, WPA 6.2: another target is then played only by a combination through it; plan-shot\n"
+      "--ball-on); noise: 'tournament'\n"
       "(sigma 0.125 deg aim, 0.1 deg elevation, 0.075 m/s, 0.5 mm tip), 'none', 'scenario' (the\n"
       "scenario's own \"noise\") or a dict of sigmas as the scenario's \"noise\" takes them (speed m/s,\n"
       "aim_deg, elevation_deg, side and height in ball radii; missing keys 0); simulations: the budget of engine runs, [500, 1e6]; side, height:\n"

@@ -92,6 +92,15 @@ class PlanShotTest(unittest.TestCase):
         ids = list(r.balls["id"])
         self.assertTrue(r.balls["pocketed"][ids.index(1)])
         self.assertFalse(r.balls["pocketed"][ids.index(0)])
+        via = cueball.plan_shot(walled, 1, kinds=["combination"], simulations=1000)["intermediate_ball"]
+        through = cueball.plan_shot(walled, 1, kinds=["combination"], ball_on=via, simulations=1000)
+        self.assertEqual(through["intermediate_ball"], via)
+        self.assertTrue(all(a["intermediate_ball"] == via for a in through["alternatives"]))
+        with self.assertRaises(cueball.NoFeasibleShot):
+            cueball.plan_shot(walled, 1, kinds=["combination"], ball_on=1, simulations=500)
+        with self.assertRaises(ValueError) as e:
+            cueball.plan_shot(walled, 1, ball_on=42)
+        self.assertIn("ball_on = 42", str(e.exception))
         with self.assertRaises(ValueError) as e:
             cueball.plan_shot(walled, 1, kinds=["kick", "jump"])
         self.assertIn("kinds", str(e.exception))

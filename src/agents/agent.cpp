@@ -48,6 +48,7 @@ AgentOptions strongest_agent() {
   o.position_finalists = kStrongestFinalists;
   o.position_varied_shots = kStrongestVariedShots;
   o.fallback_kinds = {ShotKind::kick};
+  o.game_ball_combinations = true;
   return o;
 }
 

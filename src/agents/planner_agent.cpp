@@ -83,7 +83,8 @@ std::string fmt_spot(Vec2 p) {
 std::string describe(const PlannedShot& s) {
   char b[160];
   std::snprintf(b, sizeof b, " (window %.3f, screen %.3f)", s.window_probability, s.success_probability);
-  return std::string(to_string(s.kind)) + " " + std::to_string(s.target) + " " + s.pocket_name +
+  return std::string(to_string(s.kind)) + " " + std::to_string(s.target) +
+         (s.intermediate_ball >= 0 ? " via " + std::to_string(s.intermediate_ball) : "") + " " + s.pocket_name +
          (s.cushion.empty() ? "" : " off " + s.cushion) + b;
 }
 
@@ -242,6 +243,53 @@ bool pot(Turn& t) {
   return false;
 }
 
+// Step (AgentOptions::game_ball_combinations): the game ball by a
+// combination through the ball on, played where no pot was found or where
+// its chance beats the run-out's from the pot found (that pot's chance
+// times its leave's value, times kRunOutShotChance for each ball left after
+// the shots they cover: run_out_chance()) and is at least kSafetyThreshold
+// (below it the safety planner would weigh a safety against the
+// combination, not against the sure pot it replaced: a leave valued 0 by
+// the ghost ball may still have a bank). True when it is played.
+bool game_ball_combination(Turn& t, bool potted) {
+  if (!t.options.game_ball_combinations) return false;
+  long long simulations = 0;
+  std::optional<GameBallCombination> c = plan_game_ball_combination(
+      t.state, t.legal, plan_request(t, t.targets, {ShotKind::combination}, t.seed), simulations);
+  t.choice.simulations += simulations;
+  if (!c) return false;
+  const double p = c->shot.success_probability;
+  if (potted) {
+    const bool leave_valued = t.choice.next_success_probability >= 0.0;
+    const int covered = 1 + (leave_valued ? t.options.position_depth : 0);
+    const double run_out =
+        run_out_chance(t.choice.success_probability, leave_valued ? t.choice.next_success_probability : 1.0,
+                       static_cast<int>(object_balls(t.state).size()) - covered);
+    char b[160];
+    std::snprintf(b, sizeof b, "the game ball by a combination %.3f against a run-out %.3f", p, run_out);
+    if (p <= run_out || p < kSafetyThreshold) {  // under 1/2 a pot found is kept (the safety planner's line)
+      t.choice.detail += std::string("; ") + b;
+      return false;
+    }
+    t.choice.detail = std::string(b) + "; instead of " + t.choice.detail;
+  } else {
+    t.choice.detail = "no pot of the ball on: " + t.choice.detail;
+  }
+  t.choice.kind = PlannerChoice::Kind::pot;
+  t.choice.action = Action{};
+  t.choice.action.strike = c->shot.strike;
+  t.choice.action.place = c->place;
+  t.choice.success_probability = p;
+  t.choice.next_success_probability = -1.0;  // the rack is won: no next shot
+  t.choice.detail = (c->place ? fmt_spot(*c->place) : std::string()) + describe(c->shot) + " (" + t.choice.detail + ")";
+  t.choice.considered.insert(t.choice.considered.begin(), ConsideredOption{describe(c->shot), p, -1.0});
+  if (t.legal.call_required) {
+    t.choice.action.called_ball = c->shot.target;
+    t.choice.action.called_pocket = c->shot.pocket;
+  }
+  return true;
+}
+
 // Step: nothing pots: a plain hit of a target (from the ghost-ball spot, a
 // random free spot, or where the cue ball lies, when in hand), announced as
 // a push-out when one may be.
@@ -374,7 +422,8 @@ PlannerChoice planner_choice(const AgentOptions& options, const GameState& state
   }
   t.targets = shot_targets(state, t.legal);
   if (t.targets.empty()) throw InvalidArgument("state", "no ball on to play at");
-  if (!pot(t)) safety(t);
+  const bool potted = pot(t);
+  if (!game_ball_combination(t, potted) && !potted) safety(t);
   return t.choice;
 }
 

@@ -217,7 +217,8 @@ void scan_for_candidates(SearchState& st) {
   if (!scan_kinds) return;
   const int scan_runs = kScanAims * static_cast<int>(kScanSpeeds.size());
   for (std::size_t target : st.targets)
-    if (st.trials.runs() + scan_runs + static_cast<int>(kScanCandidates) * kCandidateRuns <= q.simulations * 3 / 5)
+    if (kind_allowed(st.s, q, target, ShotKind::direct) &&
+        st.trials.runs() + scan_runs + static_cast<int>(kScanCandidates) * kCandidateRuns <= q.simulations * 3 / 5)
       scan_target(st, target);
 }
 

@@ -242,6 +242,7 @@ void combination_candidates(const Geometry& g, const Candidate& base, std::vecto
   std::vector<Candidate> combinations;
   for (std::size_t i = 0; i < g.s.balls.size(); ++i) {
     if (i == g.cue || i == g.target) continue;
+    if (g.q.ball_on && g.s.balls[i].id != *g.q.ball_on) continue;  // it must be met first (PlanRequest::ball_on)
     const Vec2 A = g.s.balls[i].state.position;
     if (norm(GT - A) < 1e-9) continue;
     Candidate c = base;
@@ -361,6 +362,11 @@ void kind_candidates(const Scenario& s, const PlanRequest& q, std::size_t cue, s
 
 }  // namespace
 
+bool kind_allowed(const Scenario& s, const PlanRequest& q, std::size_t target, ShotKind kind) {
+  if (!q.ball_on) return true;
+  return (s.balls[target].id == *q.ball_on) == (kind != ShotKind::combination);
+}
+
 std::vector<double> tip_heights(const PlanRequest& q) {
   if (q.height) return {*q.height};
   return {0.0, -0.3, 0.3};
@@ -383,7 +389,7 @@ void geometric_candidates(SearchState& st) {
     for (std::size_t k = 0; k < st.s.table.pockets.size(); ++k) {
       if (q.pocket && static_cast<std::size_t>(*q.pocket) != k) continue;
       for (ShotKind kind : kShotKinds)
-        if (std::find(q.kinds.begin(), q.kinds.end(), kind) != q.kinds.end())
+        if (std::find(q.kinds.begin(), q.kinds.end(), kind) != q.kinds.end() && kind_allowed(st.s, q, target, kind))
           kind_candidates(st.s, q, st.cue, target, k, kind, st.candidates, st.result.rejected);
     }
   std::stable_sort(st.candidates.begin(), st.candidates.end(),

@@ -221,6 +221,11 @@ std::pair<std::size_t, std::vector<std::size_t>> validate_request(const Scenario
 
 // --- 1-2. candidates (candidates.cpp) ---
 
+// Whether a shot of `kind` at the ball with index `target` may be played
+// under PlanRequest::ball_on: the ball on by any kind but a combination,
+// another target only by a combination through it; without ball_on, always.
+bool kind_allowed(const Scenario& s, const PlanRequest& q, std::size_t target, ShotKind kind);
+
 // The tip heights tried: the request's, or centre ball, then draw, then follow.
 std::vector<double> tip_heights(const PlanRequest& q);
 

@@ -68,6 +68,14 @@ std::pair<std::size_t, std::vector<std::size_t>> validate_request(const Scenario
                                  " is not the id of a ball on the table; allowed: " + ids);
   }
   std::vector<std::size_t> targets = target_indices(s, q, cue, ids);
+  if (q.ball_on) {
+    const std::size_t on = index_of(s.balls, *q.ball_on);
+    if (on == s.balls.size())
+      throw InvalidArgument("ball_on", "ball_on = " + std::to_string(*q.ball_on) +
+                                           " is not the id of a ball on the table; allowed: " + ids);
+    if (on == cue)
+      throw InvalidArgument("ball_on", "ball_on = " + std::to_string(*q.ball_on) + " is the cue ball; choose another ball");
+  }
   if (s.table.pockets.empty()) throw InvalidArgument("pocket", "the table has no pockets");
   if (q.pocket && (*q.pocket < 0 || static_cast<std::size_t>(*q.pocket) >= s.table.pockets.size()))
     throw InvalidArgument("pocket", static_cast<double>(*q.pocket),
@@ -108,7 +116,8 @@ void throw_no_feasible_shot(const SearchState& st) {
   if (why.empty()) why = "no candidate of the requested kinds";
   throw NoFeasibleShot("no feasible shot pots " + targets_text(target_ids(st.q)) + " (" +
                        std::to_string(rejected.size()) + " candidates" + (summary.empty() ? "" : ": " + summary) +
-                       "): " + why);
+                       "): " + why,
+                       st.trials.runs());
 }
 
 }  // namespace planning

@@ -113,6 +113,11 @@ struct AgentOptions {
   /// kick when nothing else pots. Only when these fail too does it play
   /// safe_hit().
   std::vector<ShotKind> fallback_kinds{ShotKind::kick};
+  /// 9-ball and 10-ball (planner, safety_planner): also plan the game ball
+  /// by a combination through the ball on (plan_game_ball_combination()),
+  /// played instead of the pot of the ball on where its chance beats that
+  /// pot's run-out chance (run_out_chance()).
+  bool game_ball_combinations = false;
 };
 
 /// Throws InvalidArgument naming the field ("simulations", ...).
@@ -328,6 +333,58 @@ std::optional<Vec2> ghost_ball_in_hand_spot(const Scenario& table, int cue_ball,
 /// legal_actions(state); a caller or a test may give its own, e.g. a call
 /// or a nomination the state's rules do not ask for yet).
 Action ghost_ball_action(const GameState& state, const LegalActions& legal, std::uint64_t seed);
+
+// ------------------------------------------------------------------ the game ball by a combination (game_ball_combination.cpp)
+
+/// The ball whose legal pot wins the rack: 9-ball's 9, 10-ball's 10 (WPA
+/// Rules of Play, sections 2 and 9, opening paragraphs); none in the other
+/// games.
+std::optional<int> game_ball(const GameState& state);
+
+/// The strongest agent's chance of potting a ball on a run-out, measured:
+/// 9,567 of the 10,293 shots it played on 1,620 run-out racks
+/// (docs/planner-benchmark.md, "The game ball by a combination").
+inline constexpr double kRunOutShotChance = 0.93;
+/// The chance of running out from a pot of chance `shot` whose leave's
+/// value is `next` (the next shots' chances, Leave::next_success_probability),
+/// with `shots_after` more pots to make after those, each at
+/// kRunOutShotChance: shot x next x kRunOutShotChance^shots_after.
+double run_out_chance(double shot, double next, int shots_after);
+
+/// The largest cut of the ball on on the game ball that an in-hand
+/// combination spot is offered for, degrees.
+inline constexpr double kMaxInHandCombinationCutDeg = 45.0;
+/// The in-hand spots whose combination is planned in full.
+inline constexpr std::size_t kCombinationInHandSpots = 2;
+
+/// The cue ball's spots in hand for a combination of `target` through
+/// `ball_on`: for each pocket, the ball on sent straight at the target's
+/// ghost ball (the target's centre less two radii towards the pocket's
+/// centre) with the cue ball `back` behind the ball on's own ghost ball on
+/// that line (no cut on the ball on), where the ball on's cut on the target
+/// is at most kMaxInHandCombinationCutDeg, the spot is a free spot inside
+/// `region`, and the three straight paths are clear of the other balls by
+/// two radii; the easiest first (the cosine of that cut over the two
+/// balls' paths). Empty when none qualifies.
+std::vector<Vec2> combination_in_hand_spots(const Scenario& table, int cue_ball, int ball_on, int target,
+                                            const PlacementRegion& region, double back = kGhostBallInHandBack);
+
+/// A combination on the game ball planned for the player to act.
+struct GameBallCombination {
+  PlannedShot shot;           ///< plan_shot()'s, its success probability on fresh draws
+  std::optional<Vec2> place;  ///< in hand: the cue ball's spot
+};
+
+/// The game ball by a combination through the ball on (9-ball, 10-ball,
+/// the game ball on the table and not itself the ball on): plan_shot() of
+/// the game ball with PlanRequest::ball_on the ball on, kinds
+/// {combination}, a call shot where the rules ask for a call, and `q`'s
+/// noise, seed and budget; from where the cue ball lies, or in hand from
+/// the first kCombinationInHandSpots of combination_in_hand_spots(), the
+/// likeliest kept. None in another game or state, or when nothing is
+/// feasible. `simulations` gains the engine runs spent.
+std::optional<GameBallCombination> plan_game_ball_combination(const GameState& state, const LegalActions& legal,
+                                                              PlanRequest q, long long& simulations);
 
 // ------------------------------------------------------------------ the planner agent (planner_agent.cpp)
 

@@ -142,6 +142,13 @@ namespace cueball {
 class NoFeasibleShot : public std::runtime_error {
  public:
   using std::runtime_error::runtime_error;
+  /// `simulations`: the engine runs spent before the plan gave up.
+  NoFeasibleShot(const std::string& what, int simulations) : std::runtime_error(what), simulations_(simulations) {}
+  /// The engine runs spent before the plan gave up; -1 when not known.
+  int simulations() const { return simulations_; }
+
+ private:
+  int simulations_ = -1;
 };
 
 /// direct: the cue ball pots the target; bank: the target goes in off one
@@ -210,6 +217,14 @@ struct PlanRequest {
   /// it; false: a pot in any pocket counts. Its success estimates, and the
   /// leaves position play scores, change; the candidates do not.
   bool call_shot = false;
+  /// The ball the cue ball must meet first (the rotation games' "lowest
+  /// numbered ball on the table", WPA Rules of Play 2.x for 9-ball, 9.x for
+  /// 10-ball). Given: a target other than it is played only by a
+  /// combination through it (the cue ball sends it into the target; kinds
+  /// must include combination), and a shot at it only by the other kinds (a
+  /// combination through another ball would meet that ball first, a foul,
+  /// WPA 6.2); none: every kind as asked, a combination through any ball.
+  std::optional<int> ball_on;
   std::vector<ShotKind> kinds{ShotKind::direct, ShotKind::bank};
   CueStrikeNoise noise = tournament_noise();  ///< m/s, rad, rad, m, m
   std::uint64_t seed = 0;

@@ -311,6 +311,19 @@ Decision decision_by_policy(const std::vector<Decision>& open, bool table_good) 
   return open.front();
 }
 
+Scenario with_cue_ball_at(const Scenario& table, int cue_ball, Vec2 spot) {
+  Scenario out = table;
+  SimulationBall b;
+  b.id = cue_ball;
+  b.name = "cue";
+  if (const SimulationBall* lying = find_ball(table.balls, cue_ball)) b = *lying;
+  b.state = BallState{};
+  b.state.position = spot;
+  std::erase_if(out.balls, [&](const SimulationBall& x) { return x.id == cue_ball; });
+  out.balls.insert(out.balls.begin(), b);
+  return out;
+}
+
 std::vector<int> shot_targets(const GameState& state, const LegalActions& legal) {
   const Scenario& table = state.table;
   const auto on_table_only = [&](const std::vector<int>& ids) {

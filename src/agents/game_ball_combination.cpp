@@ -35,20 +35,6 @@ struct CombinationSpot {
   double ease = 0.0;  // cos(the ball on's cut on the game ball) / (its path + the game ball's), 1/m
 };
 
-// The table with the cue ball (id `cue`) at `spot`, first in the ball order.
-Scenario with_cue_ball_at(const Scenario& table, int cue, Vec2 spot) {
-  Scenario out = table;
-  SimulationBall b;
-  b.id = cue;
-  b.name = "cue";
-  if (const SimulationBall* lying = find_ball(table.balls, cue)) b = *lying;
-  b.state = BallState{};
-  b.state.position = spot;
-  std::erase_if(out.balls, [&](const SimulationBall& x) { return x.id == cue; });
-  out.balls.insert(out.balls.begin(), b);
-  return out;
-}
-
 }  // namespace
 
 std::optional<int> game_ball(const GameState& state) {

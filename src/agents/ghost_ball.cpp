@@ -184,18 +184,7 @@ Action ghost_ball_action(const GameState& state, const LegalActions& legal, std:
                                kPlacementAttempts, *legal.ball_in_hand);
       if (!place && !cue) throw InvalidArgument("state", "no free spot for the cue ball in its region");
     }
-    if (place) {
-      SimulationBall b;
-      b.id = legal.cue_ball;
-      b.name = "cue";
-      if (cue) b = *cue;
-      b.state = BallState{};
-      b.state.position = *place;
-      table.balls.erase(std::remove_if(table.balls.begin(), table.balls.end(),
-                                       [&](const SimulationBall& x) { return x.id == legal.cue_ball; }),
-                        table.balls.end());
-      table.balls.insert(table.balls.begin(), b);
-    }
+    if (place) table = with_cue_ball_at(table, legal.cue_ball, *place);
   }
   Action a = ghost_shot(legal, table, targets);
   a.place = place;

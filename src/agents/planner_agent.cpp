@@ -181,18 +181,7 @@ void decide(Turn& t) {
   bool playable = !targets.empty();
   if (playable && then.ball_in_hand) {
     const std::optional<Vec2> spot = ghost_ball_in_hand_spot(table, then.cue_ball, targets, *then.ball_in_hand);
-    if (spot) {
-      SimulationBall cue;
-      cue.id = then.cue_ball;
-      cue.name = "cue";
-      if (const SimulationBall* b = find_ball(table.balls, then.cue_ball)) cue = *b;
-      cue.state = BallState{};
-      cue.state.position = *spot;
-      table.balls.erase(std::remove_if(table.balls.begin(), table.balls.end(),
-                                       [&](const SimulationBall& b) { return b.id == then.cue_ball; }),
-                        table.balls.end());
-      table.balls.insert(table.balls.begin(), cue);
-    }
+    if (spot) table = with_cue_ball_at(table, then.cue_ball, *spot);
   }
   playable = playable && find_ball(table.balls, then.cue_ball) != nullptr;
   double p = 0.0;
@@ -309,16 +298,7 @@ void safety(Turn& t) {
       if (!spot && !lying) throw InvalidArgument("state", "no free spot for the cue ball in its region");
     }
     if (spot) {
-      SimulationBall b;
-      b.id = cue;
-      b.name = "cue";
-      if (lying) b = *lying;
-      b.state = BallState{};
-      b.state.position = *spot;
-      table.balls.erase(std::remove_if(table.balls.begin(), table.balls.end(),
-                                       [&](const SimulationBall& x) { return x.id == cue; }),
-                        table.balls.end());
-      table.balls.insert(table.balls.begin(), b);
+      table = with_cue_ball_at(table, cue, *spot);
       t.choice.action.place = spot;
     }
   }

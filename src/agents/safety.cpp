@@ -30,20 +30,6 @@ constexpr double kDeg = std::numbers::pi / 180.0;
 
 bool contains(const std::vector<int>& v, int id) { return std::find(v.begin(), v.end(), id) != v.end(); }
 
-// The table with the cue ball (id `cue`) at `spot`, first in the ball order.
-Scenario with_cue_ball_at(const Scenario& table, int cue, Vec2 spot) {
-  Scenario out = table;
-  SimulationBall b;
-  b.id = cue;
-  b.name = "cue";
-  if (const SimulationBall* lying = find_ball(table.balls, cue)) b = *lying;
-  b.state = BallState{};
-  b.state.position = spot;
-  std::erase_if(out.balls, [&](const SimulationBall& x) { return x.id == cue; });
-  out.balls.insert(out.balls.begin(), b);
-  return out;
-}
-
 // The state as the player to act would shoot from it: a decision due is
 // taken as play from the table as it stands.
 GameState as_played(const GameState& state) {

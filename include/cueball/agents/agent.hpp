@@ -319,6 +319,11 @@ std::optional<GhostBallShot> likeliest_ghost_ball_shot(const Scenario& table, in
                                                        const std::vector<int>& targets,
                                                        double speed = kGhostBallSpeed);
 
+/// The table with the cue ball (id `cue_ball`) placed at `spot`, at rest
+/// and first in the ball order: its own parameters when it is on the table,
+/// else a ball named "cue". Where an agent places the cue ball in hand.
+Scenario with_cue_ball_at(const Scenario& table, int cue_ball, Vec2 spot);
+
 /// The ghost-ball agent's rule for the cue ball in hand: a straight-in on
 /// one of `targets`, the cue ball `back` behind the ghost ball on the line
 /// from the pocket through the ball (C = O - (2R + back) u), for every

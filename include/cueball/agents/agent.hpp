@@ -159,7 +159,8 @@ TimedRounds plan_in_time(const AgentOptions& options, const std::function<void(c
 /// outcomes besides the noise-free one, the candidates the spin and speed
 /// variants of the kStrongestVariedShots best shots, kStrongestDepth shots deep (the next pot's strokes played
 /// once each, the ball after it valued by its ghost-ball chance), a kick
-/// when nothing else pots; three-cushion:
+/// when nothing else pots, the game ball by a combination through the ball
+/// on where that beats the run-out (game_ball_combinations); three-cushion:
 /// carom_search at the same budget, without position play (which did not
 /// gain at equal runs). The ghost-ball valuation ran out as many 9-ball
 /// racks as the planner's window search (36 and 31 of 90) and played it
@@ -172,7 +173,9 @@ TimedRounds plan_in_time(const AgentOptions& options, const std::function<void(c
 /// without (docs/planner-benchmark.md, "Every candidate's leave valued under
 /// the noise"); with 6 finalists of the variants of 6 shots instead of 3 of
 /// 3, 0.591 against 0.546 (docs/planner-benchmark.md, "More shots varied,
-/// more finalists").
+/// more finalists"); with the game ball by a combination, 1,049 of 1,800
+/// racks not tuned on against 990 (docs/planner-benchmark.md, "The game
+/// ball by a combination").
 /// kStrongestPositionSimulations, the runs of a next-shot plan, are spent
 /// only with the windows valuation; position play is on while they are > 0.
 inline constexpr int kStrongestSimulations = 4000;

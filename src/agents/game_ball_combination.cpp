@@ -19,7 +19,6 @@
 
 #include "core/angles.hpp"
 #include "cueball/agents/agent.hpp"
-#include "cueball/planning/ghost_ball.hpp"
 
 namespace cueball {
 

@@ -217,9 +217,9 @@ struct PlanRequest {
   /// it; false: a pot in any pocket counts. Its success estimates, and the
   /// leaves position play scores, change; the candidates do not.
   bool call_shot = false;
-  /// The ball the cue ball must meet first (the rotation games' "lowest
-  /// numbered ball on the table", WPA Rules of Play 2.x for 9-ball, 9.x for
-  /// 10-ball). Given: a target other than it is played only by a
+  /// The ball the cue ball must meet first (the rotation games' lowest
+  /// numbered ball on the table: WPA Rules of Play 6.2, with sections 2
+  /// and 9 for 9-ball and 10-ball). Given: a target other than it is played only by a
   /// combination through it (the cue ball sends it into the target; kinds
   /// must include combination), and a shot at it only by the other kinds (a
   /// combination through another ball would meet that ball first, a foul,

@@ -173,8 +173,8 @@ TimedRounds plan_in_time(const AgentOptions& options, const std::function<void(c
 /// without (docs/planner-benchmark.md, "Every candidate's leave valued under
 /// the noise"); with 6 finalists of the variants of 6 shots instead of 3 of
 /// 3, 0.591 against 0.546 (docs/planner-benchmark.md, "More shots varied,
-/// more finalists"); with the game ball by a combination, 1,049 of 1,800
-/// racks not tuned on against 990 (docs/planner-benchmark.md, "The game
+/// more finalists"); with the game ball by a combination, 1,394 of 2,340
+/// racks not tuned on against 1,308 (docs/planner-benchmark.md, "The game
 /// ball by a combination").
 /// kStrongestPositionSimulations, the runs of a next-shot plan, are spent
 /// only with the windows valuation; position play is on while they are > 0.

@@ -493,17 +493,26 @@ TEST(ShotPlanner, EveryStraightCueBallPathBlockedIsSolvedAsAKickThatMeetsTheTarg
   EXPECT_GT(std::abs(plan.shot.geometric_aim_deg - std::atan2(d.y, d.x) / kDeg), 10.0);
 }
 
-TEST(ShotPlanner, ADeadCombinationIsSolvedAsACombination) {
-  // The 2 almost lined up behind the 1 towards the top-right pocket, the cue
-  // ball behind the 2: the 1's ghost ball for that pocket is where the 2 is,
-  // its other pockets too thin or behind the 2.
+// The 2 almost lined up behind the 1 towards the top-right pocket, the cue
+// ball behind the 2: the 1's ghost ball for that pocket is where the 2 is,
+// its other pockets too thin or behind the 2. u: towards the pocket; O, A:
+// the 1 and the 2.
+struct DeadCombination {
+  Scenario s;
+  Vec2 u, O, A;
+};
+DeadCombination dead_combination() {
   const Scenario table = layout({});
-  const double R = table.settings.parameters.ball.radius;
   const Vec2 u = unit(Vec2{1.0, 1.0}), n{-u.y, u.x};
   const Vec2 O = pocket_centre(table, "top-right") - 0.35 * u;
   const Vec2 A = O - 0.15 * u + 0.004 * n;
   const Vec2 C = A - 0.5 * rotated(u, 10.0);
-  const Scenario s = layout({{0, C}, {1, O}, {2, A}});
+  return {layout({{0, C}, {1, O}, {2, A}}), u, O, A};
+}
+
+TEST(ShotPlanner, ADeadCombinationIsSolvedAsACombination) {
+  const auto [s, u, O, A] = dead_combination();
+  const double R = s.settings.parameters.ball.radius;
   PlanRequest q;
   q.target = 1;
   q.kinds = {ShotKind::direct};
@@ -536,12 +545,7 @@ TEST(ShotPlanner, ACombinationsSuccessNeedsTheIntermediateBallFirst) {
   // first contact is the 2 and which pot the 1; an independent noisy batch
   // counted that way agrees, and counted with the 1 as first contact finds
   // no success at all.
-  const Scenario table = layout({});
-  const Vec2 u = unit(Vec2{1.0, 1.0}), n{-u.y, u.x};
-  const Vec2 O = pocket_centre(table, "top-right") - 0.35 * u;
-  const Vec2 A = O - 0.15 * u + 0.004 * n;
-  const Vec2 C = A - 0.5 * rotated(u, 10.0);
-  const Scenario s = layout({{0, C}, {1, O}, {2, A}});
+  const Scenario s = dead_combination().s;
   PlanRequest q;
   q.target = 1;
   q.kinds = {ShotKind::combination};
@@ -579,12 +583,7 @@ TEST(ShotPlanner, ACombinationsSuccessNeedsTheIntermediateBallFirst) {
 // on, the combination through the 2 (which the plain request finds) is
 // refused, since the cue ball would meet the 2 first.
 TEST(ShotPlanner, TheBallOnIsMetFirstAndOtherTargetsGoOnlyByACombinationThroughIt) {
-  const Scenario table = layout({});
-  const Vec2 u = unit(Vec2{1.0, 1.0}), n{-u.y, u.x};
-  const Vec2 O = pocket_centre(table, "top-right") - 0.35 * u;
-  const Vec2 A = O - 0.15 * u + 0.004 * n;
-  const Vec2 C = A - 0.5 * rotated(u, 10.0);
-  const Scenario s = layout({{0, C}, {1, O}, {2, A}});
+  const Scenario s = dead_combination().s;
   PlanRequest q;
   q.target = 1;
   q.kinds = {ShotKind::direct, ShotKind::bank, ShotKind::combination};

@@ -44,6 +44,7 @@ struct PlanShotFlags {
   std::optional<int> next;        // none: the lowest id left
   double next_simulations = kMinPlanSimulations;
   std::string valuation = "windows";  // PositionRequest::valuation
+  std::optional<int> game_ball;       // PositionRequest::game_ball
 };
 
 // The viewer page of the planned shot, noise-free, with its aim line and
@@ -151,6 +152,8 @@ void run_plan_shot(const PlanShotFlags& f, std::ostream& out, std::ostream& err)
                      leave_valuation_names());
   if (!position_play && *valuation != LeaveValuation::windows)
     throw UsageError("--valuation = " + quote_input(f.valuation) + " needs --position or --in-hand");
+  if (f.game_ball && *valuation != LeaveValuation::ghost_ball)
+    throw UsageError("--game-ball = " + std::to_string(*f.game_ball) + " needs --valuation ghost_ball");
   if (!f.in_hand && !f.region.empty()) throw UsageError("--region = " + quote_input(f.region) + " needs --in-hand");
   std::optional<PlacementRegion> region;
   if (const std::optional<PlacementRegion::Kind> kind = placement_region_from_string(f.region);
@@ -193,6 +196,7 @@ void run_plan_shot(const PlanShotFlags& f, std::ostream& out, std::ostream& err)
       p.next_target = f.next;
       p.next_simulations = static_cast<int>(f.next_simulations);
       p.valuation = *valuation;
+      p.game_ball = f.game_ball;
       if (f.in_hand) {
         in_hand = plan_ball_in_hand(s, BallInHandRequest{p, region});
         position = in_hand->plan;
@@ -211,6 +215,8 @@ void run_plan_shot(const PlanShotFlags& f, std::ostream& out, std::ostream& err)
     if (e.field() == "ball_on" && message.rfind("ball_on", 0) == 0) throw UsageError("--ball-on" + message.substr(7));
     if (e.field() == "targets") throw UsageError("--targets = " + quote_input(f.targets) + ": " + message);
     if (e.field() == "next" && message.rfind("next", 0) == 0) throw UsageError("--next" + message.substr(4));
+    if (e.field() == "game_ball" && message.rfind("game_ball", 0) == 0)
+      throw UsageError("--game-ball" + message.substr(9));
     if (e.field() == "region") throw UsageError("--region = " + quote_input(f.region) + ": " + message);
     throw;
   }
@@ -242,8 +248,11 @@ void run_plan_shot(const PlanShotFlags& f, std::ostream& out, std::ostream& err)
     line += ": ball " + std::to_string(position.next_target) + " next, ";
     const bool by_ghost_ball = f.valuation == to_string(LeaveValuation::ghost_ball);
     line += l.next_feasible ? (by_ghost_ball ? "ghost-ball P = " : "P = ") + fixed(l.next_success_probability, 3) +
-                                  " (" + l.next_kind + " into " +
-                                  l.next_pocket + ")"
+                                  " (" + l.next_kind +
+                                  (l.next_ball != position.next_target
+                                       ? " of ball " + std::to_string(l.next_ball) + " through it"
+                                       : std::string()) +
+                                  " into " + l.next_pocket + ")"
                             : "no feasible shot";
     if (l.noisy_leaves > 0)
       line += "; from " + std::to_string(l.noisy_leaves) + " noisy leaves " + fixed(l.noisy_next_window, 3);
@@ -336,6 +345,9 @@ Command add_plan_shot_command(CLI::App& app) {
                   "search on the exact simulation) or ghost_ball (the best straight pot's chance under the aim\n"
                   "noise from the geometry alone: no engine run, a decision in a fraction of the time)")
       ->capture_default_str();
+  sub->add_option("--game-ball", flags->game_ball,
+                  "With --valuation ghost_ball: id of a ball whose pot wins at once whichever ball is met first\n"
+                  "(9-ball's 9): a leave is also valued by its combination through the next ball");
   return [flags](std::ostream& out, std::ostream& err) { run_plan_shot(*flags, out, err); };
 }
 

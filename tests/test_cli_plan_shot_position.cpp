@@ -191,6 +191,31 @@ TEST(CliPlanShotPosition, ValuationGhostBallIsTheLibrarysPlan) {
   }
 }
 
+// --game-ball: the library's plan with PositionRequest::game_ball to the
+// bit; the 2 behind the 9 at a corner, so that the leave's next shot is the
+// 9 by a combination through the 2.
+TEST(CliPlanShotPosition, GameBallIsTheLibrarysPlan) {
+  const TempDir dir;
+  const std::string json = R"({"table": "pool_9ft", "balls": [{"id": 0, "position": [1.35, 0.75]},
+    {"id": 1, "position": [1.85, 0.45]}, {"id": 2, "position": [0.5, 0.5]}, {"id": 9, "position": [0.4, 0.4]}]})";
+  const std::string scenario = dir.write("nine.json", json);
+  const CliRun r = run_cli({"plan-shot", scenario, "--ball", "1", "--position", "--valuation", "ghost_ball",
+                            "--game-ball", "9", "--simulations", "1000", "--json"});
+  ASSERT_EQ(r.status, 0) << r.err;
+  const nlohmann::json j = nlohmann::json::parse(r.out);
+  PositionRequest q;
+  q.shot.target = 1;
+  q.shot.simulations = 1000;
+  q.valuation = LeaveValuation::ghost_ball;
+  q.game_ball = 9;
+  const PositionPlanResult lib = plan_shot_for_position(scenario_from_json(json), q);
+  EXPECT_EQ(j["cue"]["aim_deg"].get<double>(), lib.plan.shot.strike.aim_deg);
+  const nlohmann::json& p = j["position"];
+  EXPECT_EQ(p["score"].get<double>(), lib.leave.score);
+  EXPECT_EQ(p["next_kind"], "combination");
+  EXPECT_EQ(p["next_ball"], 9);
+}
+
 TEST(CliPlanShotPosition, BadNextIsAUsageErrorNamingTheFlag) {
   const TempDir dir;
   const std::string scenario = dir.write("three.json", kThreeBalls);
@@ -205,6 +230,10 @@ TEST(CliPlanShotPosition, BadNextIsAUsageErrorNamingTheFlag) {
   expect_usage_error({"plan-shot", scenario, "--ball", "1", "--position", "--valuation", "geometry"},
                      "--valuation = \"geometry\" is not a valuation; allowed: windows, ghost_ball");
   expect_usage_error({"plan-shot", scenario, "--ball", "1", "--valuation", "ghost_ball"}, "--valuation");  // needs --position
+  expect_usage_error({"plan-shot", scenario, "--ball", "1", "--position", "--game-ball", "2"},
+                     "--game-ball = 2 needs --valuation ghost_ball");
+  expect_usage_error({"plan-shot", scenario, "--ball", "1", "--position", "--valuation", "ghost_ball", "--game-ball", "7"},
+                     "--game-ball = 7 is not the id of a ball on the table; allowed: an object ball on the table");
 }
 
 }  // namespace

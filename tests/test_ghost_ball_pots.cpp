@@ -3,7 +3,9 @@
 // target sent through the middle of the pocket's window, checked by rolls; a
 // ball on either path or a cut beyond kMaxCutDeg removes a pot; on random
 // layouts every pot returned meets the definition, best first, and every
-// pocket left out fails it.
+// pocket left out fails it. The combinations of one ball through another:
+// a straight one's closed form, played on the engine within its tolerance;
+// a ball on any of its three paths removes it.
 #include "cueball/planning/ghost_ball.hpp"
 
 #include <gtest/gtest.h>
@@ -189,6 +191,73 @@ TEST(GhostBallPots, EveryPotMeetsTheDefinitionBestFirstAndEveryPocketLeftOutFail
   EXPECT_GT(pots_seen, 200);  // both kinds were exercised
   EXPECT_GT(left_out, 200);
   EXPECT_GT(closed, 0);  // a side pocket seen from too far along its rail
+}
+
+// The cue ball, the 2 and the 9 on the diagonal of the bottom-left corner:
+// a straight combination, both cuts 0, its tolerance (2R)^2 w / (|CG| |AT|
+// |OP|): the 2's error is magnified on the way to the 9, so it is harder
+// than the 9 straight in from the same place. Played on the engine (a level
+// stun stroke along C -> G), the 9 drops, and so it does with the aim turned
+// by half the tolerance either way.
+TEST(GhostBallPots, AStraightCombinationIsTheClosedFormAndDropsWithinItsTolerance) {
+  const Vec2 C{1.0, 1.0}, A{0.7, 0.7}, O{0.4, 0.4};
+  const Scenario s = layout({{0, C}, {2, A}, {9, O}});
+  const double R = s.settings.parameters.ball.radius;
+  const std::vector<GhostBallPot> combos = ghost_ball_combinations(s, 0, 2, 9);
+  ASSERT_FALSE(combos.empty());
+  const GhostBallPot& best = combos.front();
+  EXPECT_EQ(best.target, 9);
+  EXPECT_EQ(best.ball_on, 2);
+  const Vec2 P = best.pocket_aim;
+  const Vec2 u = (P - O) / norm(P - O);
+  const Vec2 T = O - 2.0 * R * u;
+  const Vec2 v = (T - A) / norm(T - A);
+  const Vec2 G = A - 2.0 * R * v;
+  EXPECT_NEAR(norm(best.ghost - G), 0.0, 1e-12);
+  EXPECT_GT(dot(v, u), 0.9999);  // straight: the corner's window is symmetric to within a millimetre
+  EXPECT_NEAR(best.score, 2.0 * R * dot((G - C) / norm(G - C), v) * dot(v, u) / (norm(G - C) * norm(T - A) * norm(P - O)),
+              1e-12);
+  EXPECT_NEAR(best.aim_tolerance, 2.0 * R * best.window * best.score, 1e-15);
+  // The 9 straight in from the same place with the 2 off the table: easier.
+  const std::vector<GhostBallPot> straight = ghost_ball_pots(layout({{0, C}, {9, O}}), 0, {9});
+  ASSERT_FALSE(straight.empty());
+  EXPECT_LT(best.aim_tolerance, straight.front().aim_tolerance);
+  EXPECT_TRUE(ghost_ball_stroke(s, 0, best, 2.0, 0.0).potted);
+  for (const double turn : {-0.5 * best.aim_tolerance, 0.5 * best.aim_tolerance}) {
+    GhostBallPot turned = best;
+    const Vec2 d = best.ghost - C;
+    turned.ghost = C + Vec2{d.x * std::cos(turn) - d.y * std::sin(turn), d.x * std::sin(turn) + d.y * std::cos(turn)};
+    const GhostBallStroke stroke = ghost_ball_stroke(s, 0, turned, 2.0, 0.0);
+    EXPECT_TRUE(stroke.potted) << "turned " << turn << " rad";
+    EXPECT_FALSE(stroke.scratched);
+  }
+  // Turned by three tolerances, one side misses.
+  int missed = 0;
+  for (const double turn : {-3.0 * best.aim_tolerance, 3.0 * best.aim_tolerance}) {
+    GhostBallPot turned = best;
+    const Vec2 d = best.ghost - C;
+    turned.ghost = C + Vec2{d.x * std::cos(turn) - d.y * std::sin(turn), d.x * std::sin(turn) + d.y * std::cos(turn)};
+    missed += ghost_ball_stroke(s, 0, turned, 2.0, 0.0).potted ? 0 : 1;
+  }
+  EXPECT_GE(missed, 1);
+}
+
+TEST(GhostBallPots, ABallOnAnyOfACombinationsPathsRemovesIt) {
+  const Vec2 C{1.0, 1.0}, A{0.7, 0.7}, O{0.4, 0.4};
+  const int corner = ghost_ball_combinations(layout({{0, C}, {2, A}, {9, O}}), 0, 2, 9).front().pocket;
+  const auto has_corner = [&](const std::vector<test::Placed>& balls) {
+    for (const GhostBallPot& p : ghost_ball_combinations(layout(balls), 0, 2, 9))
+      if (p.pocket == corner) return true;
+    return false;
+  };
+  EXPECT_TRUE(has_corner({{0, C}, {2, A}, {9, O}, {3, {1.5, 0.3}}}));
+  EXPECT_FALSE(has_corner({{0, C}, {2, A}, {9, O}, {3, {0.86, 0.86}}}));  // on C -> G
+  EXPECT_FALSE(has_corner({{0, C}, {2, A}, {9, O}, {3, {0.56, 0.57}}}));  // on A -> T
+  EXPECT_FALSE(has_corner({{0, C}, {2, A}, {9, O}, {3, {0.2, 0.2}}}));    // on O -> P
+  // No cue ball, no ball on, the same ball twice: none.
+  EXPECT_TRUE(ghost_ball_combinations(layout({{2, A}, {9, O}}), 0, 2, 9).empty());
+  EXPECT_TRUE(ghost_ball_combinations(layout({{0, C}, {9, O}}), 0, 2, 9).empty());
+  EXPECT_TRUE(ghost_ball_combinations(layout({{0, C}, {2, A}, {9, O}}), 0, 9, 9).empty());
 }
 
 }  // namespace

@@ -5,8 +5,9 @@
 // better somewhere), the default next ball, an explicit next target played
 // for (PositionRequest::next_targets), 9-ball's next targets given
 // explicitly the same plan as the default, the ghost-ball valuation's
-// scores, the candidates' noisy leaves (a better leave on average), and
-// bad input.
+// scores, the candidates' noisy leaves (a better leave on average), a
+// game ball's combination through the next ball counted in a leave's value,
+// and bad input.
 #include "cueball/planning/position_play.hpp"
 
 #include <gtest/gtest.h>
@@ -643,6 +644,74 @@ TEST(PositionPlay, BadInputNamesTheField) {
   q.next_targets = {{2}};
   q.next_target = 2;  // not both
   EXPECT_EQ(field(q), "next_targets");
+  q = request_for(1);
+  q.game_ball = 9;  // not on the table
+  EXPECT_EQ(field(q), "game_ball");
+  q.game_ball = 0;  // the cue ball
+  EXPECT_EQ(field(q), "game_ball");
+  for (const double chance : {0.0, -0.5, 1.5, std::nan("")}) {
+    q = request_for(1);
+    q.later_shot_chance = chance;
+    EXPECT_EQ(field(q), "later_shot_chance") << chance;
+  }
+}
+
+// The leaves of plan_shot_for_position(s, q) (q.game_ball 9, next ball 2,
+// depth 1 by the ghost ball, noise-free leaves) each valued as the test
+// below says; `without` the plan without the game ball.
+void expect_game_ball_values(const Scenario& s, const PositionRequest& q, const PositionPlanResult& without) {
+  const PositionPlanResult with = plan_shot_for_position(s, q);
+  const double aim = q.shot.noise.aim;
+  int compared = 0, raised = 0;
+  const auto check = [&](const PlannedShot& shot, const Leave& leave) {
+    const Scenario left = table_left_by(s, shot);
+    if (std::none_of(left.balls.begin(), left.balls.end(), [](const SimulationBall& b) { return b.id == 2; })) return;
+    const double straight = best_ghost_ball_chance(left, 0, {2}, aim);
+    const std::vector<GhostBallPot> combos = ghost_ball_combinations(left, 0, 2, 9);
+    const double combination =
+        combos.empty() ? 0.0
+                       : std::min(1.0, ghost_ball_pot_chance(combos.front().aim_tolerance, aim) / q.later_shot_chance);
+    EXPECT_EQ(leave.noisy_next_window, std::max(straight, combination));
+    EXPECT_DOUBLE_EQ(leave.score, leave.screened_probability * leave.noisy_next_window);
+    raised += combination > straight ? 1 : 0;
+    ++compared;
+  };
+  check(with.plan.shot, with.leave);
+  for (std::size_t k = 0; k < with.plan.alternatives.size(); ++k)
+    check(with.plan.alternatives[k], with.alternative_leaves[k]);
+  EXPECT_GE(compared, 2);
+  EXPECT_GE(raised, 1);
+  EXPECT_GE(with.leave.score, without.leave.score);
+}
+
+// PositionRequest::game_ball: the 2 14 cm behind the 9 on the
+// bottom-left corner's diagonal, where the 2 has no straight pot into that
+// corner (the 9 is in the way) but the 2 into the 9 is a near-straight
+// combination from much of the table. Valued by the ghost ball at depth 1,
+// every leave scores the larger of the 2's best ghost-ball pot and the best
+// ghost-ball combination of the 9 through the 2 (recomputed here on the
+// table it leaves), never less than without the game ball, more somewhere;
+// with a later shot's chance of 0.9, the combination's chance over 0.9 (the
+// run's one ball beyond the next, at most 1); the 9 as the next ball itself
+// (the 2 gone) changes nothing.
+TEST(PositionPlay, AGameBallsCombinationThroughTheNextBallCountsInALeavesValue) {
+  const Scenario s = layout({{0, {1.35, 0.75}}, {1, {1.85, 0.45}}, {2, {0.5, 0.5}}, {9, {0.4, 0.4}}});
+  PositionRequest q = request_for(1);
+  q.valuation = LeaveValuation::ghost_ball;
+  q.noisy_leaves = 0;
+  const PositionPlanResult without = plan_shot_for_position(s, q);
+  q.game_ball = 9;
+  expect_game_ball_values(s, q, without);
+  q.later_shot_chance = 0.9;
+  expect_game_ball_values(s, q, without);
+  // The 2 gone, the 9 is the next ball: no combination to count.
+  const Scenario nine_next = layout({{0, {1.35, 0.75}}, {1, {1.85, 0.45}}, {9, {0.4, 0.4}}});
+  q.game_ball.reset();
+  const PositionPlanResult plain = plan_shot_for_position(nine_next, q);
+  q.game_ball = 9;
+  const PositionPlanResult same = plan_shot_for_position(nine_next, q);
+  EXPECT_EQ(same.plan.shot.strike, plain.plan.shot.strike);
+  EXPECT_EQ(same.leave.score, plain.leave.score);
 }
 
 // Cue ball 0, target 1 and the balls 2 and 3, by hand, the 2 and the 3

@@ -137,6 +137,11 @@ Pot plan_pot(const Turn& t, const std::vector<ShotKind>& kinds) {
       p.candidate_noisy_leaves = t.options.position_candidate_noisy_leaves;
       p.depth = t.options.position_depth;
       p.valuation = t.options.position_valuation;
+      const std::optional<int> game = game_ball(t.state);
+      if (t.options.game_ball_combinations && game && find_ball(t.state.table.balls, *game)) {
+        p.game_ball = game;
+        p.later_shot_chance = kRunOutShotChance;
+      }
       p.finalists = t.options.position_finalists;
       p.varied_shots = t.options.position_varied_shots;
       PositionPlanResult pr;

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <initializer_list>
 #include <numbers>
 
 #include "cueball/planning/pocket_windows.hpp"
@@ -32,6 +33,15 @@ Vec2 window_middle(const PocketWindows& windows, std::size_t pocket, Vec2 O, Vec
   return P;
 }
 
+// No ball but `except` has its centre within `clearance` of the segment a -> b.
+bool path_clear(const std::vector<SimulationBall>& balls, Vec2 a, Vec2 b, double clearance,
+                std::initializer_list<int> except) {
+  return std::none_of(balls.begin(), balls.end(), [&](const SimulationBall& x) {
+    return std::find(except.begin(), except.end(), x.id) == except.end() &&
+           distance_to_segment(x.state.position, a, b) < clearance;
+  });
+}
+
 }  // namespace
 
 std::vector<GhostBallPot> ghost_ball_pots(const Scenario& table, int cue_ball, const std::vector<int>& targets,
@@ -58,16 +68,50 @@ std::vector<GhostBallPot> ghost_ball_pots(const Scenario& table, int cue_ball, c
       if (cg <= 0.0) continue;
       const double cos_cut = dot((G - C) / cg, u);
       if (cos_cut < min_cos_cut) continue;
-      const bool blocked = std::any_of(table.balls.begin(), table.balls.end(), [&](const SimulationBall& b) {
-        return b.id != cue_ball && b.id != target &&
-               (distance_to_segment(b.state.position, C, G) < 2.0 * R ||
-                distance_to_segment(b.state.position, O, P) < 2.0 * R);
-      });
-      if (blocked) continue;
+      if (!path_clear(table.balls, C, G, 2.0 * R, {cue_ball, target}) ||
+          !path_clear(table.balls, O, P, 2.0 * R, {cue_ball, target}))
+        continue;
       const double score = cos_cut / (cg * op);
       const double window = pocket_window_half_width(*windows, p, u);
       pots.push_back({target, static_cast<int>(p), G, score, window, 2.0 * R * window * score, P});
     }
+  }
+  std::stable_sort(pots.begin(), pots.end(),
+                   [](const GhostBallPot& a, const GhostBallPot& b) { return a.aim_tolerance > b.aim_tolerance; });
+  return pots;
+}
+
+std::vector<GhostBallPot> ghost_ball_combinations(const Scenario& table, int cue_ball, int ball_on, int target) {
+  std::vector<GhostBallPot> pots;
+  const SimulationBall* cue = find_ball(table.balls, cue_ball);
+  const SimulationBall* on = find_ball(table.balls, ball_on);
+  const SimulationBall* object = find_ball(table.balls, target);
+  if (!cue || !on || !object || cue_ball == ball_on || cue_ball == target || ball_on == target) return pots;
+  const double R = table.settings.parameters.ball.radius;
+  const double min_cos_cut = std::cos(kMaxCutDeg * std::numbers::pi / 180.0);
+  const Vec2 C = cue->state.position, A = on->state.position, O = object->state.position;
+  const std::shared_ptr<const PocketWindows> windows = pocket_windows(table);
+  for (std::size_t p = 0; p < table.table.pockets.size(); ++p) {
+    const Vec2 P = window_middle(*windows, p, O, table.table.pockets[p].centre);
+    const double op = norm(P - O);
+    if (op <= 0.0) continue;
+    const Vec2 u = (P - O) / op;
+    const Vec2 T = O - 2.0 * R * u;  // the ball on's centre where it meets the target
+    const double at = norm(T - A);
+    if (at <= 0.0) continue;
+    const Vec2 v = (T - A) / at;
+    const Vec2 G = A - 2.0 * R * v;  // the cue ball's centre where it meets the ball on
+    const double cg = norm(G - C);
+    if (cg <= 0.0) continue;
+    const double cos_on = dot((G - C) / cg, v), cos_target = dot(v, u);
+    if (cos_on < min_cos_cut || cos_target < min_cos_cut) continue;
+    if (!path_clear(table.balls, C, G, 2.0 * R, {cue_ball, ball_on}) ||
+        !path_clear(table.balls, A, T, 2.0 * R, {cue_ball, ball_on, target}) ||
+        !path_clear(table.balls, O, P, 2.0 * R, {cue_ball, target}))
+      continue;
+    const double score = 2.0 * R * cos_on * cos_target / (cg * at * op);
+    const double window = pocket_window_half_width(*windows, p, u);
+    pots.push_back({target, static_cast<int>(p), G, score, window, 2.0 * R * window * score, P, ball_on});
   }
   std::stable_sort(pots.begin(), pots.end(),
                    [](const GhostBallPot& a, const GhostBallPot& b) { return a.aim_tolerance > b.aim_tolerance; });

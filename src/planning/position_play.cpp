@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <array>
 #include <chrono>
+#include <cmath>
 #include <functional>
 #include <string>
 #include <utility>
@@ -135,8 +136,10 @@ PlanRequest next_request(const Lookahead& la, const std::vector<int>& ids) {
 // The next shot's value on table `left` for the balls `ids` (not empty), as
 // PositionRequest::valuation says: the best window probability of a
 // windows-only search (its runs counted), or the best ghost-ball chance.
+double ghost_ball_shots(Lookahead& la, const Scenario& left, const std::vector<int>& ids, int shots);
+
 double next_shot_value(Lookahead& la, const Scenario& left, const std::vector<int>& ids) {
-  if (la.q.valuation == LeaveValuation::ghost_ball) return best_ghost_ball_chance(left, la.cue_id, ids, la.next.noise.aim);
+  if (la.q.valuation == LeaveValuation::ghost_ball) return ghost_ball_shots(la, left, ids, 1);
   return best_window_probability(left, next_request(la, ids), la.simulations);
 }
 
@@ -299,6 +302,37 @@ double two_shot_window(Lookahead& la, const Scenario& left, const std::vector<in
   return value;
 }
 
+// The balls of the next targets in turn on table `left`: the shots a run
+// of it takes.
+int run_length(const Lookahead& la, const Scenario& left) {
+  std::vector<int> ids;
+  for (const std::vector<int>& set : la.next_targets)
+    for (int id : set)
+      if (id != la.cue_id && !contains(ids, id) && has_ball(left, id)) ids.push_back(id);
+  return static_cast<int>(ids.size());
+}
+
+// PositionRequest::game_ball: the best ghost-ball combination's chance of
+// the game ball through the next target `ids` (one ball, not the game
+// ball) on table `left`, the run then won, over later_shot_chance for each
+// ball of the run beyond the `shots` a run's value covers there (at most
+// 1); 0 where there is none.
+double game_ball_combination_value(const Lookahead& la, const Scenario& left, const std::vector<int>& ids, int shots) {
+  if (!la.q.game_ball || ids.size() != 1 || ids.front() == *la.q.game_ball) return 0.0;
+  const std::vector<GhostBallPot> pots = ghost_ball_combinations(left, la.cue_id, ids.front(), *la.q.game_ball);
+  if (pots.empty()) return 0.0;
+  const double chance = ghost_ball_pot_chance(pots.front().aim_tolerance, la.next.noise.aim);
+  const int beyond = run_length(la, left) - shots;
+  return std::min(1.0, chance / std::pow(la.q.later_shot_chance, std::max(0, beyond)));
+}
+
+// The first factor of a value by the ghost ball on table `left`: no value
+// of ghost_ball_shots() there exceeds it.
+double ghost_ball_bound(const Lookahead& la, const Scenario& left, const std::vector<int>& ids, int shots) {
+  return std::max(best_ghost_ball_chance(left, la.cue_id, ids, la.next.noise.aim),
+                  game_ball_combination_value(la, left, ids, shots));
+}
+
 // A table a next pot's stroke leaves, its bound and its next targets.
 struct StrokeLeave {
   double bound = 0.0;    // the best ghost-ball chance of the shot after the pot on it (1: no ball left)
@@ -312,7 +346,7 @@ struct StrokeLeave {
 // where none does (a level stroke at the ghost ball does not allow for
 // throw), every one with that ball taken off. A stroke that scratches
 // leaves none.
-std::vector<StrokeLeave> stroke_leaves(Lookahead& la, const Scenario& left, const GhostBallPot& pot) {
+std::vector<StrokeLeave> stroke_leaves(Lookahead& la, const Scenario& left, const GhostBallPot& pot, int shots) {
   std::vector<StrokeLeave> potted, unpotted;
   for (const double speed : kGhostBallStrokeSpeeds)
     for (const double height : kGhostBallStrokeHeights) {
@@ -324,7 +358,7 @@ std::vector<StrokeLeave> stroke_leaves(Lookahead& la, const Scenario& left, cons
                                 static_cast<std::ptrdiff_t>(index_of(stroke.left.balls, pot.target)));
       StrokeLeave leave{1.0, std::move(stroke.left), {}};
       leave.ids = next_ids_on(leave.left, la, {});
-      if (!leave.ids.empty()) leave.bound = best_ghost_ball_chance(leave.left, la.cue_id, leave.ids, la.next.noise.aim);
+      if (!leave.ids.empty()) leave.bound = ghost_ball_bound(la, leave.left, leave.ids, shots);
       (stroke.potted ? potted : unpotted).push_back(std::move(leave));
     }
   std::vector<StrokeLeave>& leaves = potted.empty() ? unpotted : potted;
@@ -345,14 +379,14 @@ std::vector<StrokeLeave> stroke_leaves(Lookahead& la, const Scenario& left, cons
 // of chances, so no more than its first factor, and a pot (or a table)
 // whose chance (bound) is no more than the best value found cannot raise it.
 double ghost_ball_shots(Lookahead& la, const Scenario& left, const std::vector<int>& ids, int shots) {
-  if (shots <= 1) return best_ghost_ball_chance(left, la.cue_id, ids, la.next.noise.aim);
+  if (shots <= 1) return ghost_ball_bound(la, left, ids, shots);
   const std::vector<GhostBallPot> pots = ghost_ball_pots(left, la.cue_id, ids);
-  double value = 0.0;
+  double value = game_ball_combination_value(la, left, ids, shots);
   for (std::size_t k = 0; k < pots.size() && k < kPositionSecondShots; ++k) {
     const double chance = ghost_ball_pot_chance(pots[k].aim_tolerance, la.next.noise.aim);
     if (chance <= value) continue;
     double after = 0.0;
-    for (const StrokeLeave& leave : stroke_leaves(la, left, pots[k])) {
+    for (const StrokeLeave& leave : stroke_leaves(la, left, pots[k], shots - 1)) {
       if (leave.bound <= after) break;  // best bound first: none after it can gain
       after = std::max(after, leave.ids.empty() ? 1.0 : ghost_ball_shots(la, leave.left, leave.ids, shots - 1));
     }
@@ -399,15 +433,24 @@ void planned_next_shot(Lookahead& la, Candidate& c) {
 }
 
 // Step 3's next shot by LeaveValuation::ghost_ball: the best ghost-ball pot
-// from the noise-free leave, its chance as the next shot's probability.
+// from the noise-free leave, or the game ball's combination through the
+// next ball where its chance is larger (PositionRequest::game_ball), its
+// chance as the next shot's probability.
 void ghost_ball_next_shot(const Lookahead& la, Candidate& c) {
-  const std::vector<GhostBallPot> pots = ghost_ball_pots(c.left, la.cue_id, c.next_ids);
+  std::vector<GhostBallPot> pots = ghost_ball_pots(c.left, la.cue_id, c.next_ids);
+  if (la.q.game_ball && c.next_ids.size() == 1 && c.next_ids.front() != *la.q.game_ball) {
+    const std::vector<GhostBallPot> combinations =
+        ghost_ball_combinations(c.left, la.cue_id, c.next_ids.front(), *la.q.game_ball);
+    if (!combinations.empty() && (pots.empty() || combinations.front().aim_tolerance > pots.front().aim_tolerance))
+      pots.insert(pots.begin(), combinations.front());
+  }
   if (pots.empty()) return;
+  const GhostBallPot& best = pots.front();
   c.leave.next_feasible = true;
-  c.leave.next_ball = pots.front().target;
-  c.leave.next_success_probability = ghost_ball_pot_chance(pots.front().aim_tolerance, la.next.noise.aim);
-  c.leave.next_kind = to_string(ShotKind::direct);
-  c.leave.next_pocket = c.left.table.pockets[static_cast<std::size_t>(pots.front().pocket)].name;
+  c.leave.next_ball = best.target;
+  c.leave.next_success_probability = ghost_ball_pot_chance(best.aim_tolerance, la.next.noise.aim);
+  c.leave.next_kind = to_string(best.ball_on >= 0 ? ShotKind::combination : ShotKind::direct);
+  c.leave.next_pocket = c.left.table.pockets[static_cast<std::size_t>(best.pocket)].name;
 }
 
 // Step 3: the finalists, each shot screened on the same noisy draws and the
@@ -431,10 +474,12 @@ void screen_finalists(Lookahead& la, std::vector<Candidate>& candidates) {
     if (q.valuation == LeaveValuation::ghost_ball) ghost_ball_next_shot(la, c);
     else planned_next_shot(la, c);
     // With no noisy leave, the noise-free one: at depth 1 by the next
-    // shot's full plan (the lookahead before issue 27), at depth 2 by
-    // leave_value().
-    if (c.leave.noisy_leaves == 0 && q.depth >= 2) c.leave.noisy_next_window = leave_value(la, c.left);
-    const bool by_windows = c.leave.noisy_leaves > 0 || q.depth >= 2;
+    // shot's full plan (the lookahead before issue 27) or its best
+    // ghost-ball chance (the game ball's combination counted), at depth 2
+    // by leave_value().
+    const bool by_value = q.depth >= 2 || q.valuation == LeaveValuation::ghost_ball;
+    if (c.leave.noisy_leaves == 0 && by_value) c.leave.noisy_next_window = leave_value(la, c.left);
+    const bool by_windows = c.leave.noisy_leaves > 0 || by_value;
     c.leave.score = c.leave.screened_probability *
                     (by_windows ? c.leave.noisy_next_window : c.leave.next_success_probability);
   }
@@ -494,6 +539,14 @@ PositionPlanResult plan_shot_for_position(const Scenario& table_state, const Pos
   // The cue ball as plan_shot() takes it (which checks it, the target and the rest).
   Lookahead la{s, q, cue_ball_id(s, q.shot), {}, q.shot, 0};
   la.next_targets = next_targets_of(s, q, la.cue_id);
+  if (!(q.later_shot_chance > 0.0 && q.later_shot_chance <= 1.0))
+    throw InvalidArgument("later_shot_chance", q.later_shot_chance, "(0, 1]",
+                          "the chance of each shot of a run beyond the lookahead");
+  if (q.game_ball && (!has_ball(s, *q.game_ball) || *q.game_ball == la.cue_id))
+    throw InvalidArgument("game_ball", "game_ball = " + std::to_string(*q.game_ball) +
+                                           (*q.game_ball == la.cue_id ? " is the cue ball"
+                                                                      : " is not the id of a ball on the table") +
+                                           "; allowed: an object ball on the table");
   const std::vector<int> next_ids = next_ids_on(s, la, target_ids(q.shot));
   result.next_target = next_ids.empty() ? -1 : next_ids.front();
   la.next.cue_ball = la.cue_id;

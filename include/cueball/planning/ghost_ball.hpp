@@ -47,6 +47,11 @@ struct GhostBallPot {
   double window = 0.0; ///< w, m: half the pocket's window for the target's direction to it (0: none)
   double aim_tolerance = 0.0;  ///< 2R w score, rad: the aim error that still pots, larger is easier
   Vec2 pocket_aim;      ///< P, where the target is sent: the pocket's centre moved to the middle of its window
+  /// A combination's ball on: the ball the cue ball meets first, sent into
+  /// the target (ghost_ball_combinations()); -1 for a straight pot. Then
+  /// `ghost` is the cue ball's ghost ball on it and `score` is
+  /// 2R cos(cut on it) cos(its cut on the target) / (|CG| |AT| |OP|).
+  int ball_on = -1;
 };
 
 /// Where a ghost-ball pot sends its target.
@@ -76,6 +81,21 @@ double ghost_ball_pot_chance(double aim_tolerance, double aim_sigma);
 
 /// The best chance over ghost_ball_pots() (its first's; 0 when there is none).
 double best_ghost_ball_chance(const Scenario& table, int cue_ball, const std::vector<int>& targets, double aim_sigma);
+
+/// Every clear ghost-ball combination of `target` through `ball_on` from the
+/// cue ball where it lies: the cue ball C sent at the ghost ball G of the
+/// ball on A for the point T = O - 2R u at which A meets the target O and
+/// sends it along u to the pocket's point P (each pocket's, as for
+/// ghost_ball_pots()); both cuts at most kMaxCutDeg, the paths C -> G,
+/// A -> T and O -> P clear of every other ball by two radii. An aim error
+/// d(theta) turns A by |CG| d(theta) / (2R cos(cut at A)), which turns the
+/// target by |AT| / (2R cos(cut at O)) times that: the aim tolerance is
+/// (2R)^2 w cos cos / (|CG| |AT| |OP|) = 2R w score, where w is the window's
+/// half width for the target's direction (Alciatore's ghost ball applied
+/// twice; throw between the two object balls, which turns the target off
+/// the line of centres, is left out as for a straight pot). Largest aim
+/// tolerance first; empty when a ball is missing or two ids are the same.
+std::vector<GhostBallPot> ghost_ball_combinations(const Scenario& table, int cue_ball, int ball_on, int target);
 
 /// The strokes a ghost-ball pot is played with when position play looks two
 /// shots ahead by the ghost ball (PositionRequest::depth 2): every cue speed

@@ -210,6 +210,23 @@ struct PositionRequest {
   int depth = 1;
   /// How a leave's next shot is valued in steps 2 and 3 (LeaveValuation).
   LeaveValuation valuation = LeaveValuation::windows;
+  /// A ball whose legal pot ends the run at once, whichever ball the cue
+  /// ball meets first (9-ball's 9: WPA Rules of Play, section 2; 10-ball's
+  /// called 10: section 9). With valuation ghost_ball, where the next
+  /// target is one ball other than it, a leave (and each table the
+  /// lookahead's strokes leave) is valued by the larger of the run's
+  /// ghost-ball chances and the best ghost-ball combination of the game
+  /// ball through that target (ghost_ball_combinations()), the run then
+  /// won. None (the default): pots one by one alone. A ball on the table
+  /// other than the cue ball.
+  std::optional<int> game_ball;
+  /// The chance of each shot of a run beyond the lookahead, (0, 1]: a
+  /// game ball's combination wins the rack, while the run's value covers
+  /// only the `depth` shots looked ahead, so the combination's chance is
+  /// divided by later_shot_chance to the power of the run's balls beyond
+  /// them (at most 1 in all) before the two are compared. 1 (the default):
+  /// compared as they are. The strongest agent sets kRunOutShotChance.
+  double later_shot_chance = 1.0;
   /// Noisy repeats of every candidate whose successes' leaves are valued in
   /// step 2 beside the noise-free leave, [0, kMaxPositionNoisyLeaves]; 0
   /// (the default): the noise-free leave alone, the lookahead before
@@ -239,7 +256,11 @@ struct Leave {
   std::string next_pocket;                 ///< the next shot's pocket name; empty when infeasible
   int next_ball = -1;                      ///< the ball the next shot's plan pots; -1 when none or infeasible
   /// screened_probability x noisy_next_window (x next_success_probability
-  /// when noisy_leaves is 0 at depth 1). When the noise-free shot pots the next target
+  /// when noisy_leaves is 0 at depth 1 by windows; by the ghost ball,
+  /// noisy_next_window is then the noise-free leave's value). With a
+  /// PositionRequest::game_ball and the ghost ball, next_* may be that
+  /// ball's combination through the next ball (next_kind "combination",
+  /// next_ball the game ball). When the noise-free shot pots the next target
   /// too, next_* are of the ball after it (the lowest id left); with no ball
   /// left, score = screened_probability.
   double score = 0.0;

@@ -1136,6 +1136,7 @@ def plan_shot(
     region: tuple[_Float, _Float, _Float, _Float] | str | None = None,
     valuation: str = "windows",
     ball_on: _Int | None = None,
+    game_ball: _Int | None = None,
 ) -> dict[str, Any]:
     """The strike that pots ball `target`, or any ball of `targets` (the legal targets; give one of
     the two) (cueball plan-shot): the dict of `plan-shot --json`
@@ -1156,7 +1157,9 @@ def plan_shot(
     (plan-shot --in-hand; inside region=(x_min, x_max, y_min, y_max) m, or 'kitchen', 'd', 'anywhere', when given): the dict gains
     `in_hand` (cue_ball, spots, spots_played). valuation: how a leave's next shot is valued,
     'windows' (the planner's window search) or 'ghost_ball' (the best straight pot's chance from the
-    geometry, no engine run); with position=True or in_hand=True. Releases the GIL."""
+    geometry, no engine run); with position=True or in_hand=True. game_ball: with valuation='ghost_ball', a
+    ball whose pot wins at once whichever ball is met first (9-ball's 9; plan-shot --game-ball): a leave is
+    also valued by its ghost-ball combination through the next ball. Releases the GIL."""
 
 def _time_run_scenario(scenario: _Scenario = None, repetitions: _Int = 100) -> float:
     """Benchmark hook: seconds per run of the library's run_scenario(), timed in C++."""

@@ -111,7 +111,7 @@ void bind_shot_planner(py::module_& m) {
          bool position, std::optional<int> next, std::optional<std::vector<std::vector<int>>> next_targets,
          long long next_simulations, bool in_hand,
          std::optional<std::variant<std::string, std::array<double, 4>>> region, const std::string& valuation,
-         std::optional<int> ball_on) {
+         std::optional<int> ball_on, std::optional<int> game_ball) {
         if (simulations < cueball::kMinPlanSimulations || simulations > cueball::kMaxPlanSimulations)
           throw cueball::InvalidArgument("simulations", static_cast<double>(simulations),
                                          "[" + std::to_string(cueball::kMinPlanSimulations) + ", " +
@@ -144,6 +144,9 @@ void bind_shot_planner(py::module_& m) {
         if (!position_play && *leave_valuation != cueball::LeaveValuation::windows)
           throw cueball::InvalidArgument("valuation", "valuation = " + cueball::quote_input(valuation) +
                                                           " needs position=True or in_hand=True");
+        if (game_ball && *leave_valuation != cueball::LeaveValuation::ghost_ball)
+          throw cueball::InvalidArgument("game_ball", "game_ball = " + std::to_string(*game_ball) +
+                                                          " needs valuation='ghost_ball'");
         if (next_simulations < cueball::kMinPlanSimulations || next_simulations > cueball::kMaxPlanSimulations)
           throw cueball::InvalidArgument("next_simulations", static_cast<double>(next_simulations),
                                          "[" + std::to_string(cueball::kMinPlanSimulations) + ", " +
@@ -161,6 +164,7 @@ void bind_shot_planner(py::module_& m) {
             if (next_targets) p.next_targets = *next_targets;
             p.next_simulations = static_cast<int>(next_simulations);
             p.valuation = *leave_valuation;
+            p.game_ball = game_ball;
             if (in_hand) {
               cueball::BallInHandRequest h{p, std::nullopt};
               if (region) h.region = placement_region(*region);
@@ -192,7 +196,7 @@ void bind_shot_planner(py::module_& m) {
       "kinds"_a = std::vector<std::string>{"direct", "bank"}, "noise"_a = "tournament", "seed"_a = 0,
       "simulations"_a = 4000, "side"_a = 0.0, "height"_a = py::none(), "position"_a = false, "next"_a = py::none(),
       "next_targets"_a = py::none(), "next_simulations"_a = cueball::kMinPlanSimulations, "in_hand"_a = false, "region"_a = py::none(),
-      "valuation"_a = "windows", "ball_on"_a = py::none(),
+      "valuation"_a = "windows", "ball_on"_a = py::none(), "game_ball"_a = py::none(),
       "Plans the strike that pots ball `target` (cueball plan-shot, shot_planner.hpp), or any ball of\n"
       "`targets` (a list of ids, the legal targets: plan-shot --targets; give one of the two; each\n"
       "shot's dict says its `target`): ghost-ball\n"

@@ -5,6 +5,7 @@ import json
 import os
 import pathlib
 import subprocess
+import tempfile
 import unittest
 
 import cueball
@@ -119,6 +120,31 @@ class PositionPlayTest(unittest.TestCase):
                                   "--valuation", "ghost_ball", "--json"], check=True, capture_output=True,
                                  text=True).stdout
             self.assertEqual(json.dumps(without_python_only(quick)), json.dumps(without_python_only(json.loads(out))))
+
+    def test_a_game_ball_values_the_leave_by_its_combination_as_the_cli_does(self) -> None:
+        # The 2 behind the 9 on the bottom-left corner's diagonal: the leave's next shot is the 9 through the 2.
+        scenario = {"table": "pool_9ft", "balls": [{"id": 0, "position": [1.35, 0.75]}, {"id": 1, "position": [1.85, 0.45]},
+                                                   {"id": 2, "position": [0.5, 0.5]}, {"id": 9, "position": [0.4, 0.4]}]}
+        plan = cueball.plan_shot(scenario, 1, simulations=1000, position=True, valuation="ghost_ball", game_ball=9)
+        plain = cueball.plan_shot(scenario, 1, simulations=1000, position=True, valuation="ghost_ball")
+        self.assertEqual(plan["position"]["next_kind"], "combination")
+        self.assertEqual(plan["position"]["next_ball"], 9)
+        self.assertGreaterEqual(plan["position"]["score"], plain["position"]["score"])
+        binary = os.environ.get("CUEBALL_BIN")
+        if binary:
+            with tempfile.TemporaryDirectory() as d:
+                path = pathlib.Path(d) / "nine.json"
+                path.write_text(json.dumps(scenario))
+                out = subprocess.run([binary, "plan-shot", str(path), "--ball", "1", "--simulations", "1000", "--position",
+                                      "--valuation", "ghost_ball", "--game-ball", "9", "--json"], check=True,
+                                     capture_output=True, text=True).stdout
+            self.assertEqual(json.dumps(without_python_only(plan)), json.dumps(without_python_only(json.loads(out))))
+        with self.assertRaises(ValueError) as e:
+            cueball.plan_shot(scenario, 1, simulations=1000, position=True, game_ball=9)  # windows
+        self.assertIn("game_ball", str(e.exception))
+        with self.assertRaises(ValueError) as e:
+            cueball.plan_shot(scenario, 1, simulations=1000, position=True, valuation="ghost_ball", game_ball=7)
+        self.assertIn("game_ball", str(e.exception))
 
     def test_bad_input_names_the_argument(self) -> None:
         for kwargs, field in (({"position": True, "next": 7}, "next"),

@@ -116,7 +116,9 @@ struct AgentOptions {
   /// 9-ball and 10-ball (planner, safety_planner): also plan the game ball
   /// by a combination through the ball on (plan_game_ball_combination()),
   /// played instead of the pot of the ball on where its chance beats that
-  /// pot's run-out chance (run_out_chance()).
+  /// pot's run-out chance (run_out_chance()); and with position play by
+  /// the ghost ball, value each leave by that combination too
+  /// (PositionRequest::game_ball, later_shot_chance kRunOutShotChance).
   bool game_ball_combinations = false;
 };
 

@@ -8,7 +8,9 @@
 
 #include <nlohmann/json.hpp>
 
+#include <optional>
 #include <string>
+#include <vector>
 
 #include "cli_runner.hpp"
 #include "cueball/io/scenario_json.hpp"
@@ -167,20 +169,32 @@ TEST(CliPlanShotPosition, BadRegionIsAUsageErrorNamingTheFlag) {
                      "a region overlapping [0, 2.54] x [0, 1.27] m");
 }
 
-// --valuation ghost_ball: the library's plan (PositionRequest::valuation) to
-// the bit, each leave's next shot the best straight pot by its ghost-ball chance.
-TEST(CliPlanShotPosition, ValuationGhostBallIsTheLibrarysPlan) {
+// plan-shot --ball 1 --position --valuation ghost_ball --simulations 1000
+// --json (with --game-ball when given) on the scenario `json`, and the
+// library's plan of the same request.
+struct GhostBallPlans {
+  nlohmann::json cli;
+  PositionPlanResult lib;
+};
+GhostBallPlans ghost_ball_plans(const std::string& json, std::optional<int> game_ball) {
   const TempDir dir;
-  const std::string scenario = dir.write("three.json", kThreeBalls);
-  const CliRun r = run_cli({"plan-shot", scenario, "--ball", "1", "--position", "--valuation", "ghost_ball",
-                            "--simulations", "1000", "--json"});
-  ASSERT_EQ(r.status, 0) << r.err;
-  const nlohmann::json j = nlohmann::json::parse(r.out);
+  std::vector<std::string> args{"plan-shot",   dir.write("table.json", json), "--ball",         "1",   "--position",
+                                "--valuation", "ghost_ball",                  "--simulations", "1000", "--json"};
+  if (game_ball) args.insert(args.end(), {"--game-ball", std::to_string(*game_ball)});
+  const CliRun r = run_cli(args);
+  EXPECT_EQ(r.status, 0) << r.err;
   PositionRequest q;
   q.shot.target = 1;
   q.shot.simulations = 1000;
   q.valuation = LeaveValuation::ghost_ball;
-  const PositionPlanResult lib = plan_shot_for_position(scenario_from_json(kThreeBalls), q);
+  q.game_ball = game_ball;
+  return {nlohmann::json::parse(r.out), plan_shot_for_position(scenario_from_json(json), q)};
+}
+
+// --valuation ghost_ball: the library's plan (PositionRequest::valuation) to
+// the bit, each leave's next shot the best straight pot by its ghost-ball chance.
+TEST(CliPlanShotPosition, ValuationGhostBallIsTheLibrarysPlan) {
+  const auto [j, lib] = ghost_ball_plans(kThreeBalls, std::nullopt);
   EXPECT_EQ(j["cue"]["aim_deg"].get<double>(), lib.plan.shot.strike.aim_deg);
   EXPECT_EQ(j["simulations"].get<int>(), lib.plan.simulations);
   const nlohmann::json& p = j["position"];
@@ -195,21 +209,11 @@ TEST(CliPlanShotPosition, ValuationGhostBallIsTheLibrarysPlan) {
 // bit; the 2 behind the 9 at a corner, so that the leave's next shot is the
 // 9 by a combination through the 2.
 TEST(CliPlanShotPosition, GameBallIsTheLibrarysPlan) {
-  const TempDir dir;
   const std::string json = R"({"table": "pool_9ft", "balls": [{"id": 0, "position": [1.35, 0.75]},
     {"id": 1, "position": [1.85, 0.45]}, {"id": 2, "position": [0.5, 0.5]}, {"id": 9, "position": [0.4, 0.4]}]})";
-  const std::string scenario = dir.write("nine.json", json);
-  const CliRun r = run_cli({"plan-shot", scenario, "--ball", "1", "--position", "--valuation", "ghost_ball",
-                            "--game-ball", "9", "--simulations", "1000", "--json"});
-  ASSERT_EQ(r.status, 0) << r.err;
-  const nlohmann::json j = nlohmann::json::parse(r.out);
-  PositionRequest q;
-  q.shot.target = 1;
-  q.shot.simulations = 1000;
-  q.valuation = LeaveValuation::ghost_ball;
-  q.game_ball = 9;
-  const PositionPlanResult lib = plan_shot_for_position(scenario_from_json(json), q);
+  const auto [j, lib] = ghost_ball_plans(json, 9);
   EXPECT_EQ(j["cue"]["aim_deg"].get<double>(), lib.plan.shot.strike.aim_deg);
+  EXPECT_EQ(j["simulations"].get<int>(), lib.plan.simulations);
   const nlohmann::json& p = j["position"];
   EXPECT_EQ(p["score"].get<double>(), lib.leave.score);
   EXPECT_EQ(p["next_kind"], "combination");

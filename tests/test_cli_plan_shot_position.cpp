@@ -3,7 +3,8 @@
 // the JSON's "position" and "in_hand" objects, the choice by score, the
 // text's position lines, the written scenario's cue ball at its spot, and
 // --valuation ghost_ball the library's plan, and bad input naming --next,
-// --next-simulations, --valuation and --region.
+// --next-simulations, --valuation, --game-ball and --region; --game-ball
+// the library's plan with the leave's combination.
 #include <gtest/gtest.h>
 
 #include <nlohmann/json.hpp>

@@ -133,11 +133,12 @@ PlanRequest next_request(const Lookahead& la, const std::vector<int>& ids) {
   return n;
 }
 
-// The next shot's value on table `left` for the balls `ids` (not empty), as
-// PositionRequest::valuation says: the best window probability of a
-// windows-only search (its runs counted), or the best ghost-ball chance.
 double ghost_ball_shots(Lookahead& la, const Scenario& left, const std::vector<int>& ids, int shots);
 
+// The next shot's value on table `left` for the balls `ids` (not empty), as
+// PositionRequest::valuation says: the best window probability of a
+// windows-only search (its runs counted), or the best ghost-ball chance
+// (ghost_ball_shots() one shot deep: the game ball's combination counted).
 double next_shot_value(Lookahead& la, const Scenario& left, const std::vector<int>& ids) {
   if (la.q.valuation == LeaveValuation::ghost_ball) return ghost_ball_shots(la, left, ids, 1);
   return best_window_probability(left, next_request(la, ids), la.simulations);
@@ -335,7 +336,7 @@ double ghost_ball_bound(const Lookahead& la, const Scenario& left, const std::ve
 
 // A table a next pot's stroke leaves, its bound and its next targets.
 struct StrokeLeave {
-  double bound = 0.0;    // the best ghost-ball chance of the shot after the pot on it (1: no ball left)
+  double bound = 0.0;    // ghost_ball_bound() of the shot after the pot on it (1: no ball left)
   Scenario left;
   std::vector<int> ids;  // the next targets on it; empty: none left
 };
@@ -373,11 +374,14 @@ std::vector<StrokeLeave> stroke_leaves(Lookahead& la, const Scenario& left, cons
 // ghost-ball pots of its chance times the best, over the tables its
 // strokes leave (stroke_leaves()), of the value of the shots - 1 after it
 // (1 where it leaves no ball to play); 0 when the next shot has no
-// ghost-ball pot. The expectimax of PickPocket (Smith 2007) `shots` plies
-// deep, each chance node the ghost-ball chance, each later shot's stroke
-// searched instead of planned. Exact branch and bound: a value is a product
-// of chances, so no more than its first factor, and a pot (or a table)
-// whose chance (bound) is no more than the best value found cannot raise it.
+// ghost-ball pot. With PositionRequest::game_ball, at each of them the
+// larger of that and game_ball_combination_value(). The expectimax of
+// PickPocket (Smith 2007) `shots` plies deep, each chance node the
+// ghost-ball chance, each later shot's stroke searched instead of planned.
+// Exact branch and bound: a value is a product of chances, so no more than
+// its first factor, or the combination's value (ghost_ball_bound()), and a
+// pot (or a table) whose chance (bound) is no more than the best value
+// found cannot raise it.
 double ghost_ball_shots(Lookahead& la, const Scenario& left, const std::vector<int>& ids, int shots) {
   if (shots <= 1) return ghost_ball_bound(la, left, ids, shots);
   const std::vector<GhostBallPot> pots = ghost_ball_pots(left, la.cue_id, ids);

@@ -375,10 +375,7 @@ std::optional<ShotAction> safe_hit(const Scenario& table, int cue_ball, const st
       d_nearest = d;
       nearest = id;
     }
-    bool clear = true;
-    for (const SimulationBall& o : table.balls)
-      if (o.id != cue_ball && o.id != id && distance_to_segment(o.state.position, C, O) < 2.0 * R) clear = false;
-    if (clear && d < d_clear) {
+    if (path_clear(table.balls, C, O, 2.0 * R, {cue_ball, id}) && d < d_clear) {
       d_clear = d;
       nearest_clear = id;
     }

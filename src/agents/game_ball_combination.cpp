@@ -19,6 +19,7 @@
 
 #include "core/angles.hpp"
 #include "cueball/agents/agent.hpp"
+#include "cueball/planning/ghost_ball.hpp"
 
 namespace cueball {
 
@@ -58,12 +59,6 @@ std::vector<Vec2> combination_in_hand_spots(const Scenario& table, int cue_ball,
   std::vector<Vec2> others;
   for (const SimulationBall& b : table.balls)
     if (b.id != cue_ball) others.push_back(b.state.position);
-  // No ball but those named within two radii of the path a -> b.
-  const auto clear = [&](Vec2 a, Vec2 b, int skip_1, int skip_2) {
-    return std::none_of(table.balls.begin(), table.balls.end(), [&](const SimulationBall& x) {
-      return x.id != cue_ball && x.id != skip_1 && x.id != skip_2 && distance_to_segment(x.state.position, a, b) < 2.0 * R;
-    });
-  };
   std::vector<CombinationSpot> spots;
   for (const Pocket& p : table.table.pockets) {
     const double op = norm(p.centre - O);
@@ -77,7 +72,9 @@ std::vector<Vec2> combination_in_hand_spots(const Scenario& table, int cue_ball,
     if (cut > kMaxInHandCombinationCutDeg) continue;
     const Vec2 C = A - (2.0 * R + back) * v;  // straight behind the ball on: no cut on it
     if (!in_region(table.table, region, C) || !is_free_spot(table.table, others, C, R)) continue;
-    if (!clear(C, A, ball_on, ball_on) || !clear(A, GT, ball_on, target) || !clear(O, p.centre, target, target))
+    if (!path_clear(table.balls, C, A, 2.0 * R, {cue_ball, ball_on}) ||
+        !path_clear(table.balls, A, GT, 2.0 * R, {cue_ball, ball_on, target}) ||
+        !path_clear(table.balls, O, p.centre, 2.0 * R, {cue_ball, target}))
       continue;
     spots.push_back({C, std::cos(cut * kDegree) / (ag + op)});
   }

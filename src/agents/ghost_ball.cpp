@@ -128,13 +128,9 @@ std::optional<Vec2> ghost_ball_in_hand_spot(const Scenario& table, int cue_ball,
       const Vec2 u = (q.centre - O) / op;
       const Vec2 C = O - (2.0 * R + back) * u;
       if (!in_region(table.table, region, C) || !is_free_spot(table.table, others, C, R)) continue;
-      bool blocked = false;
-      for (const SimulationBall& b : table.balls)
-        if (b.id != cue_ball && b.id != target &&
-            (distance_to_segment(b.state.position, C, O) < 2.0 * R ||
-             distance_to_segment(b.state.position, O, q.centre) < 2.0 * R))
-          blocked = true;
-      if (blocked) continue;
+      if (!path_clear(table.balls, C, O, 2.0 * R, {cue_ball, target}) ||
+          !path_clear(table.balls, O, q.centre, 2.0 * R, {cue_ball, target}))
+        continue;
       const double score = 1.0 / op;
       if (!best || score > best_score) {
         best_score = score;

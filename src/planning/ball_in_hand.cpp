@@ -68,11 +68,7 @@ struct Hand {
   double R = 0.0;
 
   // No object ball but `target`'s centre within 2R of the path a -> b.
-  bool clear(Vec2 a, Vec2 b, int target) const {
-    return std::none_of(without.balls.begin(), without.balls.end(), [&](const SimulationBall& o) {
-      return o.id != target && distance_to_segment(o.state.position, a, b) < 2.0 * R;
-    });
-  }
+  bool clear(Vec2 a, Vec2 b, int target) const { return path_clear(without.balls, a, b, 2.0 * R, {target}); }
   // A place for the cue ball: inside the region, on the bed, kInHandGap clear of every ball.
   bool placeable(Vec2 p) const {
     if (q.region && !in_region(s.table, *q.region, p)) return false;

@@ -4,7 +4,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <initializer_list>
 #include <numbers>
 
 #include "cueball/planning/pocket_windows.hpp"
@@ -33,7 +32,8 @@ Vec2 window_middle(const PocketWindows& windows, std::size_t pocket, Vec2 O, Vec
   return P;
 }
 
-// No ball but `except` has its centre within `clearance` of the segment a -> b.
+}  // namespace
+
 bool path_clear(const std::vector<SimulationBall>& balls, Vec2 a, Vec2 b, double clearance,
                 std::initializer_list<int> except) {
   return std::none_of(balls.begin(), balls.end(), [&](const SimulationBall& x) {
@@ -41,8 +41,6 @@ bool path_clear(const std::vector<SimulationBall>& balls, Vec2 a, Vec2 b, double
            distance_to_segment(x.state.position, a, b) < clearance;
   });
 }
-
-}  // namespace
 
 std::vector<GhostBallPot> ghost_ball_pots(const Scenario& table, int cue_ball, const std::vector<int>& targets,
                                           GhostBallAim aim) {

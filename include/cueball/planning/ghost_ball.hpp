@@ -32,6 +32,7 @@
 #pragma once
 
 #include <array>
+#include <initializer_list>
 #include <vector>
 
 #include "cueball/simulation/scenario.hpp"
@@ -59,6 +60,13 @@ enum class GhostBallAim {
   window_middle,  ///< the middle of the pocket's window for the target's direction (the default)
   pocket_centre,  ///< the pocket's centre, the textbook rule (the ghost-ball agent's, the benchmarks' baseline)
 };
+
+/// Whether a ball's centre moving straight from a to b passes every ball
+/// but those whose ids are in `except` at `clearance` or more (2R: it meets
+/// none of them): the clear path of a ghost-ball pot, a combination, a
+/// placement behind a ball, a safe hit.
+bool path_clear(const std::vector<SimulationBall>& balls, Vec2 a, Vec2 b, double clearance,
+                std::initializer_list<int> except);
 
 /// Every clear ghost-ball pot of `targets` from the cue ball where it lies:
 /// pockets whose cut is at most kMaxCutDeg and whose straight paths C -> G

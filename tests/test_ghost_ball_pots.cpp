@@ -5,12 +5,14 @@
 // layouts every pot returned meets the definition, best first, and every
 // pocket left out fails it. The combinations of one ball through another:
 // a straight one's closed form, played on the engine within its tolerance;
-// a ball on any of its three paths removes it.
+// a ball on any of its three paths removes it; path_clear() at its
+// clearance.
 #include "cueball/planning/ghost_ball.hpp"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <initializer_list>
 #include <numbers>
 #include <random>
 #include <vector>
@@ -240,6 +242,23 @@ TEST(GhostBallPots, AStraightCombinationIsTheClosedFormAndDropsWithinItsToleranc
     missed += ghost_ball_stroke(s, 0, turned, 2.0, 0.0).potted ? 0 : 1;
   }
   EXPECT_GE(missed, 1);
+}
+
+// path_clear(): a ball whose centre lies `clearance` or more from the
+// segment (beside it or beyond its ends) leaves it clear, one just inside
+// blocks it unless its id is excepted.
+TEST(GhostBallPots, APathIsClearOfEveryBallButThoseExceptedAtTheClearance) {
+  const double R = layout({}).settings.parameters.ball.radius;
+  const Vec2 a{0.5, 0.5}, b{1.5, 0.5};
+  const auto clear_with = [&](Vec2 p, std::initializer_list<int> except) {
+    return path_clear(layout({{0, a}, {3, p}}).balls, a, b, 2.0 * R, except);
+  };
+  EXPECT_TRUE(clear_with({1.0, 0.5 + 2.0 * R + 1e-9}, {0}));   // beside it, just clear
+  EXPECT_FALSE(clear_with({1.0, 0.5 + 2.0 * R - 1e-6}, {0}));  // just inside
+  EXPECT_TRUE(clear_with({1.0, 0.5 + 2.0 * R - 1e-6}, {0, 3}));  // excepted
+  EXPECT_TRUE(clear_with({1.5 + 2.0 * R + 1e-6, 0.5}, {0}));    // beyond the end
+  EXPECT_FALSE(clear_with({1.5 + 2.0 * R - 1e-6, 0.5}, {0}));
+  EXPECT_FALSE(path_clear(layout({{0, a}}).balls, a, b, 2.0 * R, {}));  // the ball at a itself, not excepted
 }
 
 TEST(GhostBallPots, ABallOnAnyOfACombinationsPathsRemovesIt) {

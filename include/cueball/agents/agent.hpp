@@ -178,8 +178,9 @@ TimedRounds plan_in_time(const AgentOptions& options, const std::function<void(c
 /// more finalists"); with the game ball by a combination, 1,394 of 2,340
 /// racks not tuned on against 1,308 (docs/planner-benchmark.md, "The game
 /// ball by a combination"); with each leave valued by that combination too,
-/// 1,457 of them (0.623) against 1,394 (docs/planner-benchmark.md, "A leave
-/// that sets up the game ball's combination").
+/// 1,457 of them (0.623) against 1,394, and 2,070 of 3,420 with two fresh
+/// sets (0.605; docs/planner-benchmark.md, "A leave that sets up the game
+/// ball's combination").
 /// kStrongestPositionSimulations, the runs of a next-shot plan, are spent
 /// only with the windows valuation; position play is on while they are > 0.
 inline constexpr int kStrongestSimulations = 4000;

@@ -146,14 +146,14 @@ void run_plan_shot(const PlanShotFlags& f, std::ostream& out, std::ostream& err)
 
   const bool position_play = f.position || f.in_hand;
   if (!position_play && f.next) throw UsageError("--next = " + std::to_string(*f.next) + " needs --position");
+  if (!position_play && f.game_ball)
+    throw UsageError("--game-ball = " + std::to_string(*f.game_ball) + " needs --position or --in-hand");
   const std::optional<LeaveValuation> valuation = leave_valuation_from_string(f.valuation);
   if (!valuation)
     throw UsageError("--valuation = " + quote_input(f.valuation) + " is not a valuation; allowed: " +
                      leave_valuation_names());
   if (!position_play && *valuation != LeaveValuation::windows)
     throw UsageError("--valuation = " + quote_input(f.valuation) + " needs --position or --in-hand");
-  if (f.game_ball && *valuation != LeaveValuation::ghost_ball)
-    throw UsageError("--game-ball = " + std::to_string(*f.game_ball) + " needs --valuation ghost_ball");
   if (!f.in_hand && !f.region.empty()) throw UsageError("--region = " + quote_input(f.region) + " needs --in-hand");
   std::optional<PlacementRegion> region;
   if (const std::optional<PlacementRegion::Kind> kind = placement_region_from_string(f.region);

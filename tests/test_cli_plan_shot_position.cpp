@@ -235,8 +235,9 @@ TEST(CliPlanShotPosition, BadNextIsAUsageErrorNamingTheFlag) {
   expect_usage_error({"plan-shot", scenario, "--ball", "1", "--position", "--valuation", "geometry"},
                      "--valuation = \"geometry\" is not a valuation; allowed: windows, ghost_ball");
   expect_usage_error({"plan-shot", scenario, "--ball", "1", "--valuation", "ghost_ball"}, "--valuation");  // needs --position
+  expect_usage_error({"plan-shot", scenario, "--ball", "1", "--game-ball", "2"}, "--game-ball = 2 needs --position");
   expect_usage_error({"plan-shot", scenario, "--ball", "1", "--position", "--game-ball", "2"},
-                     "--game-ball = 2 needs --valuation ghost_ball");
+                     "--game-ball = 2 needs valuation ghost_ball");
   expect_usage_error({"plan-shot", scenario, "--ball", "1", "--position", "--valuation", "ghost_ball", "--game-ball", "7"},
                      "--game-ball = 7 is not the id of a ball on the table; allowed: an object ball on the table");
 }

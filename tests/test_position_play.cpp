@@ -645,6 +645,9 @@ TEST(PositionPlay, BadInputNamesTheField) {
   q.next_target = 2;  // not both
   EXPECT_EQ(field(q), "next_targets");
   q = request_for(1);
+  q.game_ball = 2;  // with valuation windows
+  EXPECT_EQ(field(q), "game_ball");
+  q.valuation = LeaveValuation::ghost_ball;
   q.game_ball = 9;  // not on the table
   EXPECT_EQ(field(q), "game_ball");
   q.game_ball = 0;  // the cue ball

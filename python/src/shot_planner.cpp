@@ -134,6 +134,8 @@ void bind_shot_planner(py::module_& m) {
         const bool position_play = position || in_hand;
         if (!position_play && next)
           throw cueball::InvalidArgument("next", "next = " + std::to_string(*next) + " needs position=True");
+        if (!position_play && game_ball)
+          throw cueball::InvalidArgument("game_ball", "game_ball = " + std::to_string(*game_ball) + " needs position=True");
         if (!position_play && next_targets)
           throw cueball::InvalidArgument("next_targets", "next_targets needs position=True");
         if (!in_hand && region) throw cueball::InvalidArgument("region", "region needs in_hand=True");
@@ -144,9 +146,6 @@ void bind_shot_planner(py::module_& m) {
         if (!position_play && *leave_valuation != cueball::LeaveValuation::windows)
           throw cueball::InvalidArgument("valuation", "valuation = " + cueball::quote_input(valuation) +
                                                           " needs position=True or in_hand=True");
-        if (game_ball && *leave_valuation != cueball::LeaveValuation::ghost_ball)
-          throw cueball::InvalidArgument("game_ball", "game_ball = " + std::to_string(*game_ball) +
-                                                          " needs valuation='ghost_ball'");
         if (next_simulations < cueball::kMinPlanSimulations || next_simulations > cueball::kMaxPlanSimulations)
           throw cueball::InvalidArgument("next_simulations", static_cast<double>(next_simulations),
                                          "[" + std::to_string(cueball::kMinPlanSimulations) + ", " +

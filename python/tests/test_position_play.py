@@ -143,6 +143,9 @@ class PositionPlayTest(unittest.TestCase):
             cueball.plan_shot(scenario, 1, simulations=1000, position=True, game_ball=9)  # windows
         self.assertIn("game_ball", str(e.exception))
         with self.assertRaises(ValueError) as e:
+            cueball.plan_shot(scenario, 1, simulations=1000, valuation="ghost_ball", game_ball=9)  # no position play
+        self.assertIn("game_ball", str(e.exception))
+        with self.assertRaises(ValueError) as e:
             cueball.plan_shot(scenario, 1, simulations=1000, position=True, valuation="ghost_ball", game_ball=7)
         self.assertIn("game_ball", str(e.exception))
 

@@ -138,7 +138,8 @@ Pot plan_pot(const Turn& t, const std::vector<ShotKind>& kinds) {
       p.depth = t.options.position_depth;
       p.valuation = t.options.position_valuation;
       const std::optional<int> game = game_ball(t.state);
-      if (t.options.game_ball_combinations && game && find_ball(t.state.table.balls, *game)) {
+      if (t.options.game_ball_combinations && t.options.position_valuation == LeaveValuation::ghost_ball && game &&
+          find_ball(t.state.table.balls, *game)) {
         p.game_ball = game;
         p.later_shot_chance = kRunOutShotChance;
       }

@@ -392,7 +392,11 @@ double ghost_ball_shots(Lookahead& la, const Scenario& left, const std::vector<i
     double after = 0.0;
     for (const StrokeLeave& leave : stroke_leaves(la, left, pots[k], shots - 1)) {
       if (leave.bound <= after) break;  // best bound first: none after it can gain
-      after = std::max(after, leave.ids.empty() ? 1.0 : ghost_ball_shots(la, leave.left, leave.ids, shots - 1));
+      // One shot after it: its value is the bound already worked out.
+      const double then = leave.ids.empty() ? 1.0
+                          : shots - 1 <= 1  ? leave.bound
+                                            : ghost_ball_shots(la, leave.left, leave.ids, shots - 1);
+      after = std::max(after, then);
     }
     value = std::max(value, chance * after);
   }
@@ -546,6 +550,9 @@ PositionPlanResult plan_shot_for_position(const Scenario& table_state, const Pos
   if (!(q.later_shot_chance > 0.0 && q.later_shot_chance <= 1.0))
     throw InvalidArgument("later_shot_chance", q.later_shot_chance, "(0, 1]",
                           "the chance of each shot of a run beyond the lookahead");
+  if (q.game_ball && q.valuation != LeaveValuation::ghost_ball)
+    throw InvalidArgument("game_ball", "game_ball = " + std::to_string(*q.game_ball) +
+                                           " needs valuation ghost_ball; allowed: none with valuation windows");
   if (q.game_ball && (!has_ball(s, *q.game_ball) || *q.game_ball == la.cue_id))
     throw InvalidArgument("game_ball", "game_ball = " + std::to_string(*q.game_ball) +
                                            (*q.game_ball == la.cue_id ? " is the cue ball"

@@ -218,7 +218,7 @@ struct PositionRequest {
   /// ghost-ball chances and the best ghost-ball combination of the game
   /// ball through that target (ghost_ball_combinations()), the run then
   /// won. None (the default): pots one by one alone. A ball on the table
-  /// other than the cue ball.
+  /// other than the cue ball, with valuation ghost_ball only.
   std::optional<int> game_ball;
   /// The chance of each shot of a run beyond the lookahead, (0, 1]: a
   /// game ball's combination wins the rack, while the run's value covers

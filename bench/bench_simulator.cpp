@@ -8,11 +8,14 @@
 // two run alternately in one process). Counters report events and
 // microseconds per shot. BM_OneBallCushionsExactVsHan times the five-rail shot
 // under the exact cushion and under han_2005 alternately (their ratio),
-// BM_BreakExactVsHan the built-in and the frozen 9-ball breaks.
+// BM_BreakExactVsHan the built-in and the frozen 9-ball breaks;
+// BM_OneBallCushionsBudget and BM_BreakBudget time the same shots' cushion
+// impacts alone (what the sliding ones may cost for a ratio of 1.5).
 #include <benchmark/benchmark.h>
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstdint>
 #include <numbers>
 #include <string>
@@ -100,10 +103,13 @@ BENCHMARK_CAPTURE(BM_NineBallBreakCushion, stronge_compliant, CushionModel::stro
 // rails under each cushion model (cushion_model.hpp), 13 events. The shot's
 // time is mostly its cushion impacts: the ratios between the models are
 // what a model costs a planner's inner loop.
-void BM_OneBallCushions(benchmark::State& st, CushionSettings cushion) {
-  Scenario s = scenario_from_json(R"({"table": "carom_10ft",
+Scenario five_rails() {
+  return scenario_from_json(R"({"table": "carom_10ft",
       "balls": [{"id": 0, "position": [0.7, 0.4]}],
       "cue": {"ball": 0, "aim_deg": 27, "speed": 3.0, "side": 0.3, "height": 0.2}})");
+}
+void BM_OneBallCushions(benchmark::State& st, CushionSettings cushion) {
+  Scenario s = five_rails();
   s.settings.cushion = cushion;
   const SimulationResult r = run_scenario(s);
   st.counters["cushion_hits"] = static_cast<double>(
@@ -157,23 +163,116 @@ void exact_vs_han(benchmark::State& st, const Scenario& exact, int shots) {
 
 // The five-rail shot (issue 29: the exact cushion at the price of a closed
 // form; goal exact_over_han <= 1.5).
-void BM_OneBallCushionsExactVsHan(benchmark::State& st) {
-  exact_vs_han(st, scenario_from_json(R"({"table": "carom_10ft",
-      "balls": [{"id": 0, "position": [0.7, 0.4]}],
-      "cue": {"ball": 0, "aim_deg": 27, "speed": 3.0, "side": 0.3, "height": 0.2}})"),
-               64);
-}
+void BM_OneBallCushionsExactVsHan(benchmark::State& st) { exact_vs_han(st, five_rails(), 64); }
 BENCHMARK(BM_OneBallCushionsExactVsHan)->Unit(benchmark::kMillisecond);
+
+// Issue 29's budget: a shot's cushion and jaw impacts under the exact model
+// are solved alone, as the simulator passes them to cushion_rebound() (the
+// ball an ulp before the event, in the impact frame), alternately with the
+// shot under each model, `shots` of each in a row. Counters: the shot under
+// each model and its events; its impacts the Runge-Kutta solver takes
+// (sliding_us, a shot's worth) and those the rolling-ball table answers
+// (rolling_us); the ratio to
+// han_2005 the shot would keep were its sliding impacts free
+// (free_sliding_over_han); and what a ratio of 1.5 (the five rails' goal)
+// leaves them (sliding_budget_us = 1.5 han_us - (exact_us - sliding_us)).
+struct RecordedImpact {
+  IncomingBall ball;
+  CushionContact contact;
+};
+
+// The impact of event e as the simulator solved it; `replayed` is set to
+// whether cushion_rebound() on it gives the velocity the shot left the event
+// with (to 1e-9 m/s: the ball is taken an ulp before the event).
+RecordedImpact recorded_impact(const Scenario& s, const SimulationResult& shot, const Event& e, bool& replayed) {
+  const auto index = static_cast<std::size_t>(
+      std::find_if(shot.balls.begin(), shot.balls.end(), [&](const BallTrajectory& b) { return b.id == e.ball; }) -
+      shot.balls.begin());
+  const BallState b = shot.state_at(index, std::nextafter(e.time, 0.0), s.settings.parameters);
+  Vec2 n;  // the wall's inward normal at the contact
+  double height = 0.0;
+  if (e.type == EventType::ball_cushion) {
+    const CushionSegment& c = s.table.cushions[static_cast<std::size_t>(e.other)];
+    n = perp((c.end - c.start) / norm(c.end - c.start));
+    height = c.contact_height;
+  } else {
+    const JawArc& j = s.table.jaws[static_cast<std::size_t>(e.other)];
+    n = (b.position - j.centre) / norm(b.position - j.centre);
+    height = j.contact_height;
+  }
+  const Vec2 x{-n.y, n.x}, y = -n;  // the impact frame: Y into the wall, Z up
+  const Vec3 w = b.angular_velocity;
+  RecordedImpact r{{}, cushion_contact(s.settings.parameters, s.settings.cushion, height)};
+  r.ball.velocity = {dot(b.velocity, x), dot(b.velocity, y), 0.0};
+  r.ball.angular_velocity = {w.x * x.x + w.y * x.y, w.x * y.x + w.y * y.y, w.z};
+  const Vec3 out = cushion_rebound(r.ball, r.contact).velocity;
+  const Vec2 after = shot.state_at(index, e.time, s.settings.parameters).velocity;
+  replayed = norm(out.x * x + out.y * y - after) < 1e-9;
+  return r;
+}
+
+void cushion_budget(benchmark::State& st, const Scenario& exact, int shots) {
+  Scenario han = exact;
+  han.settings.cushion = default_cushion_settings(CushionModel::han_2005);
+  const std::vector<SimulationBall> balls = balls_after_strike(exact);
+  const SimulationResult shot = simulate(exact.table, balls, exact.settings);
+  st.counters["exact_events"] = static_cast<double>(shot.events.size());
+  st.counters["han_events"] = static_cast<double>(simulate(han.table, balls, han.settings).events.size());
+  std::vector<RecordedImpact> sliding, rolling;
+  for (const Event& e : shot.events) {
+    if (e.type != EventType::ball_cushion && e.type != EventType::ball_jaw) continue;
+    bool replayed = false;
+    RecordedImpact r = recorded_impact(exact, shot, e, replayed);
+    if (!replayed) {
+      st.SkipWithError("an impact solved alone does not give the shot's rebound");
+      return;
+    }
+    const bool looked_up =
+        solve_cushion_impact_unchecked(r.ball, r.contact.mathavan, r.contact.mathavan_options).solver_steps == 0;
+    (looked_up ? rolling : sliding).push_back(r);
+  }
+  auto timed = [shots](auto&& run) {
+    const auto t0 = std::chrono::steady_clock::now();
+    for (int i = 0; i < shots; ++i) run();
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  };
+  auto rebounds = [](const std::vector<RecordedImpact>& impacts) {
+    for (const RecordedImpact& i : impacts) benchmark::DoNotOptimize(cushion_rebound(i.ball, i.contact).velocity.x);
+  };
+  double exact_s = 0.0, han_s = 0.0, sliding_s = 0.0, rolling_s = 0.0;
+  for (auto _ : st) {
+    exact_s += timed([&] { benchmark::DoNotOptimize(simulate(exact.table, balls, exact.settings).end_time); });
+    han_s += timed([&] { benchmark::DoNotOptimize(simulate(han.table, balls, han.settings).end_time); });
+    sliding_s += timed([&] { rebounds(sliding); });
+    rolling_s += timed([&] { rebounds(rolling); });
+  }
+  const double us = 1e6 / (static_cast<double>(st.iterations()) * shots);
+  st.counters["exact_us"] = exact_s * us;
+  st.counters["han_us"] = han_s * us;
+  st.counters["sliding_impacts"] = static_cast<double>(sliding.size());
+  st.counters["rolling_impacts"] = static_cast<double>(rolling.size());
+  st.counters["sliding_us"] = sliding_s * us;
+  st.counters["rolling_us"] = rolling_s * us;
+  st.counters["free_sliding_over_han"] = (exact_s - sliding_s) / han_s;
+  st.counters["sliding_budget_us"] = (1.5 * han_s - (exact_s - sliding_s)) * us;
+}
+
+void BM_OneBallCushionsBudget(benchmark::State& st) { cushion_budget(st, five_rails(), 64); }
+BENCHMARK(BM_OneBallCushionsBudget)->Unit(benchmark::kMillisecond);
 
 // The built-in 9-ball break (frozen:0, BM_NineBallBreakCushion's) and the
 // frozen 9-ball break of BM_Break (frozen:1), the same way.
-void BM_BreakExactVsHan(benchmark::State& st) {
-  exact_vs_han(st,
-               st.range(0) == 0 ? default_scenario() : scenario_from_json(R"({"table": "pool_9ft",
-      "rack": {"type": "nine_ball", "gap_sigma": 0, "seed": 3}, "cue": {"ball": 0, "target": 1, "speed": 9.0}})"),
-               2);
+Scenario nine_ball_break(bool frozen) {
+  return frozen ? scenario_from_json(R"({"table": "pool_9ft",
+      "rack": {"type": "nine_ball", "gap_sigma": 0, "seed": 3}, "cue": {"ball": 0, "target": 1, "speed": 9.0}})")
+                : default_scenario();
 }
+void BM_BreakExactVsHan(benchmark::State& st) { exact_vs_han(st, nine_ball_break(st.range(0) != 0), 2); }
 BENCHMARK(BM_BreakExactVsHan)->Arg(0)->Arg(1)->ArgNames({"frozen"})->Unit(benchmark::kMillisecond);
+
+// The same breaks' budget (cushion_budget() above).
+void BM_BreakBudget(benchmark::State& st) { cushion_budget(st, nine_ball_break(st.range(0) != 0), 2); }
+BENCHMARK(BM_BreakBudget)->Arg(0)->Arg(1)->ArgNames({"frozen"})->Unit(benchmark::kMillisecond);
 
 // simulate() in a loop over one scenario against simulate_unchecked() of the
 // same shot, alternately in each iteration (issue 29: validation that costs

@@ -444,7 +444,7 @@ BENCHMARK(BM_CushionRandomAccuracy)->Unit(benchmark::kSecond)->Iterations(1);
 // 5e-10); width 1 fails even at degree 15 along s_C (6e-4, 2.5e-3), where the
 // interval passes the rolling line s_C = 0: a bed slip starting from nearly
 // zero turns onto its slow manifold, and the outcome is not smooth there
-// (README, "Cushion models").
+// (docs/cushion-speed.md).
 void BM_CushionSlidingSmoothness(benchmark::State& state) {
   const Scenario carom = scenario_from_json(R"({"table": "carom_10ft", "balls": [{"id": 0, "position": [0.7, 0.4]}]})");
   const CushionImpactModel model =

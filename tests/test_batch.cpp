@@ -126,7 +126,7 @@ void synthetic_shot(int shot, ShotRecord& r) {
 // ------------------------------------------------------------------ reduction
 
 TEST(BatchReduction, MatchesAPlainTwoPassComputation) {
-  const int shots = 1000;  // 15 full blocks and a partial one
+  const int shots = 1000;  // 15 full blocks of 63 and one of 55
   const BatchResult r = detail::run_batch(shots, 3, kSyntheticBalls, synthetic_shot);
   // Recompute in the most obvious way.
   ShotRecord rec;
@@ -180,8 +180,32 @@ TEST(BatchReduction, MatchesAPlainTwoPassComputation) {
   }
 }
 
+// A batch's blocks are what its threads share: a small batch is cut into
+// kBatchBlocks of them (200 shots in 64-shot blocks left one of two threads
+// 128 shots and the other 72), a large one into blocks of kBatchBlockShots,
+// and a block never falls below kBatchMinBlockShots.
+TEST(BatchReduction, ASmallBatchIsCutIntoBlocksForItsThreads) {
+  EXPECT_EQ(batch_block_shots(1), kBatchMinBlockShots);
+  EXPECT_EQ(batch_block_shots(64), 4);
+  EXPECT_EQ(batch_block_shots(200), 13);  // 16 blocks, the last of 5
+  EXPECT_EQ(batch_block_shots(1024), kBatchBlockShots);
+  EXPECT_EQ(batch_block_shots(kMaxBatchShots), kBatchBlockShots);
+  for (int shots = 1; shots <= 5000; ++shots) {
+    const int block = batch_block_shots(shots);
+    const int blocks = (shots + block - 1) / block;
+    ASSERT_GE(block, kBatchMinBlockShots) << shots;
+    ASSERT_LE(block, kBatchBlockShots) << shots;
+    if (shots >= kBatchBlocks * kBatchMinBlockShots && shots <= kBatchBlocks * kBatchBlockShots) {
+      ASSERT_LE(blocks, kBatchBlocks) << shots;
+      ASSERT_GE(blocks, 13) << shots;  // ceil(65 / 5): the fewest
+    } else if (shots > kBatchBlocks * kBatchBlockShots) {
+      ASSERT_EQ(block, kBatchBlockShots) << shots;
+    }
+  }
+}
+
 TEST(BatchReduction, BitIdenticalForAnyNumberOfThreads) {
-  for (int shots : {1, 63, 64, 65, 1000, 5000}) {
+  for (int shots : {1, 5, 63, 64, 65, 200, 1000, 1025, 5000}) {
     const BatchResult one = detail::run_batch(shots, 1, kSyntheticBalls, synthetic_shot);
     for (int threads : {2, 3, 4, 8, 32}) {
       expect_identical(one, detail::run_batch(shots, threads, kSyntheticBalls, synthetic_shot),
@@ -192,7 +216,7 @@ TEST(BatchReduction, BitIdenticalForAnyNumberOfThreads) {
 
 TEST(Batch, ResultsAreBitIdenticalWithOneTwoAndFourThreads) {
   const Scenario s = default_scenario();
-  const BatchResult one = simulate_batch(s, {150, 1, 11});  // two full blocks and a partial one
+  const BatchResult one = simulate_batch(s, {150, 1, 11});  // 15 blocks of 10
   EXPECT_EQ(one.simulated + one.miscues + one.failures, 150);
   EXPECT_GT(one.simulated, 140);
   for (int threads : {2, 4}) expect_identical(one, simulate_batch(s, {150, threads, 11}), std::to_string(threads));

@@ -192,7 +192,8 @@ BatchResult run_batch(int shots, int threads, std::size_t n, const PlayShot& pla
     Partial part;
     std::vector<ShotOutcome> outcomes;
   };
-  const int block_count = (shots + kBatchBlockShots - 1) / kBatchBlockShots;
+  const int block = batch_block_shots(shots);
+  const int block_count = (shots + block - 1) / block;
   // Finished blocks wait here until every block before them is merged; a
   // worker that runs ahead by more than `window` blocks waits for the merge.
   const int window = 4 * threads + 2;
@@ -206,6 +207,14 @@ BatchResult run_batch(int shots, int threads, std::size_t n, const PlayShot& pla
   int error_shot = INT_MAX;          // lowest failing shot (under mutex)
   std::exception_ptr error;
 
+  // Block b into the total and its outcomes to the sink (under mutex, in block order).
+  const auto merge_block = [&](int b, const Partial& part, const std::vector<ShotOutcome>& outcomes) {
+    total.merge(part);
+    if (sink)
+      for (std::size_t i = 0; i < outcomes.size(); ++i) sink(b * block + static_cast<int>(i), outcomes[i]);
+    ++merged;
+  };
+
   const auto work = [&] {
     ShotRecord record;
     Partial part(n);
@@ -216,7 +225,7 @@ BatchResult run_batch(int shots, int threads, std::size_t n, const PlayShot& pla
       // failing shot is found whatever the threads do.
       const int b = next_block.fetch_add(1);
       if (b >= block_count) return;
-      const int first = b * kBatchBlockShots, last = std::min(shots, first + kBatchBlockShots);
+      const int first = b * block, last = std::min(shots, first + block);
       {
         std::unique_lock<std::mutex> lock(mutex);
         merged_more.wait(lock, [&] { return b < merged + window || stop.load(); });
@@ -243,17 +252,16 @@ BatchResult run_batch(int shots, int threads, std::size_t n, const PlayShot& pla
       }
       const std::lock_guard<std::mutex> lock(mutex);
       if (stop.load()) continue;  // the result is not needed any more
-      finished.emplace(b, Finished{part, sink ? std::move(outcomes) : std::vector<ShotOutcome>{}});
-      outcomes.clear();
       bool advanced = false;
+      if (b == merged) {  // next in order (always so on one thread): merged at once, nothing copied
+        merge_block(b, part, outcomes);
+        advanced = true;
+      } else {
+        finished.emplace(b, Finished{part, sink ? std::move(outcomes) : std::vector<ShotOutcome>{}});
+        outcomes.clear();
+      }
       for (auto it = finished.begin(); it != finished.end() && it->first == merged; it = finished.erase(it)) {
-        total.merge(it->second.part);
-        if (sink) {
-          const int block_first = it->first * kBatchBlockShots;
-          for (std::size_t i = 0; i < it->second.outcomes.size(); ++i)
-            sink(block_first + static_cast<int>(i), it->second.outcomes[i]);
-        }
-        ++merged;
+        merge_block(it->first, it->second.part, it->second.outcomes);
         advanced = true;
       }
       if (advanced) merged_more.notify_all();

@@ -4,8 +4,9 @@
 //
 // Shot k perturbs the scenario's cue strike with Gaussian execution noise
 // (the scenario's CueStrikeNoise standard deviations) drawn from a generator
-// seeded by (seed, k) alone. The shots are reduced in fixed blocks of
-// kBatchBlockShots consecutive shots, each block in shot order, and the
+// seeded by (seed, k) alone. The shots are reduced in blocks of
+// batch_block_shots(N) consecutive shots (a function of the batch size N
+// alone), each block in shot order, and the
 // blocks are merged in block order, so the result is bit-identical for a
 // given seed whatever the number of threads, and the memory a batch takes
 // does not grow with the number of shots (a few blocks' partial sums per
@@ -38,6 +39,7 @@
 // throw), whatever the number of threads.
 #pragma once
 
+#include <algorithm>
 #include <array>
 #include <cstdint>
 #include <functional>
@@ -55,9 +57,21 @@ namespace cueball {
 inline constexpr int kMaxBatchShots = 100000000;
 /// Largest number of worker threads.
 inline constexpr int kMaxBatchThreads = 256;
-/// Shots per reduction block (a fixed number: it must not depend on the
-/// thread count, or the rounding of the sums would).
+/// Most shots in one reduction block.
 inline constexpr int kBatchBlockShots = 64;
+/// Blocks a batch is cut into, where its blocks can be that small ...
+inline constexpr int kBatchBlocks = 16;
+/// ... and the fewest shots in a block.
+inline constexpr int kBatchMinBlockShots = 4;
+/// Shots per reduction block in a batch of `shots`: enough blocks to share
+/// among the threads (kBatchBlocks of them up to 1,024 shots; a batch of
+/// 200 in 64-shot blocks left one of two threads 128 shots and the other
+/// 72) without a block's bookkeeping weighing on cheap shots. A function
+/// of the batch size alone: never of the thread count, or the rounding of
+/// the sums would be.
+constexpr int batch_block_shots(int shots) {
+  return std::clamp((shots + kBatchBlocks - 1) / kBatchBlocks, kBatchMinBlockShots, kBatchBlockShots);
+}
 
 /// What one shot did, derived from its SimulationResult's events
 /// (outcome_from_result). The vectors have one entry per ball, in the
@@ -161,7 +175,7 @@ LimitedStrike reflect_into_limits(const CueStrike& strike);
 // execution noise) and returns every shot's outcome, struct-of-arrays: flat
 // row-major vectors that a binding can hand out as NumPy arrays of shape
 // (N,), (N, balls) or (N, balls, 2) without touching the elements. Shots are
-// scheduled exactly as simulate_batch's (blocks of kBatchBlockShots, work
+// scheduled exactly as simulate_batch's (blocks of batch_block_shots(N), work
 // stealing) and each writes only its own rows, so the arrays are
 // bit-identical whatever the number of threads; a shot's error other than
 // SimulationError is rethrown in the caller, the lowest shot's winning, as
@@ -281,7 +295,7 @@ using ShotRecord = ShotOutcome;
 using PlayShot = std::function<void(int shot, ShotRecord& record)>;
 
 /// The scheduler and reducer behind simulate_batch and simulate_many, for
-/// any player: blocks of kBatchBlockShots shots taken by `threads` workers,
+/// any player: blocks of batch_block_shots(shots) shots taken by `threads` workers,
 /// reduced and merged in block order (at most 4 x threads + 2 finished
 /// blocks wait to be merged), errors rethrown by lowest shot; `sink`, when
 /// set, receives every outcome in shot order as its block is merged. Fills

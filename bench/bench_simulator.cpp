@@ -18,6 +18,7 @@
 #include <cmath>
 #include <cstdint>
 #include <numbers>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -137,23 +138,32 @@ BENCHMARK_CAPTURE(BM_OneBallCushions, han_2005, default_cushion_settings(Cushion
 BENCHMARK_CAPTURE(BM_OneBallCushions, stronge_compliant, default_cushion_settings(CushionModel::stronge_compliant))
     ->Unit(benchmark::kMicrosecond);
 
+// Seconds that `run` takes `shots` times in a row (so that the clock's reads
+// do not count).
+template <class Run>
+double seconds_of(int shots, const Run& run) {
+  const auto t0 = std::chrono::steady_clock::now();
+  for (int i = 0; i < shots; ++i) run();
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+
+// The scenario under han_2005 (with its own constants) instead of its cushion.
+Scenario under_han(Scenario s) {
+  s.settings.cushion = default_cushion_settings(CushionModel::han_2005);
+  return s;
+}
+
 // A shot under the default cushion (mathavan_2010, exact) and under
-// han_2005, alternately in each iteration, `shots` of each in a row (so that
-// the clock's reads do not count). Counters: microseconds a shot under each,
-// and their ratio.
+// han_2005, alternately in each iteration, `shots` of each in a row.
+// Counters: microseconds a shot under each, and their ratio.
 void exact_vs_han(benchmark::State& st, const Scenario& exact, int shots) {
-  Scenario han = exact;
-  han.settings.cushion = default_cushion_settings(CushionModel::han_2005);
+  const Scenario han = under_han(exact);
   const std::vector<SimulationBall> balls = balls_after_strike(exact);
+  auto play = [&](const Scenario& s) { benchmark::DoNotOptimize(simulate(s.table, balls, s.settings).end_time); };
   double exact_s = 0.0, han_s = 0.0;
   for (auto _ : st) {
-    const auto t0 = std::chrono::steady_clock::now();
-    for (int i = 0; i < shots; ++i) benchmark::DoNotOptimize(simulate(exact.table, balls, exact.settings).end_time);
-    const auto t1 = std::chrono::steady_clock::now();
-    for (int i = 0; i < shots; ++i) benchmark::DoNotOptimize(simulate(han.table, balls, han.settings).end_time);
-    const auto t2 = std::chrono::steady_clock::now();
-    exact_s += std::chrono::duration<double>(t1 - t0).count();
-    han_s += std::chrono::duration<double>(t2 - t1).count();
+    exact_s += seconds_of(shots, [&] { play(exact); });
+    han_s += seconds_of(shots, [&] { play(han); });
   }
   const double n = static_cast<double>(st.iterations()) * shots;
   st.counters["exact_us"] = 1e6 * exact_s / n;
@@ -181,10 +191,10 @@ struct RecordedImpact {
   CushionContact contact;
 };
 
-// The impact of event e as the simulator solved it; `replayed` is set to
-// whether cushion_rebound() on it gives the velocity the shot left the event
+// The impact of event e as the simulator passed it to cushion_rebound(), or
+// none where that call does not give the velocity the shot left the event
 // with (to 1e-9 m/s: the ball is taken an ulp before the event).
-RecordedImpact recorded_impact(const Scenario& s, const SimulationResult& shot, const Event& e, bool& replayed) {
+std::optional<RecordedImpact> recorded_impact(const Scenario& s, const SimulationResult& shot, const Event& e) {
   const auto index = static_cast<std::size_t>(
       std::find_if(shot.balls.begin(), shot.balls.end(), [&](const BallTrajectory& b) { return b.id == e.ball; }) -
       shot.balls.begin());
@@ -200,20 +210,17 @@ RecordedImpact recorded_impact(const Scenario& s, const SimulationResult& shot, 
     n = (b.position - j.centre) / norm(b.position - j.centre);
     height = j.contact_height;
   }
-  const Vec2 x{-n.y, n.x}, y = -n;  // the impact frame: Y into the wall, Z up
-  const Vec3 w = b.angular_velocity;
+  const CushionImpactFrame frame(n);
   RecordedImpact r{{}, cushion_contact(s.settings.parameters, s.settings.cushion, height)};
-  r.ball.velocity = {dot(b.velocity, x), dot(b.velocity, y), 0.0};
-  r.ball.angular_velocity = {w.x * x.x + w.y * x.y, w.x * y.x + w.y * y.y, w.z};
-  const Vec3 out = cushion_rebound(r.ball, r.contact).velocity;
+  r.ball.velocity = frame.to_frame(b.velocity, 0.0);
+  r.ball.angular_velocity = frame.to_frame(horizontal(b.angular_velocity), b.angular_velocity.z);
   const Vec2 after = shot.state_at(index, e.time, s.settings.parameters).velocity;
-  replayed = norm(out.x * x + out.y * y - after) < 1e-9;
+  if (!(norm(frame.from_frame(cushion_rebound(r.ball, r.contact).velocity) - after) < 1e-9)) return std::nullopt;
   return r;
 }
 
 void cushion_budget(benchmark::State& st, const Scenario& exact, int shots) {
-  Scenario han = exact;
-  han.settings.cushion = default_cushion_settings(CushionModel::han_2005);
+  const Scenario han = under_han(exact);
   const std::vector<SimulationBall> balls = balls_after_strike(exact);
   const SimulationResult shot = simulate(exact.table, balls, exact.settings);
   st.counters["exact_events"] = static_cast<double>(shot.events.size());
@@ -221,30 +228,25 @@ void cushion_budget(benchmark::State& st, const Scenario& exact, int shots) {
   std::vector<RecordedImpact> sliding, rolling;
   for (const Event& e : shot.events) {
     if (e.type != EventType::ball_cushion && e.type != EventType::ball_jaw) continue;
-    bool replayed = false;
-    RecordedImpact r = recorded_impact(exact, shot, e, replayed);
-    if (!replayed) {
+    std::optional<RecordedImpact> r = recorded_impact(exact, shot, e);
+    if (!r) {
       st.SkipWithError("an impact solved alone does not give the shot's rebound");
       return;
     }
     const bool looked_up =
-        solve_cushion_impact_unchecked(r.ball, r.contact.mathavan, r.contact.mathavan_options).solver_steps == 0;
-    (looked_up ? rolling : sliding).push_back(r);
+        solve_cushion_impact_unchecked(r->ball, r->contact.mathavan, r->contact.mathavan_options).solver_steps == 0;
+    (looked_up ? rolling : sliding).push_back(*r);
   }
-  auto timed = [shots](auto&& run) {
-    const auto t0 = std::chrono::steady_clock::now();
-    for (int i = 0; i < shots; ++i) run();
-    return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  };
+  auto play = [&](const Scenario& s) { benchmark::DoNotOptimize(simulate(s.table, balls, s.settings).end_time); };
   auto rebounds = [](const std::vector<RecordedImpact>& impacts) {
     for (const RecordedImpact& i : impacts) benchmark::DoNotOptimize(cushion_rebound(i.ball, i.contact).velocity.x);
   };
   double exact_s = 0.0, han_s = 0.0, sliding_s = 0.0, rolling_s = 0.0;
   for (auto _ : st) {
-    exact_s += timed([&] { benchmark::DoNotOptimize(simulate(exact.table, balls, exact.settings).end_time); });
-    han_s += timed([&] { benchmark::DoNotOptimize(simulate(han.table, balls, han.settings).end_time); });
-    sliding_s += timed([&] { rebounds(sliding); });
-    rolling_s += timed([&] { rebounds(rolling); });
+    exact_s += seconds_of(shots, [&] { play(exact); });
+    han_s += seconds_of(shots, [&] { play(han); });
+    sliding_s += seconds_of(shots, [&] { rebounds(sliding); });
+    rolling_s += seconds_of(shots, [&] { rebounds(rolling); });
   }
   const double us = 1e6 / (static_cast<double>(st.iterations()) * shots);
   st.counters["exact_us"] = exact_s * us;

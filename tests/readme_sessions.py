@@ -100,21 +100,20 @@ def main() -> int:
         return 2
     readme = pathlib.Path(sys.argv[1]).resolve()
     binary = pathlib.Path(sys.argv[2]).resolve()
-    env = dict(os.environ, PATH=f"{binary.parent}{os.pathsep}{os.environ.get('PATH', '')}")
-    if binary.name != "cueball":  # the sessions call it by name
-        link_dir = pathlib.Path(tempfile.mkdtemp(prefix="cueball-bin-"))
-        (link_dir / "cueball").symlink_to(binary)
-        env["PATH"] = f"{link_dir}{os.pathsep}{env['PATH']}"
     failures = ran = skipped = 0
     with tempfile.TemporaryDirectory(prefix="cueball-readme-") as scratch:
-        cwd = pathlib.Path(scratch)
+        cwd = pathlib.Path(scratch) / "work"
         shutil.copytree(readme.parent / "docs", cwd / "docs")
-        status = None
+        bin_dir = pathlib.Path(scratch) / "bin"  # the sessions call the binary by name
+        bin_dir.mkdir()
+        (bin_dir / "cueball").symlink_to(binary)
+        env = dict(os.environ, PATH=f"{bin_dir}{os.pathsep}{os.environ.get('PATH', '')}")
+        status = None  # of the command before, None where it did not run
         for line_number, command, expected in sessions(readme):
             if command == "echo $?":
-                got = [] if status is None else [str(status)]
                 if status is None:
                     continue
+                got = [str(status)]
             elif command.split()[0] not in RUNS:
                 status = None
                 continue

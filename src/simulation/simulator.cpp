@@ -50,15 +50,6 @@ bool earlier(const Candidate& x, const Candidate& y) {
   return x.b < y.b;
 }
 
-// The impact frame of a cushion (paper 000, Figs 2-4): Y horizontal into the
-// cushion = -n (n the inward normal of the playing surface), Z up, X = Y x Z.
-struct ImpactFrame {
-  Vec2 x, y;
-  explicit ImpactFrame(Vec2 inward_normal) : x{-inward_normal.y, inward_normal.x}, y{-inward_normal} {}
-  Vec3 to_frame(Vec2 v, double z) const { return {dot(v, x), dot(v, y), z}; }
-  Vec2 from_frame(Vec3 v) const { return v.x * x + v.y * y; }
-};
-
 // An axis-aligned box bounding a path over an interval (or a cushion's
 // reach): a few comparisons reject most candidate contacts before any
 // polynomial is formed.
@@ -719,7 +710,7 @@ class Simulation {
   // solved in the impact frame by the chosen cushion model (cushion_model.hpp).
   BallState wall_impact(int i, const BallState& s, Vec2 n, const CushionContact& model) const {
     if (-dot(s.velocity, n) < kPushSpeed) return rest_on_wall(i, s, n);
-    const ImpactFrame frame(n);
+    const CushionImpactFrame frame(n);
     IncomingBall in;
     in.velocity = frame.to_frame(s.velocity, 0.0);
     in.angular_velocity = frame.to_frame(horizontal(s.angular_velocity), s.angular_velocity.z);

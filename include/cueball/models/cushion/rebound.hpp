@@ -14,4 +14,17 @@ struct CushionRebound {
   Vec3 angular_velocity;  ///< rad/s
 };
 
+/// The impact frame of a wall (paper 000, Figs 2-4) from its inward normal n
+/// at the contact (n points from the wall into the playing area): Y
+/// horizontal into the wall = -n, Z up, X = Y x Z. The simulator passes a
+/// ball to a model in it and takes the rebound back out of it.
+struct CushionImpactFrame {
+  Vec2 x, y;
+  explicit CushionImpactFrame(Vec2 inward_normal) : x{-inward_normal.y, inward_normal.x}, y{-inward_normal} {}
+  /// A table-frame vector with horizontal part v and vertical part z, in the frame.
+  Vec3 to_frame(Vec2 v, double z) const { return {dot(v, x), dot(v, y), z}; }
+  /// The horizontal part, in the table frame, of a vector in the frame.
+  Vec2 from_frame(Vec3 v) const { return v.x * x + v.y * y; }
+};
+
 }  // namespace cueball
